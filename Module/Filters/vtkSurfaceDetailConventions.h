@@ -1,0 +1,179 @@
+/**
+ * @file   vtkSurfaceDetailConventions.h
+ * @brief  The conventions shared by every SurfaceDetail filter and shader, in one place.
+ *
+ * SurfaceDetail's CPU filters (displacement, height map to normal map, baking) and its
+ * GLSL (glsl/vtkSurfaceDetailCommon.glsl mirrors this file) must agree to the texel on how
+ * a texture is sampled and how a tangent frame and a normal are encoded, or a map baked on
+ * the CPU shows seams on the GPU. These inline functions are that agreement:
+ *
+ * - Texture coordinates (s,t) have their origin bottom-left; row 0 of a vtkImageData is
+ *   t = 0; texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H).
+ * - Wrap modes have vtkTexture's values and OpenGL's meaning (GL 4.5 spec, 8.14.2).
+ * - Linear filtering is OpenGL's: x = s*W - 0.5, blend texels floor(x) and floor(x)+1.
+ * - Tangent frame: T = normalize(dP/ds minus its part along N), w = sign(dot(cross(N,T),
+ *   dP/dt)) (+1 when that is zero), B = w*cross(N,T).
+ * - Normal maps store 0.5*n + 0.5 per component; green up (+Y = +t) by default.
+ */
+
+#ifndef vtkSurfaceDetailConventions_h
+#define vtkSurfaceDetailConventions_h
+
+#include <algorithm>
+#include <cmath>
+
+namespace vtkSurfaceDetail
+{
+
+/// Texture wrap modes, numbered as vtkTexture::Wrap so that one value serves both.
+enum WrapMode
+{
+  ClampToEdge = 0,
+  Repeat = 1,
+  MirroredRepeat = 2
+};
+
+/// The texel index that texel @a i of a texture @a n texels wide reads under @a mode.
+inline int WrapIndex(int i, int n, int mode)
+{
+  switch (mode)
+  {
+    case Repeat:
+    {
+      const int m = i % n;
+      return m < 0 ? m + n : m;
+    }
+    case MirroredRepeat:
+    {
+      int m = i % (2 * n);
+      if (m < 0)
+      {
+        m += 2 * n;
+      }
+      return m < n ? m : 2 * n - 1 - m;
+    }
+    default:
+      return std::min(std::max(i, 0), n - 1);
+  }
+}
+
+/// Texture coordinate of the centre of texel @a i in a texture @a n texels wide.
+inline double TexelCentre(int i, int n)
+{
+  return (i + 0.5) / n;
+}
+
+/**
+ * Split texture coordinate @a s into the two texels that linear filtering blends and the
+ * weight of the second: value = (1 - frac)*texel[i0] + frac*texel[i0 + 1]. The indices are
+ * not wrapped yet. Non-finite @a s gives texel 0 with weight 0.
+ */
+inline void LinearTexels(double s, int n, int& i0, double& frac)
+{
+  const double x = s * n - 0.5;
+  if (!std::isfinite(x))
+  {
+    i0 = 0;
+    frac = 0.0;
+    return;
+  }
+  const double f = std::floor(x);
+  i0 = static_cast<int>(f);
+  frac = x - f;
+}
+
+/// Encodes a unit-vector component in [-1,1] as a colour in [0,1].
+inline double EncodeUnit(double c)
+{
+  return 0.5 * c + 0.5;
+}
+
+/// Decodes a colour in [0,1] back to a vector component in [-1,1].
+inline double DecodeUnit(double c)
+{
+  return 2.0 * c - 1.0;
+}
+
+inline double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline void Cross(const double a[3], const double b[3], double c[3])
+{
+  const double x = a[1] * b[2] - a[2] * b[1];
+  const double y = a[2] * b[0] - a[0] * b[2];
+  const double z = a[0] * b[1] - a[1] * b[0];
+  c[0] = x;
+  c[1] = y;
+  c[2] = z;
+}
+
+/// Normalises @a v in place; returns its former length (0 leaves @a v unchanged).
+inline double Normalize(double v[3])
+{
+  const double len = std::sqrt(Dot(v, v));
+  if (len > 0.0 && std::isfinite(len))
+  {
+    v[0] /= len;
+    v[1] /= len;
+    v[2] /= len;
+  }
+  return len;
+}
+
+/**
+ * Builds the tangent of the DESIGN.md frame from unit normal @a n and the derivatives
+ * @a dPds, @a dPdt: @a t[0..2] = normalize(dPds - n*dot(n,dPds)), @a t[3] = handedness.
+ * When dP/ds has no part across @a n, the tangent comes from dP/dt instead
+ * (T = cross(B, N) with w = +1); when neither has, @a t is any unit vector orthogonal to
+ * @a n with w = +1 and the function returns false so that the caller can supply a limit.
+ */
+inline bool MakeTangentFrame(const double n[3], const double dPds[3], const double dPdt[3],
+  double t[4])
+{
+  // Relative threshold: a derivative that is almost parallel to the normal is noise.
+  constexpr double relEps = 1e-12;
+  const double ds = std::sqrt(Dot(dPds, dPds));
+  double dn = Dot(n, dPds);
+  double tp[3] = { dPds[0] - dn * n[0], dPds[1] - dn * n[1], dPds[2] - dn * n[2] };
+  double len = Normalize(tp);
+  if (len > relEps * ds && len > 0.0 && std::isfinite(len))
+  {
+    double nxt[3];
+    Cross(n, tp, nxt);
+    t[0] = tp[0];
+    t[1] = tp[1];
+    t[2] = tp[2];
+    t[3] = Dot(nxt, dPdt) < 0.0 ? -1.0 : 1.0;
+    return true;
+  }
+  const double dt = std::sqrt(Dot(dPdt, dPdt));
+  dn = Dot(n, dPdt);
+  double bp[3] = { dPdt[0] - dn * n[0], dPdt[1] - dn * n[1], dPdt[2] - dn * n[2] };
+  len = Normalize(bp);
+  if (len > relEps * dt && len > 0.0 && std::isfinite(len))
+  {
+    Cross(bp, n, t);
+    t[3] = 1.0;
+    return true;
+  }
+  // Any unit vector orthogonal to n: cross n with the axis it is least aligned with.
+  const double ax = std::abs(n[0]), ay = std::abs(n[1]), az = std::abs(n[2]);
+  double axis[3] = { 0.0, 0.0, 0.0 };
+  axis[(ax <= ay && ax <= az) ? 0 : (ay <= az ? 1 : 2)] = 1.0;
+  Cross(axis, n, t);
+  if (Normalize(t) == 0.0)
+  {
+    t[0] = 1.0;
+    t[1] = 0.0;
+    t[2] = 0.0;
+  }
+  t[3] = 1.0;
+  return false;
+}
+
+} // namespace vtkSurfaceDetail
+
+#endif
+// VTK-HeaderTest-Exclude: vtkSurfaceDetailConventions.h

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Installs what is missing, configures and builds SurfaceDetail (Release) in $BUILD_DIR
+# (default: build/ in the source tree).
+set -euo pipefail
+src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${BUILD_DIR:-$src/build}"
+
+bash "$src/scripts/install-deps.sh"
+cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${CMAKE_ARGS:-}
+cmake --build "$build" -j "$(nproc)"

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages SurfaceDetail needs, and only those that are missing,
+# so that a warm machine starts at once.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libvtk9-dev python3-vtk9
+  libopenimageio-dev openimageio-tools
+  libglm-dev
+  libgtest-dev libgmock-dev googletest libbenchmark-dev
+  xvfb xauth mesa-utils libgl1-mesa-dri
+  libjpeg-turbo-progs
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
