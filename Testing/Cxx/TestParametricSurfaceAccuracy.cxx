@@ -6,6 +6,7 @@
 
 #include "ParametricSurfaceTestHelpers.h"
 
+#include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkMath.h>
@@ -13,8 +14,10 @@
 #include <vtkParametricCylinder.h>
 #include <vtkParametricDonut.h>
 #include <vtkParametricEllipsoid.h>
+#include <vtkParametricExtrusion.h>
 #include <vtkParametricKlein.h>
 #include <vtkParametricRectangle.h>
+#include <vtkParametricRevolution.h>
 #include <vtkParametricSphere.h>
 #include <vtkParametricSurfaceSource.h>
 #include <vtkParametricTorus.h>
@@ -27,6 +30,7 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -67,20 +71,53 @@ Vec Tuple(vtkDataArray* array, vtkIdType id)
   return { array->GetComponent(id, 0), array->GetComponent(id, 1), array->GetComponent(id, 2) };
 }
 
-// Five-point central differences: truncation O(h^4), rounding O(eps/h).
-Vec DerivU(const SurfaceFn& f, double u, double v, double h = 1e-3)
+// Fourth-order differences: central where f is smooth across [x-2h, x+2h], one-sided
+// (forward, else backward) where a break lies in the stencil. Breaks are the parameters
+// where f is only C1 (Bézier joins) or stops (ends of a clamped profile); at a break itself
+// the forward side is taken, as the classes evaluate the next segment there.
+double Derivative1D(const std::function<double(double)>& f, double x,
+  const std::vector<double>& breaks, double h = 1e-3)
+{
+  // A break at 1 means that f is not defined beyond it.
+  const double hi = !breaks.empty() && breaks.back() == 1 ? 1 : HUGE_VAL;
+  auto clear = [&breaks](double a, double b, bool closedLeft, bool closedRight)
+  {
+    for (double br : breaks)
+    {
+      if ((br > a || (closedLeft && br == a)) && (br < b || (closedRight && br == b)))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (clear(x - 2 * h, x + 2 * h, true, true))
+  {
+    return (-f(x + 2 * h) + 8 * f(x + h) - 8 * f(x - h) + f(x - 2 * h)) / (12 * h);
+  }
+  const double side = x + 4 * h <= hi && clear(x, x + 4 * h, false, true) ? 1.0 : -1.0;
+  const double k = side * h;
+  return (-25 * f(x) + 48 * f(x + k) - 36 * f(x + 2 * k) + 16 * f(x + 3 * k) - 3 * f(x + 4 * k)) /
+    (12 * k);
+}
+
+Vec DerivU(const SurfaceFn& f, double u, double v, const std::vector<double>& breaks = {})
 {
   Vec d;
-  const Vec a = f(u + 2 * h, v), b = f(u + h, v), c = f(u - h, v), e = f(u - 2 * h, v);
-  for (int k = 0; k < 3; ++k)
+  for (int c = 0; c < 3; ++c)
   {
-    d[k] = (-a[k] + 8 * b[k] - 8 * c[k] + e[k]) / (12 * h);
+    d[c] = Derivative1D([&](double x) { return f(x, v)[c]; }, u, breaks);
   }
   return d;
 }
-Vec DerivV(const SurfaceFn& f, double u, double v, double h = 1e-3)
+Vec DerivV(const SurfaceFn& f, double u, double v, const std::vector<double>& breaks = {})
 {
-  return DerivU([&](double x, double y) { return f(y, x); }, v, u, h);
+  Vec d;
+  for (int c = 0; c < 3; ++c)
+  {
+    d[c] = Derivative1D([&](double y) { return f(u, y)[c]; }, v, breaks);
+  }
+  return d;
 }
 
 struct Expectation
@@ -91,6 +128,7 @@ struct Expectation
   double PositionTolerance = 1e-14;
   double Repeat[2] = { 1, 1 };
   double Offset[2] = { 0, 0 };
+  std::vector<double> UBreaks, VBreaks; // where the surface is only C1 (see Derivative1D)
 };
 
 vtkSmartPointer<vtkPolyData> Generate(vtkParametricFunction* f, int U, int V, const Expectation& e,
@@ -148,7 +186,7 @@ int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expecta
       tcoordWrong += (static_cast<float>(tcoords->GetComponent(id, 0)) != s ||
         static_cast<float>(tcoords->GetComponent(id, 1)) != t);
 
-      const Vec pu = DerivU(e.Surface, u, v), pv = DerivV(e.Surface, u, v);
+      const Vec pu = DerivU(e.Surface, u, v, e.UBreaks), pv = DerivV(e.Surface, u, v, e.VBreaks);
       worstD = std::max(worstD, Norm(Sub(Tuple(dPdu, id), pu)) / e.Length);
       worstD = std::max(worstD, Norm(Sub(Tuple(dPdv, id), pv)) / e.Length);
       const Vec c = CrossV(pu, pv);
@@ -436,4 +474,240 @@ TEST(ParametricSurfaceAccuracy, OnlyRequestedArrays)
   sphere->Print(printed);
   EXPECT_NE(printed.str().find("GenerateTangents: 1"), std::string::npos);
   EXPECT_NE(printed.str().find("Radius: 3"), std::string::npos);
+}
+
+// ---- Bézier profiles and the surfaces made from them --------------------------------------
+namespace
+{
+using Point2 = std::array<double, 2>;
+
+// de Casteljau's construction: an evaluation independent of the Bernstein form in the class.
+Point2 DeCasteljau(const std::vector<Point2>& cps, double t)
+{
+  const int k = static_cast<int>(cps.size() - 1) / 3;
+  const int seg = std::min(static_cast<int>(t * k), k - 1);
+  const double s = t * k - seg;
+  std::array<Point2, 4> q = { cps[3 * seg], cps[3 * seg + 1], cps[3 * seg + 2], cps[3 * seg + 3] };
+  for (int level = 3; level > 0; --level)
+  {
+    for (int i = 0; i < level; ++i)
+    {
+      q[i] = { (1 - s) * q[i][0] + s * q[i + 1][0], (1 - s) * q[i][1] + s * q[i + 1][1] };
+    }
+  }
+  return q[0];
+}
+
+std::vector<Point2> ControlPoints(vtkBezierProfile* profile)
+{
+  std::vector<Point2> cps(profile->GetNumberOfControlPoints());
+  for (size_t i = 0; i < cps.size(); ++i)
+  {
+    profile->GetControlPoint(static_cast<int>(i), cps[i].data());
+  }
+  return cps;
+}
+
+// Length of the polyline through n + 1 samples of t in [a, b]: converges as 1/n^2.
+double PolylineLength(const std::vector<Point2>& cps, double a, double b, int n)
+{
+  double length = 0;
+  Point2 prev = DeCasteljau(cps, a);
+  for (int i = 1; i <= n; ++i)
+  {
+    const Point2 next = DeCasteljau(cps, a + (b - a) * i / n);
+    length += std::hypot(next[0] - prev[0], next[1] - prev[1]);
+    prev = next;
+  }
+  return length;
+}
+} // namespace
+
+TEST(ParametricSurfaceAccuracy, BezierProfileMatchesDeCasteljau)
+{
+  vtkNew<vtkBezierProfile> profile;
+  profile->SetToVase();
+  const std::vector<Point2> cps = ControlPoints(profile);
+  ASSERT_EQ(cps.size(), 10u);
+  EXPECT_EQ(profile->GetNumberOfSegments(), 3);
+  for (int i = 0; i <= 300; ++i)
+  {
+    const double t = i / 300.0;
+    double p[2], d1[2], d2[2];
+    ASSERT_TRUE(profile->Evaluate(t, p, d1, d2));
+    const Point2 q = DeCasteljau(cps, t);
+    EXPECT_NEAR(p[0], q[0], 1e-15);
+    EXPECT_NEAR(p[1], q[1], 1e-15);
+    // Derivatives by differences inside one segment (never across a join).
+    const double seg = std::min(std::floor(t * 3), 2.0);
+    const double h = 1e-4;
+    const double tc = std::min(std::max(t, seg / 3 + 2 * h), (seg + 1) / 3 - 2 * h);
+    profile->Evaluate(tc, p, d1, d2);
+    const Point2 a = DeCasteljau(cps, tc + h), b = DeCasteljau(cps, tc - h),
+                 c = DeCasteljau(cps, tc);
+    for (int k = 0; k < 2; ++k)
+    {
+      EXPECT_NEAR(d1[k], (a[k] - b[k]) / (2 * h), 1e-6);
+      EXPECT_NEAR(d2[k], (a[k] - 2 * c[k] + b[k]) / (h * h), 1e-4 * 3 * 3 * 6);
+    }
+  }
+  // The joins are smooth: the first derivative is continuous across them.
+  double left[2], right[2], p[2];
+  profile->Evaluate(1.0 / 3 - 1e-9, p, left, nullptr);
+  profile->Evaluate(1.0 / 3, p, right, nullptr);
+  EXPECT_LT(std::hypot(left[0] - right[0], left[1] - right[1]), 1e-6);
+}
+
+TEST(ParametricSurfaceAccuracy, BezierProfileLength)
+{
+  vtkNew<vtkBezierProfile> line; // a straight segment of length 5 with bunched controls
+  line->AddControlPoint(0, 0);
+  line->AddControlPoint(0.03, 0.04);
+  line->AddControlPoint(0.06, 0.08);
+  line->AddControlPoint(3, 4);
+  EXPECT_NEAR(line->GetLength(), 5.0, 1e-13);
+
+  vtkNew<vtkBezierProfile> vase;
+  vase->SetToVase();
+  const double reference = PolylineLength(ControlPoints(vase), 0, 1, 200000);
+  EXPECT_NEAR(vase->GetLength(), reference, 1e-9);
+}
+
+TEST(ParametricSurfaceAccuracy, BezierProfileArcLength)
+{
+  vtkNew<vtkBezierProfile> line; // bunched controls: Bézier speed varies a hundredfold
+  line->AddControlPoint(0, 0);
+  line->AddControlPoint(0.03, 0.04);
+  line->AddControlPoint(0.06, 0.08);
+  line->AddControlPoint(3, 4);
+  line->ArcLengthParameterizationOn();
+  for (int i = 0; i <= 20; ++i)
+  {
+    const double t = i / 20.0;
+    double p[2], d1[2], d2[2];
+    line->Evaluate(t, p, d1, d2);
+    EXPECT_NEAR(p[0], 3 * t, 1e-12);
+    EXPECT_NEAR(p[1], 4 * t, 1e-12);
+    EXPECT_NEAR(d1[0], 3, 1e-9);
+    EXPECT_NEAR(d1[1], 4, 1e-9);
+    EXPECT_NEAR(d2[0], 0, 1e-7);
+    EXPECT_NEAR(d2[1], 0, 1e-7);
+  }
+
+  vtkNew<vtkBezierProfile> vase;
+  vase->SetToVase();
+  vase->ArcLengthParameterizationOn();
+  const std::vector<Point2> cps = ControlPoints(vase);
+  const double length = vase->GetLength();
+  for (int i = 1; i < 10; ++i)
+  {
+    const double t = i / 10.0;
+    double p[2], d1[2], d2[2];
+    vase->Evaluate(t, p, d1, d2);
+    EXPECT_NEAR(std::hypot(d1[0], d1[1]), length, 1e-9 * length);
+    // Acceleration of a unit-speed curve is normal to it.
+    EXPECT_NEAR(d1[0] * d2[0] + d1[1] * d2[1], 0, 1e-8 * length * length * length);
+    // Independent check: find the Bézier parameter of p by bisection on the polyline, and
+    // the polyline length up to it must be t * length.
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 60; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (PolylineLength(cps, 0, mid, 4000) < t * length ? lo : hi) = mid;
+    }
+    const Point2 q = DeCasteljau(cps, 0.5 * (lo + hi));
+    EXPECT_NEAR(p[0], q[0], 1e-6);
+    EXPECT_NEAR(p[1], q[1], 1e-6);
+    // Second derivative by differences of the arc-length curve itself.
+    const double h = 1e-4;
+    double a[2], b[2], c[2];
+    vase->Evaluate(t + h, a, nullptr, nullptr);
+    vase->Evaluate(t - h, b, nullptr, nullptr);
+    vase->Evaluate(t, c, nullptr, nullptr);
+    for (int k = 0; k < 2; ++k)
+    {
+      EXPECT_NEAR(d1[k], (a[k] - b[k]) / (2 * h), 1e-6 * length);
+      EXPECT_NEAR(d2[k], (a[k] - 2 * c[k] + b[k]) / (h * h), 1e-3 * length * length);
+    }
+  }
+}
+
+TEST(ParametricSurfaceAccuracy, VaseMatchesSeed004Revolution)
+{
+  vtkNew<vtkParametricRevolution> vase;
+  const std::vector<Point2> cps = ControlPoints(vase->GetProfile());
+  Expectation e;
+  e.Surface = [&cps](double u, double v) -> Vec
+  {
+    const Point2 q = DeCasteljau(cps, std::min(std::max(v, 0.0), 1.0));
+    const double t = 2 * Pi * u;
+    return { q[0] * std::cos(t), q[1], -q[0] * std::sin(t) };
+  };
+  e.Length = 2;
+  e.VBreaks = { 0, 1.0 / 3, 2.0 / 3, 1 };
+  const int U = 32, V = 3 * 20;
+  EXPECT_EQ(CheckAgainstClosedForm(vase, U, V, e), (U + 1) * V); // all but the base
+  vtkSmartPointer<vtkPolyData> out = Generate(vase, U, V, e);
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  for (int i = 0; i <= U; ++i)
+  {
+    // The base touches the axis at v = 0: the normal there is straight down, and the tangent
+    // is the limit along its column, (-sin theta, 0, -cos theta).
+    const double theta = 2 * Pi * i / U;
+    EXPECT_LT(Angle(Tuple(normals, i), { 0, -1, 0 }), 1e-4);
+    EXPECT_LT(Angle(Tuple(tangents, i), { -std::sin(theta), 0, -std::cos(theta) }), 1e-4);
+    // Outward on the belly: away from the axis.
+    const vtkIdType belly = (V / 2) * (U + 1) + i;
+    const Vec p = Tuple(out->GetPoints()->GetData(), belly);
+    EXPECT_GT(DotV(Tuple(normals, belly), { p[0], 0, p[2] }), 0);
+  }
+}
+
+TEST(ParametricSurfaceAccuracy, LovePillarMatchesSeed004Extrusion)
+{
+  vtkNew<vtkParametricExtrusion> pillar;
+  pillar->SetHeight(3);
+  const std::vector<Point2> cps = ControlPoints(pillar->GetProfile());
+  ASSERT_EQ(cps.size(), 13u);
+  Expectation e;
+  e.Surface = [&cps](double u, double v) -> Vec
+  {
+    const Point2 q = DeCasteljau(cps, std::min(std::max(u, 0.0), 1.0));
+    return { q[0], 3 * v, q[1] };
+  };
+  e.Length = 3;
+  e.UBreaks = { 0, 0.25, 0.5, 0.75, 1 };
+  const int U = 4 * 16, V = 5;
+  EXPECT_EQ(CheckAgainstClosedForm(pillar, U, V, e), (U + 1) * (V + 1));
+  // Outward, shown without derivatives: a step along the normal leaves the heart, a step
+  // against it enters (even-odd test against a fine polygon of the profile).
+  std::vector<Point2> polygon;
+  for (int i = 0; i < 4000; ++i)
+  {
+    polygon.push_back(DeCasteljau(cps, i / 4000.0));
+  }
+  auto inside = [&polygon](double x, double z)
+  {
+    bool in = false;
+    for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    {
+      const Point2 &a = polygon[i], &b = polygon[j];
+      if ((a[1] > z) != (b[1] > z) && x < (b[0] - a[0]) * (z - a[1]) / (b[1] - a[1]) + a[0])
+      {
+        in = !in;
+      }
+    }
+    return in;
+  };
+  vtkSmartPointer<vtkPolyData> out = Generate(pillar, U, V, e);
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  for (int i = 1; i < U; ++i)
+  {
+    const Vec p = Tuple(out->GetPoints()->GetData(), i);
+    const Vec n = Tuple(normals, i);
+    EXPECT_NEAR(n[1], 0, 1e-7);
+    EXPECT_FALSE(inside(p[0] + 0.01 * n[0], p[2] + 0.01 * n[2])) << "column " << i;
+    EXPECT_TRUE(inside(p[0] - 0.01 * n[0], p[2] - 0.01 * n[2])) << "column " << i;
+  }
 }
