@@ -14,13 +14,13 @@
 #define vtkParametricCylinder_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricCylinder : public vtkParametricFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricCylinder : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricCylinder* New();
-  vtkTypeMacro(vtkParametricCylinder, vtkParametricFunction);
+  vtkTypeMacro(vtkParametricCylinder, vtkParametricSeparableFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -35,14 +35,15 @@ public:
   vtkGetMacro(Height, double);
   ///@}
 
-  /** A surface: 2. */
-  int GetDimension() override { return 2; }
-
-  /** P(u,v) and its derivatives, Duvw[0..2] = dP/du, Duvw[3..5] = dP/dv. */
-  void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) override;
-
-  /** No scalar: 0. */
-  double EvaluateScalar(double uvw[3], double Pt[3], double Duvw[9]) override;
+  ///@{
+  /** The split evaluation (see vtkParametricSeparableFunction). */
+  int GetNumberOfUTerms() override { return 2; }
+  int GetNumberOfVTerms() override { return 1; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
 
 protected:
   vtkParametricCylinder();

@@ -10,24 +10,31 @@ vtkStandardNewMacro(vtkParametricDonut);
 //------------------------------------------------------------------------------
 vtkParametricDonut::vtkParametricDonut()
 {
-  this->MinimumU = 0.0;
-  this->MaximumU = 1.0;
-  this->MinimumV = 0.0;
-  this->MaximumV = 1.0;
   this->JoinU = 1;
   this->JoinV = 1;
-  this->TwistU = 0;
-  this->TwistV = 0;
-  this->ClockwiseOrdering = 1; // Du x Dv is outward
-  this->DerivativesAvailable = 1;
 }
 
 //------------------------------------------------------------------------------
-void vtkParametricDonut::Evaluate(double uvw[3], double Pt[3], double Duvw[9])
+void vtkParametricDonut::EvaluateUTerms(double u, double* terms)
+{
+  const double a = 2.0 * vtkMath::Pi() * u;
+  terms[0] = std::cos(a);
+  terms[1] = std::sin(a);
+}
+
+void vtkParametricDonut::EvaluateVTerms(double v, double* terms)
+{
+  const double b = 2.0 * vtkMath::Pi() * v;
+  terms[0] = std::cos(b);
+  terms[1] = std::sin(b);
+}
+
+void vtkParametricDonut::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
 {
   const double twoPi = 2.0 * vtkMath::Pi();
-  const double cu = std::cos(twoPi * uvw[0]), su = std::sin(twoPi * uvw[0]);
-  const double cv = std::cos(twoPi * uvw[1]), sv = std::sin(twoPi * uvw[1]);
+  const double cu = uTerms[0], su = uTerms[1];
+  const double cv = vTerms[0], sv = vTerms[1];
   const double r = this->CrossSectionRadius;
   const double ring = this->RingRadius + r * cv;
   Pt[0] = ring * cu;
@@ -40,12 +47,6 @@ void vtkParametricDonut::Evaluate(double uvw[3], double Pt[3], double Duvw[9])
   Duvw[4] = -twoPi * r * sv * su;
   Duvw[5] = twoPi * r * cv;
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
-}
-
-//------------------------------------------------------------------------------
-double vtkParametricDonut::EvaluateScalar(double*, double*, double*)
-{
-  return 0.0;
 }
 
 //------------------------------------------------------------------------------

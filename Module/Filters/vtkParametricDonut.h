@@ -15,13 +15,13 @@
 #define vtkParametricDonut_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricDonut : public vtkParametricFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricDonut : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricDonut* New();
-  vtkTypeMacro(vtkParametricDonut, vtkParametricFunction);
+  vtkTypeMacro(vtkParametricDonut, vtkParametricSeparableFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -36,14 +36,15 @@ public:
   vtkGetMacro(CrossSectionRadius, double);
   ///@}
 
-  /** A surface: 2. */
-  int GetDimension() override { return 2; }
-
-  /** P(u,v) and its derivatives, Duvw[0..2] = dP/du, Duvw[3..5] = dP/dv. */
-  void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) override;
-
-  /** No scalar: 0. */
-  double EvaluateScalar(double uvw[3], double Pt[3], double Duvw[9]) override;
+  ///@{
+  /** The split evaluation (see vtkParametricSeparableFunction). */
+  int GetNumberOfUTerms() override { return 2; }
+  int GetNumberOfVTerms() override { return 2; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
 
 protected:
   vtkParametricDonut();

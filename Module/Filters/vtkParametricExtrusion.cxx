@@ -13,16 +13,7 @@ vtkParametricExtrusion::vtkParametricExtrusion()
   : Profile(vtkSmartPointer<vtkBezierProfile>::New())
 {
   this->Profile->SetToHeart();
-  this->MinimumU = 0.0;
-  this->MaximumU = 1.0;
-  this->MinimumV = 0.0;
-  this->MaximumV = 1.0;
   this->JoinU = 1;
-  this->JoinV = 0;
-  this->TwistU = 0;
-  this->TwistV = 0;
-  this->ClockwiseOrdering = 1; // Du x Dv is outward for the profile's orientation
-  this->DerivativesAvailable = 1;
 }
 
 vtkParametricExtrusion::~vtkParametricExtrusion() = default;
@@ -53,30 +44,36 @@ vtkMTimeType vtkParametricExtrusion::GetMTime()
 }
 
 //------------------------------------------------------------------------------
-void vtkParametricExtrusion::Evaluate(double uvw[3], double Pt[3], double Duvw[9])
+void vtkParametricExtrusion::EvaluateUTerms(double u, double* terms)
 {
-  std::fill(Pt, Pt + 3, 0.0);
-  std::fill(Duvw, Duvw + 9, 0.0);
-  double p[2], d[2];
+  // (x, z, dx/du, dz/du)
   std::string reason = "there is no profile";
   if (!this->Profile || !this->Profile->IsValid(&reason) ||
-    !this->Profile->Evaluate(uvw[0], p, d, nullptr))
+    !this->Profile->Evaluate(u, terms, terms + 2, nullptr))
   {
+    std::fill(terms, terms + 4, 0.0);
     vtkErrorMacro("Cannot evaluate the extrusion: " << reason << "; see SetProfile().");
-    return;
   }
-  Pt[0] = p[0];
-  Pt[1] = this->Height * uvw[1];
-  Pt[2] = p[1];
-  Duvw[0] = d[0];
-  Duvw[2] = d[1];
-  Duvw[4] = this->Height;
 }
 
-//------------------------------------------------------------------------------
-double vtkParametricExtrusion::EvaluateScalar(double*, double*, double*)
+void vtkParametricExtrusion::EvaluateVTerms(double v, double* terms)
 {
-  return 0.0;
+  terms[0] = v;
+}
+
+void vtkParametricExtrusion::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
+{
+  Pt[0] = uTerms[0];
+  Pt[1] = this->Height * vTerms[0];
+  Pt[2] = uTerms[1];
+  Duvw[0] = uTerms[2];
+  Duvw[1] = 0.0;
+  Duvw[2] = uTerms[3];
+  Duvw[3] = 0.0;
+  Duvw[4] = this->Height;
+  Duvw[5] = 0.0;
+  Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
 //------------------------------------------------------------------------------

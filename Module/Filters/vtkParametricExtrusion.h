@@ -15,16 +15,16 @@
 #define vtkParametricExtrusion_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
 #include "vtkSmartPointer.h" // For the profile member
 
 class vtkBezierProfile;
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricExtrusion : public vtkParametricFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricExtrusion : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricExtrusion* New();
-  vtkTypeMacro(vtkParametricExtrusion, vtkParametricFunction);
+  vtkTypeMacro(vtkParametricExtrusion, vtkParametricSeparableFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -42,17 +42,18 @@ public:
   /** Includes the profile's modification time. */
   vtkMTimeType GetMTime() override;
 
-  /** A surface: 2. */
-  int GetDimension() override { return 2; }
-
+  ///@{
   /**
-   * P(u,v) and its derivatives, Duvw[0..2] = dP/du, Duvw[3..5] = dP/dv. An invalid or
-   * missing profile is reported as an error and gives zeros.
+   * The split evaluation (see vtkParametricSeparableFunction). An invalid or missing
+   * profile is reported as an error and gives zeros.
    */
-  void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) override;
-
-  /** No scalar: 0. */
-  double EvaluateScalar(double uvw[3], double Pt[3], double Duvw[9]) override;
+  int GetNumberOfUTerms() override { return 4; }
+  int GetNumberOfVTerms() override { return 1; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
 
 protected:
   vtkParametricExtrusion();

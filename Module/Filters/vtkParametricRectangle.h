@@ -14,13 +14,13 @@
 #define vtkParametricRectangle_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricRectangle : public vtkParametricFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricRectangle : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricRectangle* New();
-  vtkTypeMacro(vtkParametricRectangle, vtkParametricFunction);
+  vtkTypeMacro(vtkParametricRectangle, vtkParametricSeparableFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -41,14 +41,15 @@ public:
   vtkGetVector3Macro(Point2, double);
   ///@}
 
-  /** A surface: 2. */
-  int GetDimension() override { return 2; }
-
-  /** P(u,v) and its derivatives, Duvw[0..2] = dP/du, Duvw[3..5] = dP/dv. */
-  void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) override;
-
-  /** No scalar: 0. */
-  double EvaluateScalar(double uvw[3], double Pt[3], double Duvw[9]) override;
+  ///@{
+  /** The split evaluation (see vtkParametricSeparableFunction). */
+  int GetNumberOfUTerms() override { return 1; }
+  int GetNumberOfVTerms() override { return 1; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
 
 protected:
   vtkParametricRectangle();

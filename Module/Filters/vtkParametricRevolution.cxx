@@ -15,16 +15,7 @@ vtkParametricRevolution::vtkParametricRevolution()
   : Profile(vtkSmartPointer<vtkBezierProfile>::New())
 {
   this->Profile->SetToVase();
-  this->MinimumU = 0.0;
-  this->MaximumU = 1.0;
-  this->MinimumV = 0.0;
-  this->MaximumV = 1.0;
   this->JoinU = 1;
-  this->JoinV = 0;
-  this->TwistU = 0;
-  this->TwistV = 0;
-  this->ClockwiseOrdering = 1; // Du x Dv is outward for a rising profile
-  this->DerivativesAvailable = 1;
 }
 
 vtkParametricRevolution::~vtkParametricRevolution() = default;
@@ -55,34 +46,41 @@ vtkMTimeType vtkParametricRevolution::GetMTime()
 }
 
 //------------------------------------------------------------------------------
-void vtkParametricRevolution::Evaluate(double uvw[3], double Pt[3], double Duvw[9])
+void vtkParametricRevolution::EvaluateUTerms(double u, double* terms)
 {
-  std::fill(Pt, Pt + 3, 0.0);
-  std::fill(Duvw, Duvw + 9, 0.0);
-  double p[2], d[2];
-  std::string reason = "there is no profile";
-  if (!this->Profile || !this->Profile->IsValid(&reason) ||
-    !this->Profile->Evaluate(uvw[1], p, d, nullptr))
-  {
-    vtkErrorMacro("Cannot evaluate the surface of revolution: " << reason << "; see SetProfile().");
-    return;
-  }
-  const double twoPi = 2.0 * vtkMath::Pi();
-  const double c = std::cos(twoPi * uvw[0]), s = std::sin(twoPi * uvw[0]);
-  Pt[0] = p[0] * c;
-  Pt[1] = p[1];
-  Pt[2] = -p[0] * s;
-  Duvw[0] = -twoPi * p[0] * s;
-  Duvw[2] = -twoPi * p[0] * c;
-  Duvw[3] = d[0] * c;
-  Duvw[4] = d[1];
-  Duvw[5] = -d[0] * s;
+  const double theta = 2.0 * vtkMath::Pi() * u;
+  terms[0] = std::cos(theta);
+  terms[1] = std::sin(theta);
 }
 
-//------------------------------------------------------------------------------
-double vtkParametricRevolution::EvaluateScalar(double*, double*, double*)
+void vtkParametricRevolution::EvaluateVTerms(double v, double* terms)
 {
-  return 0.0;
+  // (r, y, dr/dv, dy/dv)
+  std::string reason = "there is no profile";
+  if (!this->Profile || !this->Profile->IsValid(&reason) ||
+    !this->Profile->Evaluate(v, terms, terms + 2, nullptr))
+  {
+    std::fill(terms, terms + 4, 0.0);
+    vtkErrorMacro("Cannot evaluate the surface of revolution: " << reason << "; see SetProfile().");
+  }
+}
+
+void vtkParametricRevolution::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
+{
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double c = uTerms[0], s = uTerms[1];
+  const double r = vTerms[0], y = vTerms[1], dr = vTerms[2], dy = vTerms[3];
+  Pt[0] = r * c;
+  Pt[1] = y;
+  Pt[2] = -r * s;
+  Duvw[0] = -twoPi * r * s;
+  Duvw[1] = 0.0;
+  Duvw[2] = -twoPi * r * c;
+  Duvw[3] = dr * c;
+  Duvw[4] = dy;
+  Duvw[5] = -dr * s;
+  Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
 //------------------------------------------------------------------------------

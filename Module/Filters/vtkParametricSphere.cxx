@@ -10,26 +10,30 @@ vtkStandardNewMacro(vtkParametricSphere);
 //------------------------------------------------------------------------------
 vtkParametricSphere::vtkParametricSphere()
 {
-  this->MinimumU = 0.0;
-  this->MaximumU = 1.0;
-  this->MinimumV = 0.0;
-  this->MaximumV = 1.0;
   this->JoinU = 1;
-  this->JoinV = 0;
-  this->TwistU = 0;
-  this->TwistV = 0;
-  this->ClockwiseOrdering = 1; // Du x Dv is outward
-  this->DerivativesAvailable = 1;
 }
 
 //------------------------------------------------------------------------------
-void vtkParametricSphere::Evaluate(double uvw[3], double Pt[3], double Duvw[9])
+void vtkParametricSphere::EvaluateUTerms(double u, double* terms)
+{
+  const double theta = 2.0 * vtkMath::Pi() * u;
+  terms[0] = std::cos(theta);
+  terms[1] = std::sin(theta);
+}
+
+void vtkParametricSphere::EvaluateVTerms(double v, double* terms)
+{
+  const double alpha = vtkMath::Pi() * (1.0 - v);
+  terms[0] = std::cos(alpha);
+  terms[1] = std::sin(alpha);
+}
+
+void vtkParametricSphere::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
 {
   const double twoPi = 2.0 * vtkMath::Pi();
-  const double theta = twoPi * uvw[0];
-  const double alpha = vtkMath::Pi() * (1.0 - uvw[1]);
-  const double ct = std::cos(theta), st = std::sin(theta);
-  const double ca = std::cos(alpha), sa = std::sin(alpha);
+  const double ct = uTerms[0], st = uTerms[1];
+  const double ca = vTerms[0], sa = vTerms[1];
   const double r = this->Radius;
   Pt[0] = r * sa * ct;
   Pt[1] = r * ca;
@@ -42,12 +46,6 @@ void vtkParametricSphere::Evaluate(double uvw[3], double Pt[3], double Duvw[9])
   Duvw[4] = vtkMath::Pi() * r * sa;
   Duvw[5] = vtkMath::Pi() * r * ca * st;
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
-}
-
-//------------------------------------------------------------------------------
-double vtkParametricSphere::EvaluateScalar(double*, double*, double*)
-{
-  return 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -16,13 +16,13 @@
 #define vtkParametricSphere_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricSphere : public vtkParametricFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricSphere : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricSphere* New();
-  vtkTypeMacro(vtkParametricSphere, vtkParametricFunction);
+  vtkTypeMacro(vtkParametricSphere, vtkParametricSeparableFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -31,14 +31,15 @@ public:
   vtkGetMacro(Radius, double);
   ///@}
 
-  /** A surface: 2. */
-  int GetDimension() override { return 2; }
-
-  /** P(u,v) and its derivatives, Duvw[0..2] = dP/du, Duvw[3..5] = dP/dv. */
-  void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) override;
-
-  /** No scalar: 0. */
-  double EvaluateScalar(double uvw[3], double Pt[3], double Duvw[9]) override;
+  ///@{
+  /** The split evaluation (see vtkParametricSeparableFunction). */
+  int GetNumberOfUTerms() override { return 2; }
+  int GetNumberOfVTerms() override { return 2; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
 
 protected:
   vtkParametricSphere();

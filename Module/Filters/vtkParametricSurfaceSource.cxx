@@ -9,6 +9,7 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -49,9 +50,15 @@ struct Grid
   double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
   double Orientation = 1.0; // +1: N = Du x Dv; -1: N = Dv x Du
   double InvRepeat[2] = { 1.0, 1.0 };
+  double TangentSign = 1.0;             // sign of the s repeat
+  double Handedness = 1.0;              // w wherever Du x Dv is regular
   std::vector<double> UUnit, VUnit;     // unit-square parameter of each column / row
   std::vector<double> UDomain, VDomain; // the function's parameter of each column / row
   std::vector<float> S, T;              // texture coordinate of each column / row
+  // Separable functions: their u terms of each column and v terms of each row.
+  vtkParametricSeparableFunction* Separable = nullptr;
+  int NumUTerms = 0, NumVTerms = 0;
+  std::vector<double> UTerms, VTerms;
 
   double ToDomainU(double u) const { return this->UMin + this->UExtent * u; }
   double ToDomainV(double v) const { return this->VMin + this->VExtent * v; }
@@ -69,6 +76,24 @@ struct Grid
     }
   }
 
+  // The function at grid column col and row j, from the cached terms when it is separable.
+  void EvaluateGrid(vtkIdType col, vtkIdType j, double p[3], double du[3], double dv[3]) const
+  {
+    if (!this->Separable)
+    {
+      this->Evaluate(this->UDomain[col], this->VDomain[j], p, du, dv);
+      return;
+    }
+    double d[9];
+    this->Separable->EvaluateTerms(
+      this->UTerms.data() + col * this->NumUTerms, this->VTerms.data() + j * this->NumVTerms, p, d);
+    for (int k = 0; k < 3; ++k)
+    {
+      du[k] = d[k] * this->UExtent;
+      dv[k] = d[3 + k] * this->VExtent;
+    }
+  }
+
   // Unit-square derivatives only, at unit-square parameters (clamped to the domain).
   void Derivatives(double u, double v, double du[3], double dv[3]) const
   {
@@ -78,11 +103,13 @@ struct Grid
   }
 };
 
-// True when du and dv span a plane well enough to give a normal; n is then the unit normal.
-inline bool RegularNormal(const double du[3], const double dv[3], double orientation, double n[3])
+// True when du and dv span a plane well enough to give a normal; n is then the unit normal
+// and a2 the squared length of du.
+inline bool RegularNormal(
+  const double du[3], const double dv[3], double orientation, double n[3], double& a2)
 {
   Cross(du, dv, n);
-  const double a2 = Dot(du, du);
+  a2 = Dot(du, du);
   const double b2 = Dot(dv, dv);
   const double c2 = Dot(n, n);
   if (!(c2 > DegenerateTolerance2 * a2 * b2) || !(a2 > DegenerateTolerance2 * b2) ||
@@ -148,7 +175,8 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
       },
       b);
   }
-  bool found = RegularNormal(a, b, g.Orientation, n);
+  double length2;
+  bool found = RegularNormal(a, b, g.Orientation, n, length2);
   // Parallel derivatives, or a limit that still vanishes: take the frame of nearby points
   // inside the domain, nearest first.
   for (double h = 1e-6; !found && h < 0.1; h *= 100.0)
@@ -156,7 +184,7 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
     const double su = u < 0.5 ? h : -h;
     const double sv = v < 0.5 ? h : -h;
     g.Derivatives(u + su, v + sv, a, b);
-    found = RegularNormal(a, b, g.Orientation, n);
+    found = RegularNormal(a, b, g.Orientation, n, length2);
   }
   if (!found)
   {
@@ -233,7 +261,7 @@ struct PointWorker
     {
       const vtkIdType j = g.Row0 + row;
       double p[3], du[3], dv[3];
-      g.Evaluate(g.UDomain[col], g.VDomain[j], p, du, dv);
+      g.EvaluateGrid(col, j, p, du, dv);
       finite = finite && std::isfinite(p[0] + p[1] + p[2]) &&
         std::isfinite(du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2]);
       Real* pt = this->Points + 3 * id;
@@ -257,15 +285,19 @@ struct PointWorker
       {
         double n[3];
         double t[4];
-        if (RegularNormal(du, dv, g.Orientation, n))
+        double du2;
+        if (RegularNormal(du, dv, g.Orientation, n, du2))
         {
           if (this->Tangents)
           {
-            const double dPds[3] = { du[0] * g.InvRepeat[0], du[1] * g.InvRepeat[0],
-              du[2] * g.InvRepeat[0] };
-            const double dPdt[3] = { dv[0] * g.InvRepeat[1], dv[1] * g.InvRepeat[1],
-              dv[2] * g.InvRepeat[1] };
-            vtkSurfaceDetail::MakeTangentFrame(n, dPds, dPdt, t);
+            // Here N = +-(Du x Dv)/|Du x Dv| is orthogonal to Du already, and the shared
+            // frame (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the
+            // sign of the s repeat, with w = cross(N,T).dP/dt of constant sign.
+            const double scale = g.TangentSign / std::sqrt(du2);
+            t[0] = du[0] * scale;
+            t[1] = du[1] * scale;
+            t[2] = du[2] * scale;
+            t[3] = g.Handedness;
           }
         }
         else if (!DegenerateFrame(
@@ -546,6 +578,8 @@ int vtkParametricSurfaceSource::RequestData(
   g.Orientation = function->GetClockwiseOrdering() ? 1.0 : -1.0;
   g.InvRepeat[0] = 1.0 / this->TextureRepeat[0];
   g.InvRepeat[1] = 1.0 / this->TextureRepeat[1];
+  g.TangentSign = this->TextureRepeat[0] < 0.0 ? -1.0 : 1.0;
+  g.Handedness = g.Orientation * g.TangentSign * (this->TextureRepeat[1] < 0.0 ? -1.0 : 1.0);
   g.UUnit.resize(U + 1);
   g.UDomain.resize(U + 1);
   g.S.resize(U + 1);
@@ -592,6 +626,32 @@ int vtkParametricSurfaceSource::RequestData(
                                                << " reported an error: " << message);
       return 0;
     }
+  }
+
+  // Separable functions do their per-column and per-row work once, not at every point.
+  g.Separable = vtkParametricSeparableFunction::SafeDownCast(function);
+  if (g.Separable)
+  {
+    g.NumUTerms = g.Separable->GetNumberOfUTerms();
+    g.NumVTerms = g.Separable->GetNumberOfVTerms();
+    g.UTerms.resize(rowLength * g.NumUTerms);
+    g.VTerms.resize((V + 1) * g.NumVTerms);
+    vtkSMPTools::For(0, rowLength,
+      [&g](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          g.Separable->EvaluateUTerms(g.UDomain[i], g.UTerms.data() + i * g.NumUTerms);
+        }
+      });
+    vtkSMPTools::For(cellRow0, cellRow1 + 1,
+      [&g](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType j = begin; j < end; ++j)
+        {
+          g.Separable->EvaluateVTerms(g.VDomain[j], g.VTerms.data() + j * g.NumVTerms);
+        }
+      });
   }
 
   const vtkIdType numPoints = g.NumRows * rowLength;
