@@ -234,7 +234,9 @@ void vtkOIIOImageReader::ExecuteInformation()
   this->ColorSpace.clear();
   if (!this->FileName || !*this->FileName)
   {
-    this->Fail(vtkErrorCode::NoFileNameError, "No file name: call SetFileName() first.");
+    this->Fail(vtkErrorCode::NoFileNameError,
+      "No file name: call SetFileName() first (file series and memory buffers are not "
+      "supported by this reader).");
     return;
   }
   const std::string path = this->FileName;

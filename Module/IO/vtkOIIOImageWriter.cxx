@@ -195,6 +195,14 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
     {
       return fail(vtkErrorCode::CannotOpenFileError, OIIOError(out.get()));
     }
+    if (out->spec().format != fileType)
+    {
+      vtkWarningMacro(<< "'" << path << "' (" << out->format_name() << ") cannot hold "
+                      << fileType.c_str() << " values; OpenImageIO stores them as "
+                      << out->spec().format.c_str()
+                      << ", which loses precision (floats are clamped to 0..1). Use .exr or "
+                         ".tif to keep them.");
+    }
     // VTK's row 0 is the bottom, the file's the top: hand OIIO the last row and a negative
     // row stride so that it walks the image from top to bottom.
     vtkIdType increments[3];

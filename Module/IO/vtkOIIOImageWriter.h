@@ -11,8 +11,8 @@
  * unsigned char for 8-bit PNG/TIFF/JPEG, unsigned short for 16-bit PNG/TIFF, float for
  * TIFF and OpenEXR. FloatPrecision chooses how float images are stored in formats that
  * offer a choice (OpenEXR): Single (32-bit, the default, exact) or Half (16-bit, half the
- * size, about 3 decimal digits). A format that cannot hold the input's type gets
- * OpenImageIO's nearest type (e.g. 16-bit for a float image written as PNG).
+ * size, about 3 decimal digits). A format that cannot hold the input's type gets the type
+ * OpenImageIO chooses for it (e.g. 8-bit for a float image written as PNG), with a warning.
  *
  * The input must have 1 to 4 components (grey, grey+alpha, RGB, RGBA) and one slice.
  * Errors (no input, no file name, a layout the writer cannot store, a path that cannot be

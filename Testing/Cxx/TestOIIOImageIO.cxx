@@ -34,20 +34,19 @@
 
 namespace
 {
-/// Counts the ErrorEvents an algorithm fires and keeps the last message.
+/// Counts the ErrorEvents and WarningEvents an algorithm fires and keeps the last message.
 class ErrorObserver : public vtkCommand
 {
 public:
   static ErrorObserver* New() { return new ErrorObserver; }
   void Execute(vtkObject*, unsigned long event, void* callData) override
   {
-    if (event == vtkCommand::ErrorEvent)
-    {
-      ++this->Errors;
-      this->Message = callData ? static_cast<const char*>(callData) : "";
-    }
+    this->Errors += event == vtkCommand::ErrorEvent;
+    this->Warnings += event == vtkCommand::WarningEvent;
+    this->Message = callData ? static_cast<const char*>(callData) : "";
   }
   int Errors = 0;
+  int Warnings = 0;
   std::string Message;
 };
 
@@ -585,4 +584,26 @@ TEST(TestOIIOImageIO, WriterInPipeline)
   writer->SetFileName(viaUpdate.c_str());
   writer->Update();
   ExpectIdentical(image, Read(viaUpdate));
+}
+
+// PNG holds integers only: a float image written as PNG is converted, and the writer warns.
+TEST(TestOIIOImageIO, WriterWarnsWhenFormatCannotHoldType)
+{
+  vtkNew<vtkOIIOImageWriter> writer;
+  vtkNew<ErrorObserver> observer;
+  writer->AddObserver(vtkCommand::WarningEvent, observer);
+  writer->AddObserver(vtkCommand::ErrorEvent, observer);
+  writer->SetInputData(RandomImage(VTK_FLOAT, 3, 4, 4, 1u));
+  const std::string path = TempPath("float.png");
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  EXPECT_EQ(observer->Errors, 0);
+  EXPECT_EQ(observer->Warnings, 1);
+  EXPECT_NE(observer->Message.find("float"), std::string::npos) << observer->Message;
+  EXPECT_EQ(Read(path)->GetScalarType(), VTK_UNSIGNED_CHAR);
+
+  observer->Warnings = 0;
+  writer->SetFileName(TempPath("float.exr").c_str());
+  writer->Write();
+  EXPECT_EQ(observer->Warnings, 0) << observer->Message;
 }
