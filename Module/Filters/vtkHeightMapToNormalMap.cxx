@@ -180,8 +180,8 @@ struct NormalMapKernel
         const Real hx = sx * norm, hy = sy * norm;
         for (int i = 0; i < n; ++i)
         {
-          gx[i] = (a * (m[i + 1] - m[i - 1]) + b * (c0[i + 1] - c0[i - 1]) +
-                    a * (p[i + 1] - p[i - 1])) *
+          gx[i] =
+            (a * (m[i + 1] - m[i - 1]) + b * (c0[i + 1] - c0[i - 1]) + a * (p[i + 1] - p[i - 1])) *
             hx;
           gy[i] = (a * (p[i - 1] - m[i - 1]) + b * (p[i] - m[i]) + a * (p[i + 1] - m[i + 1])) * hy;
         }
@@ -331,8 +331,10 @@ void RunKernel(const InT* in, int stride, const Job& job)
   kernel.Scheme = job.Scheme;
   kernel.Wrap = job.Wrap;
   kernel.GreenUp = job.GreenUp;
-  kernel.Sx = static_cast<Real>(job.Strength * job.W * scale);
-  kernel.Sy = static_cast<Real>(job.Strength * job.H * scale);
+  // A scale that overflows Real would turn flat texels (0 * inf) into NaN: saturate it.
+  const double top = static_cast<double>(std::numeric_limits<Real>::max());
+  kernel.Sx = static_cast<Real>(std::min(std::max(job.Strength * job.W * scale, -top), top));
+  kernel.Sy = static_cast<Real>(std::min(std::max(job.Strength * job.H * scale, -top), top));
   kernel.HScale = static_cast<Real>(scale);
   kernel.HOffset = static_cast<Real>(offset);
   vtkSMPTools::For(job.OutExt[2], job.OutExt[3] + 1, kernel);
@@ -358,8 +360,8 @@ void DispatchOutput(const InT* in, int stride, const Job& job)
 // Floating-point heights are checked first: non-finite ones are repaired in a copy (the
 // input stays untouched), and out-of-range ones are reported when they would be clamped.
 template <typename Real>
-void RunFloating(vtkHeightMapToNormalMap* self, const Real* in, int stride, const Job& job,
-  bool relief)
+void RunFloating(
+  vtkHeightMapToNormalMap* self, const Real* in, int stride, const Job& job, bool relief)
 {
   HeightCensus<Real> census;
   census.In = in;
@@ -377,18 +379,18 @@ void RunFloating(vtkHeightMapToNormalMap* self, const Real* in, int stride, cons
   }
   if (relief && outside > 0)
   {
-    vtkWarningWithObjectMacro(self,
-      << outside << " height(s) lie outside [0,1]; their relief depth 1 - h is clamped to "
-      << "[0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength instead.");
+    vtkWarningWithObjectMacro(
+      self, << outside << " height(s) lie outside [0,1]; their relief depth 1 - h is clamped to "
+            << "[0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength instead.");
   }
   if (nonFinite == 0)
   {
     DispatchOutput(in, stride, job);
     return;
   }
-  vtkWarningWithObjectMacro(self,
-    << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
-    << "finite neighbours.");
+  vtkWarningWithObjectMacro(
+    self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
+          << "finite neighbours.");
   std::vector<Real> repaired(static_cast<size_t>(n));
   for (vtkIdType k = 0; k < n; ++k)
   {
@@ -507,9 +509,9 @@ int vtkHeightMapToNormalMap::RequestData(
   const int w = ext[1] - ext[0] + 1, h = ext[3] - ext[2] + 1, d = ext[5] - ext[4] + 1;
   if (w <= 0 || h <= 0 || d <= 0)
   {
-    vtkErrorMacro("The height map is empty (extent " << ext[0] << " " << ext[1] << " " << ext[2]
-                                                     << " " << ext[3] << " " << ext[4] << " "
-                                                     << ext[5] << "): give it at least one texel.");
+    vtkErrorMacro("The height map is empty (extent "
+      << ext[0] << " " << ext[1] << " " << ext[2] << " " << ext[3] << " " << ext[4] << " " << ext[5]
+      << "): give it at least one texel.");
     return 0;
   }
   if (d != 1)
@@ -529,10 +531,9 @@ int vtkHeightMapToNormalMap::RequestData(
   if (heights->GetNumberOfTuples() != static_cast<vtkIdType>(w) * h ||
     heights->GetNumberOfComponents() < 1)
   {
-    vtkErrorMacro("The height array \"" << (heights->GetName() ? heights->GetName() : "")
-                                        << "\" has " << heights->GetNumberOfTuples()
-                                        << " tuples for " << w << "x" << h
-                                        << " texels: give one height per point.");
+    vtkErrorMacro("The height array \""
+      << (heights->GetName() ? heights->GetName() : "") << "\" has " << heights->GetNumberOfTuples()
+      << " tuples for " << w << "x" << h << " texels: give one height per point.");
     return 0;
   }
   if (!std::isfinite(this->Strength))
