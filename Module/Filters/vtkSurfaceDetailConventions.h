@@ -166,8 +166,8 @@ inline double Normalize(double v[3])
  * (T = cross(B, N) with w = +1); when neither has, @a t is any unit vector orthogonal to
  * @a n with w = +1 and the function returns false so that the caller can supply a limit.
  */
-inline bool MakeTangentFrame(
-  const double n[3], const double dPds[3], const double dPdt[3], double t[4])
+inline bool MakeTangentFrame(const double n[3], const double dPds[3], const double dPdt[3],
+  double t[4])
 {
   // Relative threshold: a derivative that is almost parallel to the normal is noise.
   constexpr double relEps = 1e-12;
