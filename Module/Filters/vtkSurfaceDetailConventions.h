@@ -13,9 +13,9 @@
  * - Linear filtering is OpenGL's: x = s*W - 0.5, blend texels floor(x) and floor(x)+1.
  * - Tangent frame: T = normalize(dP/ds minus its part along N), w = sign(dot(cross(N,T),
  *   dP/dt)) (+1 when that is zero), B = w*cross(N,T).
- * - Normal maps store 0.5*n + 0.5 per component; green up (+Y = +t) by default. Integer
- *   maps round to nearest (a flat normal is (128,128,255) in 8 bits), and decoding
- *   renormalises (EncodeNormal/DecodeNormal; GLSL twin: glsl/vtkSurfaceDetailNormalCoding.glsl).
+ * - Normal maps store 0.5*n + 0.5 per component; green up (+Y = +t) by default.
+ * - Integer normal maps round to nearest (flat is (128,128,255) in 8 bits); decoding
+ *   renormalises (EncodeNormal/DecodeNormal; GLSL twin vtkSurfaceDetailNormalCoding.glsl).
  */
 
 #ifndef vtkSurfaceDetailConventions_h
