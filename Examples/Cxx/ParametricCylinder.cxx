@@ -1,5 +1,5 @@
 // Seed 004's cylinder: a label wrapped once round a can, u round (from +x towards -z) and
-// v up. The test card must read left to right and upright from outside, with no seam where
+// v up. Data/test_card.png must read left to right and upright from outside, with no seam where
 // u = 0 meets u = 1 (duplicated vertices, texture coordinates 0 and 1).
 #include "ParametricExampleHelpers.h"
 
@@ -19,11 +19,11 @@ int main(int argc, char* argv[])
   source->SetVResolution(4);
   source->SetTextureRepeat(2, 1); // the card twice round
 
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(MakeTestCard(512, 512, 8));
-  texture->InterpolateOn();
-  texture->MipmapOn();
-  texture->SetWrap(vtkTexture::Repeat);
+  vtkSmartPointer<vtkTexture> texture = LoadTexture("test_card.png");
+  if (!texture)
+  {
+    return 1;
+  }
 
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());

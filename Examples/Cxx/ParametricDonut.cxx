@@ -1,6 +1,6 @@
 // Seed 000's donut, z up: P = ((R + r cos 2 pi v) cos 2 pi u, (R + r cos 2 pi v) sin 2 pi u,
-// r sin 2 pi v) with a test card repeated round the ring. Seen from outside the card reads
-// the right way round (VTK's vtkParametricTorus, with x and y swapped, would mirror it).
+// r sin 2 pi v) with Data/checkerboard.png, dark square at (0,0). Seen from outside, s runs
+// to the right along the ring and t up the outer side (VTK's vtkParametricTorus mirrors it).
 #include "ParametricExampleHelpers.h"
 
 #include <vtkParametricDonut.h>
@@ -17,13 +17,13 @@ int main(int argc, char* argv[])
   source->SetParametricFunction(donut);
   source->SetUResolution(128);
   source->SetVResolution(48);
-  source->SetTextureRepeat(4, 1);
+  source->SetTextureRepeat(5, 2); // square checks: the ring is 2.5 times the tube
 
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(MakeTestCard(512, 512, 8));
-  texture->InterpolateOn();
-  texture->MipmapOn();
-  texture->SetWrap(vtkTexture::Repeat);
+  vtkSmartPointer<vtkTexture> texture = LoadTexture("checkerboard.png");
+  if (!texture)
+  {
+    return 1;
+  }
 
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());

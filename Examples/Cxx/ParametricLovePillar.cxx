@@ -21,11 +21,11 @@ int main(int argc, char* argv[])
   source->SetVResolution(8);
   source->SetTextureRepeat(3, 1);
 
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(MakeTestCard(512, 512, 8));
-  texture->InterpolateOn();
-  texture->MipmapOn();
-  texture->SetWrap(vtkTexture::Repeat);
+  vtkSmartPointer<vtkTexture> texture = LoadTexture("test_card.png");
+  if (!texture)
+  {
+    return 1;
+  }
 
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());

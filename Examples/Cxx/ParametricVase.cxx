@@ -1,6 +1,6 @@
 // Seed 004's marble vase: a Bézier profile (radius, height) turned about +y by
-// vtkParametricRevolution. Arc-length parameterisation spreads the card evenly along the
-// profile even where its control points bunch up; the base closes on the axis (a pole).
+// vtkParametricRevolution, in Data/marble.png. Arc-length parameterisation spreads it evenly along
+// the profile even where its control points bunch up; the base closes on the axis (a pole).
 #include "ParametricExampleHelpers.h"
 
 #include <vtkBezierProfile.h>
@@ -21,11 +21,11 @@ int main(int argc, char* argv[])
   source->SetVResolution(96);
   source->SetTextureRepeat(3, 1);
 
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(MakeTestCard(512, 512, 8));
-  texture->InterpolateOn();
-  texture->MipmapOn();
-  texture->SetWrap(vtkTexture::Repeat);
+  vtkSmartPointer<vtkTexture> texture = LoadTexture("marble.png");
+  if (!texture)
+  {
+    return 1;
+  }
 
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
