@@ -48,7 +48,8 @@ struct Grid
   vtkIdType Row0 = 0;    // first point row of this piece
   vtkIdType NumRows = 0; // point rows in this piece
   double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
-  double Orientation = 1.0; // +1: N = Du x Dv; -1: N = Dv x Du
+  double Orientation = 1.0;   // +1: N = Du x Dv; -1: N = Dv x Du
+  bool HasDerivatives = true; // false: differences of the function's points
   double InvRepeat[2] = { 1.0, 1.0 };
   double TangentSign = 1.0;             // sign of the s repeat
   double Handedness = 1.0;              // w wherever Du x Dv is regular
@@ -69,10 +70,59 @@ struct Grid
     double uvw[3] = { u, v, 0.0 };
     double d[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
     this->Function->Evaluate(uvw, p, d);
+    if (!this->HasDerivatives)
+    {
+      this->Difference(0, (u - this->UMin) / this->UExtent, (v - this->VMin) / this->VExtent, du);
+      this->Difference(1, (u - this->UMin) / this->UExtent, (v - this->VMin) / this->VExtent, dv);
+      return;
+    }
     for (int k = 0; k < 3; ++k)
     {
       du[k] = d[k] * this->UExtent;
       dv[k] = d[3 + k] * this->VExtent;
+    }
+  }
+
+  /**
+   * For functions without derivatives (DerivativesAvailable off): the unit-square derivative
+   * along @a axis at unit parameters (u, v) by fourth-order differences, central inside the
+   * domain and one-sided within two steps of its edge, so the function is never evaluated
+   * outside its domain. Truncation O(h^4) and rounding O(eps/h) balance near h = 1e-3.
+   */
+  void Difference(int axis, double u, double v, double out[3]) const
+  {
+    constexpr double h = 1e-3;
+    auto at = [&](double offset, double p[3])
+    {
+      double uvw[3] = { this->ToDomainU(axis == 0 ? u + offset : u),
+        this->ToDomainV(axis == 1 ? v + offset : v), 0.0 };
+      double d[9];
+      this->Function->Evaluate(uvw, p, d);
+    };
+    const double x = axis == 0 ? u : v;
+    double a[3], b[3], c[3], e[3];
+    if (x - 2 * h >= 0.0 && x + 2 * h <= 1.0)
+    {
+      at(2 * h, a);
+      at(h, b);
+      at(-h, c);
+      at(-2 * h, e);
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = (-a[k] + 8 * b[k] - 8 * c[k] + e[k]) / (12 * h);
+      }
+      return;
+    }
+    const double step = x + 4 * h <= 1.0 ? h : -h;
+    double f0[3];
+    at(0, f0);
+    at(step, a);
+    at(2 * step, b);
+    at(3 * step, c);
+    at(4 * step, e);
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = (-25 * f0[k] + 48 * a[k] - 36 * b[k] + 16 * c[k] - 3 * e[k]) / (12 * step);
     }
   }
 
@@ -576,6 +626,7 @@ int vtkParametricSurfaceSource::RequestData(
   g.VMin = vmin;
   g.VExtent = vmax - vmin;
   g.Orientation = function->GetClockwiseOrdering() ? 1.0 : -1.0;
+  g.HasDerivatives = function->GetDerivativesAvailable() != 0;
   g.InvRepeat[0] = 1.0 / this->TextureRepeat[0];
   g.InvRepeat[1] = 1.0 / this->TextureRepeat[1];
   g.TangentSign = this->TextureRepeat[0] < 0.0 ? -1.0 : 1.0;

@@ -19,6 +19,7 @@
 #include <vtkParametricRectangle.h>
 #include <vtkParametricRevolution.h>
 #include <vtkParametricSphere.h>
+#include <vtkParametricSuperEllipsoid.h>
 #include <vtkParametricSurfaceSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPointData.h>
@@ -408,6 +409,39 @@ TEST(ParametricSurfaceAccuracy, VTKEllipsoidIsOutwardWithPoleLimits)
     // The gradient of x^2 + y^2/4 + z^2/9 is the outward normal.
     const Vec grad = { 2 * p[0], p[1] / 2, 2 * p[2] / 9 };
     EXPECT_LT(Angle(Tuple(normals, id), grad), id <= U || id >= V * (U + 1) ? 1e-4 : 1e-6)
+      << "point " << id;
+  }
+}
+
+TEST(ParametricSurfaceAccuracy, VTKFunctionWithoutDerivativesUsesDifferences)
+{
+  // vtkParametricSuperEllipsoid has no derivatives (DerivativesAvailable off); with both
+  // exponents 1 it is the ellipsoid x = a cos v sin u, y = b cos v cos u, z = c sin v.
+  vtkNew<vtkParametricSuperEllipsoid> superEllipsoid;
+  ASSERT_EQ(superEllipsoid->GetDerivativesAvailable(), 0);
+  superEllipsoid->SetN1(1);
+  superEllipsoid->SetN2(1);
+  superEllipsoid->SetXRadius(1);
+  superEllipsoid->SetYRadius(2);
+  superEllipsoid->SetZRadius(3);
+  Expectation e;
+  e.Surface = [](double s, double t) -> Vec
+  {
+    const double u = -Pi + 2 * Pi * s, v = -Pi / 2 + Pi * t;
+    return { std::cos(v) * std::sin(u), 2 * std::cos(v) * std::cos(u), 3 * std::sin(v) };
+  };
+  e.Length = 3;
+  e.Orientation = -1;
+  e.PositionTolerance = 1e-15;
+  const int U = 24, V = 12;
+  EXPECT_EQ(CheckAgainstClosedForm(superEllipsoid, U, V, e), (U + 1) * (V - 1));
+  vtkSmartPointer<vtkPolyData> out = Generate(superEllipsoid, U, V, e);
+  for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+  {
+    const Vec p = Tuple(out->GetPoints()->GetData(), id);
+    const Vec grad = { 2 * p[0], p[1] / 2, 2 * p[2] / 9 }; // outward
+    EXPECT_LT(Angle(Tuple(out->GetPointData()->GetNormals(), id), grad),
+      id <= U || id >= V * (U + 1) ? 1e-4 : 1e-6)
       << "point " << id;
   }
 }
