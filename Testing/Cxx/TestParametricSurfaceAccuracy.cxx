@@ -745,3 +745,50 @@ TEST(ParametricSurfaceAccuracy, LovePillarMatchesSeed004Extrusion)
     EXPECT_TRUE(inside(p[0] - 0.01 * n[0], p[2] - 0.01 * n[2])) << "column " << i;
   }
 }
+
+TEST(ParametricSurfaceAccuracy, BezierProfileBadInput)
+{
+  vtkNew<vtkBezierProfile> profile;
+  vtkNew<ParametricErrorObserver> observer;
+  observer->Observe(profile);
+  double p[2] = { 7, 7 }, d1[2] = { 7, 7 }, d2[2] = { 7, 7 };
+  // Empty, then 5 points (not 3k+1): not evaluable, zeros, no length.
+  for (int n : { 0, 5 })
+  {
+    profile->RemoveAllControlPoints();
+    for (int i = 0; i < n; ++i)
+    {
+      profile->AddControlPoint(i, i);
+    }
+    std::string reason;
+    EXPECT_FALSE(profile->IsValid(&reason));
+    EXPECT_NE(reason.find("3k+1"), std::string::npos);
+    EXPECT_EQ(profile->GetNumberOfSegments(), 0);
+    EXPECT_FALSE(profile->Evaluate(0.5, p, d1, d2));
+    EXPECT_EQ(p[0], 0.0);
+    EXPECT_EQ(d1[1], 0.0);
+    EXPECT_EQ(d2[0], 0.0);
+    EXPECT_EQ(profile->GetLength(), 0.0);
+  }
+  // Out-of-range control point indices are errors that change nothing.
+  profile->RemoveAllControlPoints();
+  profile->SetToVase();
+  const vtkMTimeType before = profile->GetMTime();
+  profile->SetControlPoint(10, 1, 1);
+  profile->GetControlPoint(-1, p);
+  EXPECT_EQ(observer->ErrorCount, 2);
+  EXPECT_NE(observer->Errors.find("does not exist"), std::string::npos);
+  EXPECT_EQ(profile->GetMTime(), before);
+  EXPECT_EQ(profile->GetNumberOfControlPoints(), 10);
+  // Parameters outside [0,1] are clamped to the ends; NaN is refused.
+  profile->Evaluate(-3, p, nullptr, nullptr);
+  EXPECT_EQ(p[0], 0.0);
+  EXPECT_EQ(p[1], 0.0);
+  profile->Evaluate(3, p, nullptr, nullptr);
+  EXPECT_EQ(p[0], 0.5);
+  EXPECT_EQ(p[1], 2.0);
+  EXPECT_FALSE(profile->Evaluate(vtkMath::Nan(), p, nullptr, nullptr));
+  std::ostringstream printed;
+  profile->Print(printed);
+  EXPECT_NE(printed.str().find("NumberOfControlPoints: 10"), std::string::npos);
+}
