@@ -126,22 +126,48 @@ struct Grid
     }
   }
 
-  // The function at grid column col and row j, from the cached terms when it is separable.
-  void EvaluateGrid(vtkIdType col, vtkIdType j, double p[3], double du[3], double dv[3]) const
+  /**
+   * The function at @a count consecutive columns from @a col of row @a j: points in P (3 per
+   * point) and derivatives in D (9 per point, Duvw's layout) which, multiplied by
+   * DerivativeScale, are unit-square derivatives. Separable functions use the cached terms.
+   * A block is evaluated before any of it is read back, so that reading does not wait on
+   * the stores the function has just made (a 16-byte load of two 8-byte stores cannot be
+   * forwarded).
+   */
+  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* P, double* D) const
   {
-    if (!this->Separable)
+    if (this->Separable)
     {
-      this->Evaluate(this->UDomain[col], this->VDomain[j], p, du, dv);
-      return;
+      const double* vTerms = this->VTerms.data() + j * this->NumVTerms;
+      const double* uTerms = this->UTerms.data() + col * this->NumUTerms;
+      for (int k = 0; k < count; ++k)
+      {
+        this->Separable->EvaluateTerms(uTerms + k * this->NumUTerms, vTerms, P + 3 * k, D + 9 * k);
+      }
     }
-    double d[9];
-    this->Separable->EvaluateTerms(
-      this->UTerms.data() + col * this->NumUTerms, this->VTerms.data() + j * this->NumVTerms, p, d);
-    for (int k = 0; k < 3; ++k)
+    else if (this->HasDerivatives)
     {
-      du[k] = d[k] * this->UExtent;
-      dv[k] = d[3 + k] * this->VExtent;
+      for (int k = 0; k < count; ++k)
+      {
+        double uvw[3] = { this->UDomain[col + k], this->VDomain[j], 0.0 };
+        this->Function->Evaluate(uvw, P + 3 * k, D + 9 * k);
+      }
     }
+    else
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        this->Evaluate(
+          this->UDomain[col + k], this->VDomain[j], P + 3 * k, D + 9 * k, D + 9 * k + 3);
+      }
+    }
+  }
+
+  // Factors from the derivatives EvaluateBlock gives to unit-square derivatives.
+  double DerivativeScale(int axis) const
+  {
+    return (this->Separable || this->HasDerivatives) ? (axis == 0 ? this->UExtent : this->VExtent)
+                                                     : 1.0;
   }
 
   // Unit-square derivatives only, at unit-square parameters (clamped to the domain).
@@ -307,11 +333,26 @@ struct PointWorker
     vtkIdType& arbitrary = this->Arbitrary.Local();
     bool finite = true;
     const bool frame = this->Normals || this->Tangents;
+    const double scaleU = g.DerivativeScale(0), scaleV = g.DerivativeScale(1);
+    constexpr int BlockSize = 64;
+    double blockP[3 * BlockSize];
+    double blockD[9 * BlockSize];
+    int inBlock = 0, blockLength = 0;
     for (vtkIdType id = begin; id < end; ++id)
     {
       const vtkIdType j = g.Row0 + row;
-      double p[3], du[3], dv[3];
-      g.EvaluateGrid(col, j, p, du, dv);
+      if (inBlock == blockLength)
+      {
+        blockLength =
+          static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
+        g.EvaluateBlock(col, j, blockLength, blockP, blockD);
+        inBlock = 0;
+      }
+      const double* p = blockP + 3 * inBlock;
+      const double* d = blockD + 9 * inBlock;
+      ++inBlock;
+      const double du[3] = { d[0] * scaleU, d[1] * scaleU, d[2] * scaleU };
+      const double dv[3] = { d[3] * scaleV, d[4] * scaleV, d[5] * scaleV };
       finite = finite && std::isfinite(p[0] + p[1] + p[2]) &&
         std::isfinite(du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2]);
       Real* pt = this->Points + 3 * id;
