@@ -792,3 +792,34 @@ TEST(ParametricSurfaceAccuracy, BezierProfileBadInput)
   profile->Print(printed);
   EXPECT_NE(printed.str().find("NumberOfControlPoints: 10"), std::string::npos);
 }
+
+TEST(ParametricSurfaceAccuracy, ConeApexTakesEachColumnsLimit)
+{
+  // A cone rising from (r, y) = (1, 0) to its apex (0, 1). Along column theta the surface
+  // normal is (cos theta, 1, -sin theta)/sqrt(2) everywhere, so at the apex, where Du
+  // vanishes, the limit differs per column; the tangent there is (-sin theta, 0, -cos theta).
+  vtkNew<vtkParametricRevolution> cone;
+  vtkBezierProfile* profile = cone->GetProfile();
+  profile->RemoveAllControlPoints();
+  profile->AddControlPoint(1, 0);
+  profile->AddControlPoint(2.0 / 3, 1.0 / 3);
+  profile->AddControlPoint(1.0 / 3, 2.0 / 3);
+  profile->AddControlPoint(0, 1);
+  Expectation e;
+  const int U = 12, V = 4;
+  vtkSmartPointer<vtkPolyData> out = Generate(cone, U, V, e);
+  for (int j = 0; j <= V; ++j)
+  {
+    for (int i = 0; i <= U; ++i)
+    {
+      const double theta = 2 * Pi * i / U;
+      const vtkIdType id = j * (U + 1) + i;
+      const Vec n = { std::cos(theta) / std::sqrt(2.0), 1 / std::sqrt(2.0),
+        -std::sin(theta) / std::sqrt(2.0) };
+      const Vec t = { -std::sin(theta), 0, -std::cos(theta) };
+      const double tolerance = j == V ? 1e-4 : 1e-6;
+      EXPECT_LT(Angle(Tuple(out->GetPointData()->GetNormals(), id), n), tolerance) << id;
+      EXPECT_LT(Angle(Tuple(out->GetPointData()->GetArray("Tangents"), id), t), tolerance) << id;
+    }
+  }
+}
