@@ -20,6 +20,7 @@
 #include "vtkTextureObject.h"
 
 #include "vtkSurfaceDetailBumpFS.h"
+#include "vtkSurfaceDetailNormalCoding.h"
 #include "vtkSurfaceDetailNormalMapFS.h"
 #include "vtkSurfaceDetailParallaxFS.h"
 #include "vtkSurfaceDetailTangentFrameFS.h"
@@ -427,6 +428,7 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   }
   if (this->ActiveUsesNormalMap)
   {
+    fsDec += vtkSurfaceDetailNormalCoding;
     fsDec += vtkSurfaceDetailNormalMapFS;
   }
   if (this->ActiveUsesHeightMap)
@@ -543,7 +545,7 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   {
     program->SetUniformi("sdNormalMap", TextureUnit(this->NormalMap));
     program->SetUniformf("sdNormalStrength", static_cast<float>(this->NormalStrength));
-    program->SetUniformf("sdGreenSign", this->GreenUp ? 1.0f : -1.0f);
+    program->SetUniformi("sdGreenUp", this->GreenUp ? 1 : 0);
   }
   if (this->ActiveUsesHeightMap)
   {

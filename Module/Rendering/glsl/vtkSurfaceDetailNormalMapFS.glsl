@@ -1,14 +1,13 @@
-// Normal map decode: RGB = 0.5*n + 0.5 in tangent space (DecodeUnit in
-// vtkSurfaceDetailConventions.h), green up unless sdGreenSign = -1; the strength scales the
-// tangential part, as vtkProperty's NormalScale does.
+// Normal mapping: the tangent-space normal from the normal map, decoded by sdDecodeNormal
+// (vtkSurfaceDetailNormalCoding.glsl, the twin of the conventions header), green up unless
+// sdGreenUp is 0; the strength scales the tangential part, as vtkProperty's NormalScale does.
 uniform sampler2D sdNormalMap;
 uniform float sdNormalStrength;
-uniform float sdGreenSign;
+uniform int sdGreenUp;
 
 vec3 sdNormalMapTS(vec2 tc)
 {
-  vec3 n = texture(sdNormalMap, tc).xyz * 2.0 - 1.0;
-  n.y *= sdGreenSign;
+  vec3 n = sdDecodeNormal(texture(sdNormalMap, tc).rgb, sdGreenUp != 0);
   n.xy *= sdNormalStrength;
   float len = length(n);
   return len > 1e-12 ? n / len : vec3(0.0, 0.0, 1.0);
