@@ -20,6 +20,7 @@
 #include "vtkTextureObject.h"
 
 #include "vtkSurfaceDetailBumpFS.h"
+#include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailNormalCoding.h"
 #include "vtkSurfaceDetailNormalMapFS.h"
 #include "vtkSurfaceDetailParallaxFS.h"
@@ -243,7 +244,7 @@ std::string vtkSurfaceDetailMapper::ShaderKey() const
 {
   std::ostringstream key;
   key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesNormalMap
-      << this->ActiveUsesHeightMap << this->Differences;
+      << this->ActiveUsesHeightMap;
   return key.str();
 }
 
@@ -277,25 +278,48 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   {
     this->HeightTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
-  if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp)
+  if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp &&
+    this->Differences == this->HeightUploadDifferences)
   {
     return;
   }
   int dims[3];
   image->GetDimensions(dims);
-  const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const int w = dims[0], h = dims[1];
   // Unsigned integer heights are fractions of their type's range, as 8-bit colours are.
   const int type = scalars->GetDataType();
   const bool normalised = type != VTK_FLOAT && type != VTK_DOUBLE;
   const double scale = normalised ? 1.0 / scalars->GetDataTypeMax() : 1.0;
-  std::vector<float> heights(count);
-  for (vtkIdType i = 0; i < count; ++i)
+  auto height = [&](int i, int j)
+  { return scale * scalars->GetComponent(static_cast<vtkIdType>(j) * w + i, 0); };
+  // Texel (i,j) holds (h, dh/ds, dh/dt), the derivatives per unit of texture coordinate
+  // by forward or central differences with the texture's own wrap mode. Differences of
+  // linearly interpolated heights taken one texel apart equal the linear interpolation of
+  // these texel differences (both use the same weights), so one lookup gives exactly what
+  // seed 000's three-lookup Cg code computes, at a third of the texture traffic.
+  const int wrap = this->HeightMap->GetWrap() == vtkTexture::ClampToBorder
+    ? vtkSurfaceDetail::ClampToEdge
+    : this->HeightMap->GetWrap();
+  const bool central = this->Differences == Central;
+  std::vector<float> texels(3 * static_cast<size_t>(w) * h);
+  for (int j = 0; j < h; ++j)
   {
-    heights[i] = static_cast<float>(scale * scalars->GetComponent(i, 0));
+    for (int i = 0; i < w; ++i)
+    {
+      const int i1 = vtkSurfaceDetail::WrapIndex(i + 1, w, wrap);
+      const int j1 = vtkSurfaceDetail::WrapIndex(j + 1, h, wrap);
+      const int i0 = central ? vtkSurfaceDetail::WrapIndex(i - 1, w, wrap) : i;
+      const int j0 = central ? vtkSurfaceDetail::WrapIndex(j - 1, h, wrap) : j;
+      const double span = central ? 2.0 : 1.0;
+      float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
+      texel[0] = static_cast<float>(height(i, j));
+      texel[1] = static_cast<float>((height(i1, j) - height(i0, j)) * w / span);
+      texel[2] = static_cast<float>((height(i, j1) - height(i, j0)) * h / span);
+    }
   }
   this->HeightTexture->SetContext(window);
   this->HeightTexture->SetRequireTextureFloat(true);
-  this->HeightTexture->Create2DFromRaw(dims[0], dims[1], 1, VTK_FLOAT, heights.data());
+  this->HeightTexture->Create2DFromRaw(w, h, 3, VTK_FLOAT, texels.data());
   // vtkTexture and vtkTextureObject number their wrap modes alike.
   this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
   this->HeightTexture->SetWrapT(this->HeightMap->GetWrap());
@@ -303,9 +327,8 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
     this->HeightMap->GetInterpolate() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
   this->HeightTexture->SetMinificationFilter(filter);
   this->HeightTexture->SetMagnificationFilter(filter);
-  this->HeightSize[0] = dims[0];
-  this->HeightSize[1] = dims[1];
   this->HeightUploadStamp = stamp;
+  this->HeightUploadDifferences = this->Differences;
 }
 
 //------------------------------------------------------------------------------
@@ -417,10 +440,6 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
     vsDec += "out vec3 sdNormalDirVCVSOutput;\n";
     vsImpl += "sdNormalDirVCVSOutput = mat3(MCVCMatrix) * normalize(normalMC);\n";
     fsDec += "in vec3 sdNormalDirVCVSOutput;\n";
-  }
-  if (this->ActiveUsesHeightMap && this->Differences == Central)
-  {
-    fsDec = "#define SD_CENTRAL_DIFFERENCES\n" + fsDec;
   }
   if (this->ActiveUsesTangents)
   {
@@ -549,9 +568,7 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   }
   if (this->ActiveUsesHeightMap)
   {
-    const float texel[2] = { 1.0f / this->HeightSize[0], 1.0f / this->HeightSize[1] };
     program->SetUniformi("sdHeightMap", this->HeightTexture->GetTextureUnit());
-    program->SetUniform2f("sdHeightTexelSize", texel);
     program->SetUniformf("sdBumpScale", static_cast<float>(this->BumpScale));
   }
   if (this->ActiveTechnique == ParallaxMapping)

@@ -211,8 +211,9 @@ private:
   // Whether the primitive being built or drawn gets the detail shading.
   bool AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act);
   std::string ShaderKey() const;
-  // Uploads the height map's first channel as a 32-bit float texture (integer types scaled
-  // to [0,1]): vtkOpenGLTexture stores float images in 8 bits, too coarse for differences.
+  // Uploads the height map's first channel and its finite differences as a 32-bit float
+  // RGB texture (integer types scaled to [0,1]): vtkOpenGLTexture would store float images
+  // in 8 bits, too coarse for differences.
   void UploadHeightMap(vtkRenderer* ren);
 
   int ActiveTechnique = None;
@@ -224,7 +225,7 @@ private:
   std::map<const vtkOpenGLHelper*, std::string> BuiltShaderKeys;
   vtkSmartPointer<vtkTextureObject> HeightTexture;
   vtkMTimeType HeightUploadStamp = 0;
-  int HeightSize[2] = { 1, 1 };
+  int HeightUploadDifferences = Forward;
 };
 
 #endif

@@ -1,25 +1,16 @@
-// Bump mapping (Blinn 1978) from a height texture h(s,t) (first channel). The gradient of
-// k*h over the unit texture square comes from finite differences at the texture's own texel
-// size (1/w, 1/h), forward as in seed 000's Cg code or central when
-// SD_CENTRAL_DIFFERENCES is defined; the tangent-space normal of z = k*h(s,t) is then
+// Bump mapping (Blinn 1978) from a height map h(s,t). sdHeightMap holds (h, dh/ds, dh/dt)
+// per texel, the derivatives by forward (seed 000's Cg code) or central differences at the
+// height map's own texel size 1/w, 1/h, made on upload (vtkSurfaceDetailMapper.cxx,
+// UploadHeightMap): interpolating those differences gives exactly the difference of
+// interpolated heights one texel apart, in one lookup instead of three. The gradient of
+// k*h over the unit texture square gives the tangent-space normal of z = k*h(s,t),
 // normalize(-k*dh/ds, -k*dh/dt, 1), the same map vtkHeightMapToNormalMap makes.
 uniform sampler2D sdHeightMap;
-uniform vec2 sdHeightTexelSize;
 uniform float sdBumpScale;
 
 vec2 sdHeightGradient(vec2 tc)
 {
-  vec2 d = sdHeightTexelSize;
-#ifdef SD_CENTRAL_DIFFERENCES
-  float dhds = texture(sdHeightMap, tc + vec2(d.x, 0.0)).r - texture(sdHeightMap, tc - vec2(d.x, 0.0)).r;
-  float dhdt = texture(sdHeightMap, tc + vec2(0.0, d.y)).r - texture(sdHeightMap, tc - vec2(0.0, d.y)).r;
-  return sdBumpScale * vec2(dhds, dhdt) / (2.0 * d);
-#else
-  float h0 = texture(sdHeightMap, tc).r;
-  float dhds = texture(sdHeightMap, tc + vec2(d.x, 0.0)).r - h0;
-  float dhdt = texture(sdHeightMap, tc + vec2(0.0, d.y)).r - h0;
-  return sdBumpScale * vec2(dhds, dhdt) / d;
-#endif
+  return sdBumpScale * texture(sdHeightMap, tc).gb;
 }
 
 vec3 sdBumpTS(vec2 tc)
