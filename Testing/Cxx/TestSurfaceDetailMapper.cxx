@@ -19,6 +19,8 @@
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -26,6 +28,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
@@ -37,6 +40,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -190,6 +194,17 @@ struct Material
 
 const Vec3 LightPosition{ 1.0, 0.6, 1.2 }; // light travels from here towards the origin
 
+// A positional spot light for the positional-light test (VTK 9.1's positional shader:
+// constant attenuation 1, cone test and pow(cos, exponent) fall-off).
+struct SpotLight
+{
+  bool Enabled = false;
+  Vec3 Position{ 0.6, 0.9, 1.6 };
+  double ConeAngle = 60.0;
+  double Exponent = 3.0;
+};
+SpotLight Spot;
+
 // Everything a scene needs; Render() returns the RGB read-back, row 0 at the bottom.
 struct Scene
 {
@@ -208,8 +223,12 @@ struct Scene
     this->Renderer->AutomaticLightCreationOff();
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
-    light->PositionalOff();
-    light->SetPosition(LightPosition[0], LightPosition[1], LightPosition[2]);
+    light->SetPositional(Spot.Enabled);
+    light->SetConeAngle(Spot.ConeAngle);
+    light->SetExponent(Spot.Exponent);
+    light->SetAttenuationValues(1, 0, 0);
+    const Vec3& position = Spot.Enabled ? Spot.Position : LightPosition;
+    light->SetPosition(position[0], position[1], position[2]);
     light->SetFocalPoint(0, 0, 0);
     light->SetColor(1, 1, 1);
     light->SetIntensity(1.0);
@@ -283,13 +302,24 @@ Hit PixelHit(int i, int j, vtkMatrix4x4* m)
 // (the camera looks down -z from z = 5 with y up).
 Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
 {
-  const Vec3 L = Normalized({ -LightPosition[0], -LightPosition[1], -LightPosition[2] });
+  Vec3 L = Normalized({ -LightPosition[0], -LightPosition[1], -LightPosition[2] });
+  double attenuation = 1.0;
+  if (Spot.Enabled)
+  {
+    const Vec3 axis = Normalized({ -Spot.Position[0], -Spot.Position[1], -Spot.Position[2] });
+    L = Normalized(
+      { world[0] - Spot.Position[0], world[1] - Spot.Position[1], world[2] - Spot.Position[2] });
+    const double coneDot = Dot(L, axis);
+    attenuation =
+      coneDot >= std::cos(Spot.ConeAngle * Pi / 180) ? std::pow(coneDot, Spot.Exponent) : 0.0;
+  }
   const Vec3 n = Normalized(nWorld);
-  const double df = std::max(0.0, -Dot(n, L));
+  const double df = std::max(0.0, attenuation * -Dot(n, L));
   const double nl = Dot(n, L);
   const Vec3 r{ L[0] - 2 * nl * n[0], L[1] - 2 * nl * n[1], L[2] - 2 * nl * n[2] };
   const Vec3 v = Normalized({ -world[0], -world[1], -(world[2] - 5.0) });
-  const double sf = (df > 0 ? 1.0 : 0.0) * std::pow(std::max(0.0, Dot(r, v)), mat.SpecularPower);
+  const double sf =
+    (df > 0 ? 1.0 : 0.0) * attenuation * std::pow(std::max(0.0, Dot(r, v)), mat.SpecularPower);
   Vec3 c;
   for (int k = 0; k < 3; ++k)
   {
@@ -466,6 +496,20 @@ TEST(vtkSurfaceDetailMapper, NormalMapRotatedNonUniformScale)
   scene.Mat.Specular = 0.4;
   const auto image = scene.Render();
   EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapPositionalSpotLight)
+{
+  Spot.Enabled = true;
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  scene.Mat.Specular = 0.5;
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+  Spot.Enabled = false; // the directional light's picture is another one
+  EXPECT_LT(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 30.0);
 }
 
 TEST(vtkSurfaceDetailMapper, BumpForwardDifferences)
@@ -652,6 +696,82 @@ TEST(vtkSurfaceDetailMapper, ReliefFallsBackToParallaxWithWarning)
   EXPECT_EQ(errors->Errors, 0);
   EXPECT_EQ(errors->Warnings, 1);
   EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
+}
+
+// A 16-bit height map (read as value/65535) gives the same picture as the float one.
+TEST(vtkSurfaceDetailMapper, BumpUnsignedShortHeights)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(256, 256, 1);
+  image->AllocateScalars(VTK_UNSIGNED_SHORT, 1);
+  auto* p = static_cast<unsigned short*>(image->GetScalarPointer());
+  for (int j = 0; j < 256; ++j)
+  {
+    for (int i = 0; i < 256; ++i)
+    {
+      p[j * 256 + i] =
+        static_cast<unsigned short>(65535 * Height((i + 0.5) / 256, (j + 0.5) / 256) + 0.5);
+    }
+  }
+  vtkNew<vtkTexture> heights;
+  heights->SetInputData(image);
+  heights->InterpolateOn();
+  heights->RepeatOn();
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferencesToCentral();
+  mapper->SetHeightMap(heights);
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+}
+
+// The shader program is built once, not per frame; a technique change rebuilds it, and a
+// uniform (the strength) reuses the compiled program.
+class CountingMapper : public vtkSurfaceDetailMapper
+{
+public:
+  static CountingMapper* New();
+  vtkTypeMacro(CountingMapper, vtkSurfaceDetailMapper);
+  int Builds = 0;
+  vtkShaderProgram* TrianglesProgram() { return this->Primitives[PrimitiveTris].Program; }
+
+protected:
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    ++this->Builds;
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  }
+};
+vtkStandardNewMacro(CountingMapper);
+
+TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
+{
+  vtkNew<CountingMapper> mapper;
+  mapper->SetInputData(MakeRectangle(false));
+  mapper->SetNormalMap(MakeNormalMap());
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetTechniqueToNormalMapping();
+  Scene scene(mapper);
+  scene.Render();
+  const int first = mapper->Builds;
+  EXPECT_GE(first, 1);
+  scene.Render();
+  scene.Render();
+  EXPECT_EQ(mapper->Builds, first) << "rebuilt in a frame where nothing changed";
+  vtkShaderProgram* program = mapper->TrianglesProgram();
+  mapper->SetNormalStrength(0.5);
+  scene.Render();
+  EXPECT_EQ(mapper->TrianglesProgram(), program) << "a uniform change compiled a new program";
+  const int beforeSwitch = mapper->Builds;
+  mapper->SetTechniqueToBumpMapping();
+  scene.Render();
+  EXPECT_GT(mapper->Builds, beforeSwitch);
+  EXPECT_NE(mapper->TrianglesProgram(), program);
+  const int afterSwitch = mapper->Builds;
+  scene.Render();
+  EXPECT_EQ(mapper->Builds, afterSwitch);
 }
 
 TEST(vtkSurfaceDetailMapper, PrintSelf)
