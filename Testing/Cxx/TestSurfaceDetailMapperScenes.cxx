@@ -2,7 +2,7 @@
 // from vtkParametricSurfaceSource, seen head-on or obliquely, under the headlight or a
 // positional light. Arguments:
 //   --technique none|normal|bump|parallax   --surface rectangle|sphere|torus|vase
-//   --view head-on|oblique                  --light headlight|positional
+//   --view head-on|oblique                  --light headlight|positional|spot|lightkit
 // The bricks are a procedural height field (bricks at height 1, mortar joints at 0 with a
 // bevel), a colour texture of the same layout, and the normal map vtkHeightMapToNormalMap
 // makes from the heights, so all techniques show the same raised bricks.
@@ -14,6 +14,7 @@
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
+#include <vtkLightKit.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkParametricDonut.h>
@@ -239,7 +240,13 @@ int main(int argc, char* argv[])
     camera->Elevation(20);
     camera->OrthogonalizeViewUp();
   }
-  if (lightName == "positional")
+  if (lightName == "lightkit")
+  {
+    renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLightKit> kit; // key light upper left, fill, back lights and headlight
+    kit->AddLightsToRenderer(renderer);
+  }
+  if (lightName == "positional" || lightName == "spot")
   {
     // A point light above, right of and in front of the object as the camera sees it, at
     // twice the object's size: the lit side of every brick faces up and to the right.
@@ -254,7 +261,9 @@ int main(int argc, char* argv[])
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
     light->PositionalOn();
-    light->SetConeAngle(180);
+    // The spot's cone (8 degrees, fall-off exponent 4) lights a disc in the middle.
+    light->SetConeAngle(lightName == "spot" ? 8 : 180);
+    light->SetExponent(4);
     double position[3];
     for (int k = 0; k < 3; ++k)
     {
