@@ -1,6 +1,8 @@
-// Seed 000's surface detail on seed 004's brick wall: the same flat wall (two triangles'
-// worth of detail, no displaced geometry) drawn four ways side by side, lit by a point light
-// from the upper right: plain texture, normal mapping, bump mapping and parallax mapping.
+// Seed 000's surface detail on seed 004's brick wall: the same flat wall (no displaced
+// geometry) drawn four ways side by side, lit by a point light from the upper right: plain
+// texture, normal mapping, bump mapping and parallax mapping. The textures are the
+// project's Data/brick_color.png and Data/brick_height.png (16-bit); the normal map is made
+// from the heights by vtkHeightMapToNormalMap.
 // Usage: SurfaceDetailBricks <output folder>   (writes SurfaceDetailBricks.png there)
 
 #include <vtkSurfaceDetailMapper.h>
@@ -9,9 +11,9 @@
 #include <vtkCamera.h>
 #include <vtkCoordinate.h>
 #include <vtkHeightMapToNormalMap.h>
-#include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
+#include <vtkOIIOImageReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkParametricRectangle.h>
 #include <vtkParametricSurfaceSource.h>
@@ -23,60 +25,8 @@
 #include <vtkTexture.h>
 #include <vtkWindowToImageFilter.h>
 
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <string>
-
-namespace
-{
-constexpr int N = 512;
-
-// Running bond: 4 courses of 2 bricks per texture square, alternate courses offset by half
-// a brick. Returns the distance to the nearest joint (texture units) and the brick's index.
-double JointDistance(double s, double t, int& brick)
-{
-  const double row = std::floor(t * 4);
-  const double x = (s + (static_cast<int>(row) % 2 ? 0.25 : 0.0)) * 2;
-  const double col = std::floor(x);
-  brick = static_cast<int>(row * 5 + std::fmod(col, 2.0));
-  const double dx = std::min(x - col, 1 - (x - col)) / 2;
-  const double dy = std::min(t * 4 - row, 1 - (t * 4 - row)) / 4;
-  return std::min(dx, dy);
-}
-
-void MakeBricks(vtkImageData* heights, vtkImageData* colours)
-{
-  heights->SetDimensions(N, N, 1);
-  heights->AllocateScalars(VTK_FLOAT, 1);
-  colours->SetDimensions(N, N, 1);
-  colours->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* h = static_cast<float*>(heights->GetScalarPointer());
-  auto* rgb = static_cast<unsigned char*>(colours->GetScalarPointer());
-  for (int j = 0; j < N; ++j)
-  {
-    for (int i = 0; i < N; ++i)
-    {
-      const double s = (i + 0.5) / N, t = (j + 0.5) / N;
-      int brick;
-      const double d = JointDistance(s, t, brick);
-      double x = std::min(1.0, std::max(0.0, (d - 0.008) / 0.02));
-      x = x * x * (3 - 2 * x); // bricks at 1 with a rounded bevel down to the joints at 0
-      // A little roughness on the brick faces, so the light has something to catch.
-      const double grain = 0.04 * std::sin(97 * s + 13 * brick) * std::sin(61 * t + 7 * brick);
-      h[j * N + i] = static_cast<float>(x * (0.96 + grain));
-      const double shade = 0.85 + 0.15 * std::sin(brick * 2.3);
-      const double brickRGB[3] = { 0.70 * shade, 0.30 * shade, 0.20 * shade };
-      const double mortar[3] = { 0.80, 0.78, 0.72 };
-      for (int c = 0; c < 3; ++c)
-      {
-        rgb[3 * (j * N + i) + c] =
-          static_cast<unsigned char>(255 * (x * brickRGB[c] + (1 - x) * mortar[c]) + 0.5);
-      }
-    }
-  }
-}
-} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -89,23 +39,23 @@ int main(int argc, char* argv[])
   source->SetUResolution(8);
   source->SetVResolution(8);
   source->GenerateTangentsOn();
-  source->SetTextureRepeat(2, 2);
+  source->SetTextureRepeat(1, 1); // 4 bricks across, 8 courses up
 
-  vtkNew<vtkImageData> heights;
-  vtkNew<vtkImageData> colours;
-  MakeBricks(heights, colours);
-  constexpr double strength = 0.012; // bumps of z = 0.012*h over a texture square
+  vtkNew<vtkOIIOImageReader> colours;
+  colours->SetFileName(SURFACEDETAIL_DATA_DIR "/brick_color.png");
+  vtkNew<vtkOIIOImageReader> heights;
+  heights->SetFileName(SURFACEDETAIL_DATA_DIR "/brick_height.png");
+  constexpr double strength = 0.006; // bumps of z = 0.006*h over the texture square
   vtkNew<vtkHeightMapToNormalMap> normals;
-  normals->SetInputData(heights);
+  normals->SetInputConnection(heights->GetOutputPort());
   normals->SetStrength(strength);
-  normals->Update();
 
   vtkNew<vtkTexture> colourTexture;
-  colourTexture->SetInputData(colours);
+  colourTexture->SetInputConnection(colours->GetOutputPort());
   vtkNew<vtkTexture> normalTexture;
   normalTexture->SetInputConnection(normals->GetOutputPort());
   vtkNew<vtkTexture> heightTexture;
-  heightTexture->SetInputData(heights);
+  heightTexture->SetInputConnection(heights->GetOutputPort());
   for (vtkTexture* texture : { colourTexture.Get(), normalTexture.Get(), heightTexture.Get() })
   {
     texture->InterpolateOn();
