@@ -10,6 +10,7 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLTexture.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -27,6 +28,7 @@
 #include "vtkSurfaceDetailTangentFrameFS.h"
 
 #include <algorithm>
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -125,7 +127,12 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
     std::ostringstream err;
     const char* name = GetTechniqueAsString(technique);
-    if (!pd->GetNormals())
+    if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
+    {
+      err << name << " needs smooth shading; the actor's property has flat interpolation. "
+          << "Use SetInterpolationToGouraud() or SetInterpolationToPhong().";
+    }
+    else if (!pd->GetNormals())
     {
       err << name << " needs point normals; the input has none. Generate them first "
           << "(vtkPolyDataNormals, or the source's GenerateNormals).";
@@ -232,6 +239,12 @@ bool vtkSurfaceDetailMapper::AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act)
     return false;
   }
   if (cellBO != &this->Primitives[PrimitiveTris] && cellBO != &this->Primitives[PrimitiveTriStrips])
+  {
+    return false;
+  }
+  // Flat shading uploads no point normals (and then no normalMC to build the frame from).
+  if (this->VBOs->GetNumberOfComponents("normalMC") != 3 ||
+    this->VBOs->GetNumberOfComponents("tcoord") != 2)
   {
     return false;
   }
@@ -524,7 +537,9 @@ void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
   const std::string fsDecl = "in vec2 sdTCoordVCVSOutput;\nvec2 tcoordVCVSOutput;\n";
   if (vs.find("tcoordVCVSOutput") != std::string::npos)
   {
-    vtkShaderProgram::Substitute(vs, "tcoordVCVSOutput", "sdTCoordVCVSOutput", true);
+    // Whole identifiers only: VTK's seamless-texture varyings (tcoordVCVSOutputU1, ...) keep
+    // their names.
+    vs = std::regex_replace(vs, std::regex("\\btcoordVCVSOutput\\b"), "sdTCoordVCVSOutput");
     vtkShaderProgram::Substitute(fs, "in vec2 tcoordVCVSOutput;\n", fsDecl);
     vtkShaderProgram::Substitute(vs, DecTag, "");
     vtkShaderProgram::Substitute(vs, VSImplTag, "");

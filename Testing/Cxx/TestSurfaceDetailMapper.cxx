@@ -653,6 +653,8 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
       nullptr },
     { "two-channel normal map", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
       twoChannel, nullptr },
+    { "flat interpolation", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
+      MakeNormalMap(), nullptr },
   };
   // One window for all cases: X servers under test do not like windows made in a burst.
   Scene scene(nullptr);
@@ -667,6 +669,8 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     mapper->AddObserver(vtkCommand::ErrorEvent, errors);
     mapper->AddObserver(vtkCommand::WarningEvent, errors);
     scene.Actor->SetMapper(mapper);
+    scene.Actor->GetProperty()->SetInterpolation(
+      std::string(c.Name) == "flat interpolation" ? VTK_FLAT : VTK_GOURAUD);
     const auto image = scene.Render();
     scene.Render(); // reported once, not every frame
     EXPECT_EQ(errors->Errors, 1) << errors->Last;
