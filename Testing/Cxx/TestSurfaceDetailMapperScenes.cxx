@@ -282,13 +282,14 @@ int main(int argc, char* argv[])
   window->SetMultiSamples(0);
   window->SetSize(300, 300);
   window->AddRenderer(renderer);
-  vtkNew<vtkRenderWindowInteractor> interactor;
-  interactor->SetRenderWindow(window);
   window->Render();
 
   const int result = vtkRegressionTestImageThreshold(window, 0.05);
   if (result == vtkRegressionTester::DO_INTERACTOR)
   {
+    // Only on request (-I): an interactor opens one more X connection per test.
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    interactor->SetRenderWindow(window);
     interactor->Start();
   }
   return !result;
