@@ -15,7 +15,7 @@ vec2 sdHeightGradient(vec2 tc)
 
 vec3 sdBumpTS(vec2 tc)
 {
-  return normalize(vec3(-sdHeightGradient(tc), 1.0));
+  return vec3(-sdHeightGradient(tc), 1.0); // normalised by sdTangentToView
 }
 
 // Tangent-free bump mapping (Mikkelsen 2010, "Bump mapping unparametrized surfaces on the
