@@ -31,12 +31,18 @@
  *   warns and renders as ParallaxMapping.
  *
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
- * input lacks, a normal map with fewer than 3 components, lighting off) is reported once
+ * input lacks, a normal map with fewer than 3 components) is reported once
  * with vtkErrorMacro, and the actor is rendered as with Technique None until it is fixed.
  *
- * Changing a technique or an option that changes the shader text (GreenUp, Differences,
- * TangentFree, whether a normal map is used by parallax) rebuilds the shader program once;
- * strengths, scales and textures are uniforms.
+ * Shader code exists only for what is switched on. The program is rebuilt when the set of
+ * shader features changes (technique, TangentFree, whether parallax shades with the normal
+ * map), never per frame; strengths, scales, GreenUp and the maps themselves are uniforms
+ * and textures (VTK's shader cache hands back the compiled program). The height map is
+ * uploaded as a float texture holding h and its finite differences (Differences), so bump
+ * mapping reads one texel per fragment.
+ *
+ * Flat interpolation, lighting off or a non-surface representation draw as the plain
+ * mapper does (flat interpolation is reported, as it is likely a mistake).
  *
  * @sa vtkOpenGLPolyDataMapper vtkProperty::SetNormalTexture vtkHeightMapToNormalMap
  */
