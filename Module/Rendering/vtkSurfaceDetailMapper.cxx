@@ -28,6 +28,7 @@
 #include "vtkSurfaceDetailTangentFrameFS.h"
 
 #include <algorithm>
+#include <cmath>
 #include <regex>
 #include <sstream>
 #include <vector>
@@ -303,8 +304,21 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   const int type = scalars->GetDataType();
   const bool normalised = type != VTK_FLOAT && type != VTK_DOUBLE;
   const double scale = normalised ? 1.0 / scalars->GetDataTypeMax() : 1.0;
-  auto height = [&](int i, int j)
-  { return scale * scalars->GetComponent(static_cast<vtkIdType>(j) * w + i, 0); };
+  // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
+  std::vector<double> values(static_cast<size_t>(w) * h);
+  vtkIdType nonFinite = 0;
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), 0);
+    nonFinite += std::isfinite(v) ? 0 : 1;
+    values[k] = std::isfinite(v) ? v : 0.0;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< "The height map has " << nonFinite
+                    << " non-finite values (NaN or infinite); they are read as height 0.");
+  }
+  auto height = [&](int i, int j) { return values[static_cast<size_t>(j) * w + i]; };
   // Texel (i,j) holds (h, dh/ds, dh/dt), the derivatives per unit of texture coordinate
   // by forward or central differences with the texture's own wrap mode. Differences of
   // linearly interpolated heights taken one texel apart equal the linear interpolation of

@@ -687,6 +687,28 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
   }
 }
 
+TEST(vtkSurfaceDetailMapper, NonFiniteHeightsWarnOnce)
+{
+  auto heights = MakeHeightMap();
+  auto* image = vtkImageData::SafeDownCast(heights->GetInputDataObject(0, 0));
+  image->GetPointData()->GetScalars()->SetComponent(3 * 256 + 7, 0, std::nan(""));
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetHeightMap(heights);
+  mapper->SetBumpScale(Strength);
+  vtkNew<ErrorCounter> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  mapper->AddObserver(vtkCommand::WarningEvent, errors);
+  Scene scene(mapper);
+  const auto image1 = scene.Render();
+  scene.Render();
+  EXPECT_EQ(errors->Warnings, 1) << errors->Last;
+  EXPECT_EQ(errors->Errors, 0);
+  EXPECT_NE(errors->Last.find("non-finite"), std::string::npos);
+  // One bad texel spoils a few pixels around it, not the picture.
+  EXPECT_GE(PSNR(image1, scene.Actor, DetailNormal(false), scene.Mat), 35.0);
+}
+
 TEST(vtkSurfaceDetailMapper, ReliefFallsBackToParallaxWithWarning)
 {
   auto mapper = MakeMapper(MakeRectangle(false));
