@@ -443,6 +443,26 @@ TEST(vtkSurfaceDetailMapper, NormalMapMirroredUsesHandedness)
   EXPECT_LT(PSNR(image, scene.Actor, ignoringW, scene.Mat), 30.0);
 }
 
+// Three-component tangents, set as the point data's active tangents, are taken with w = +1.
+TEST(vtkSurfaceDetailMapper, NormalMapThreeComponentTangents)
+{
+  auto poly = MakeRectangle(false, false);
+  vtkNew<vtkFloatArray> t3;
+  t3->SetName("T3");
+  t3->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    t3->InsertNextTuple3(1, 0, 0);
+  }
+  poly->GetPointData()->SetTangents(t3);
+  auto mapper = MakeMapper(poly);
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::NormalMapping);
+}
+
 TEST(vtkSurfaceDetailMapper, NormalMapGreenDown)
 {
   auto mapper = MakeMapper(MakeRectangle(false));
