@@ -1,7 +1,8 @@
 // Uses SurfaceDetail::IO and SurfaceDetail::Filters from an installed package: writes an
 // OpenEXR image with vtkOIIOImageWriter, reads it back through vtkImageReader2Factory
-// (which must hand out vtkOIIOImageReader, registered by loading the library), samples it
-// with the wrap convention of SurfaceDetail::Filters, and checks every value.
+// (which must hand out vtkOIIOImageReader, registered by loading the shared library or, for
+// a static one, by RegisterWithImageReader2Factory()), samples it with the wrap convention
+// of SurfaceDetail::Filters, and checks every value.
 
 #include <vtkImageData.h>
 #include <vtkImageReader2.h>
@@ -45,6 +46,9 @@ int main(int argc, char* argv[])
     return 1;
   }
 
+#ifdef SURFACEDETAIL_STATIC
+  vtkOIIOImageReader::RegisterWithImageReader2Factory();
+#endif
   vtkSmartPointer<vtkImageReader2> reader;
   reader.TakeReference(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
   if (!vtkOIIOImageReader::SafeDownCast(reader))
