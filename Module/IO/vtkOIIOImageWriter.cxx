@@ -191,6 +191,7 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
     // VTK images carry straight (unassociated) alpha: say so, so that OIIO stores the
     // values as they are rather than un-premultiplying them.
     spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("png:compressionLevel", this->CompressionLevel);
     if (!out->open(path, spec))
     {
       return fail(vtkErrorCode::CannotOpenFileError, OIIOError(out.get()));
@@ -233,4 +234,5 @@ void vtkOIIOImageWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FloatPrecision: " << this->GetFloatPrecisionAsString() << "\n";
+  os << indent << "CompressionLevel: " << this->CompressionLevel << "\n";
 }

@@ -424,6 +424,7 @@ TEST(TestOIIOImageIO, PrintSelf)
   writer->Print(text);
   EXPECT_NE(text.str().find("ColorSpace"), std::string::npos);
   EXPECT_NE(text.str().find("FloatPrecision: Half"), std::string::npos);
+  EXPECT_NE(text.str().find("CompressionLevel: 5"), std::string::npos);
 }
 
 TEST(TestOIIOImageIO, ReaderRejectsMissingFile)
@@ -606,4 +607,29 @@ TEST(TestOIIOImageIO, WriterWarnsWhenFormatCannotHoldType)
   writer->SetFileName(TempPath("float.exr").c_str());
   writer->Write();
   EXPECT_EQ(observer->Warnings, 0) << observer->Message;
+}
+
+// The level reaches zlib: no compression makes a larger file than the strongest, and both
+// hold the same pixels.
+TEST(TestOIIOImageIO, WriterCompressionLevel)
+{
+  auto image = RandomImage(VTK_UNSIGNED_CHAR, 3, 64, 64, 6u);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+  {
+    values->SetVariantValue(i, (i / 97) % 256); // Compressible.
+  }
+  std::vector<unsigned long> sizes;
+  for (int level : { 0, 9 })
+  {
+    vtkNew<vtkOIIOImageWriter> writer;
+    writer->SetInputData(image);
+    writer->SetCompressionLevel(level);
+    const std::string path = TempPath("level" + std::to_string(level) + ".png");
+    writer->SetFileName(path.c_str());
+    writer->Write();
+    ExpectIdentical(image, Read(path));
+    sizes.push_back(vtksys::SystemTools::FileLength(path));
+  }
+  EXPECT_GT(sizes[0], 2 * sizes[1]);
 }
