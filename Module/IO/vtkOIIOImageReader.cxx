@@ -5,11 +5,8 @@
 #include "vtkImageData.h"
 #include "vtkImageReader2Collection.h"
 #include "vtkImageReader2Factory.h"
-#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSmartPointer.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -340,6 +337,8 @@ void vtkOIIOImageReader::ExecuteDataWithInformation(vtkDataObject* output, vtkIn
     const OIIO::stride_t rowBytes = pixelBytes * spec.width;
     const bool whole = extent[0] == 0 && extent[1] == spec.width - 1 && extent[2] == 0 &&
       extent[3] == spec.height - 1;
+    // A smaller update extent is cut from the whole picture: read_image() serves scanline
+    // and tiled files alike, and textures are small enough to read whole.
     std::vector<unsigned char> buffer;
     unsigned char* destination = static_cast<unsigned char*>(data->GetScalarPointer());
     if (!whole)
