@@ -141,6 +141,9 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
     memoryType == OIIO::TypeDesc::FLOAT && this->FloatPrecision == Half ? OIIO::TypeDesc::HALF
                                                                         : memoryType;
 
+  // Until open() succeeds, whatever is at path is the user's and must survive a failure;
+  // after it, the file is this writer's partial output and is removed.
+  bool opened = false;
   try
   {
     auto out = OIIO::ImageOutput::create(path);
@@ -158,6 +161,7 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
     {
       return fail(vtkErrorCode::CannotOpenFileError, OIIOError(out.get()));
     }
+    opened = true;
     if (out->spec().format != fileType)
     {
       vtkWarningMacro(<< "'" << path << "' (" << out->format_name() << ") cannot hold "
@@ -185,7 +189,10 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
   }
   catch (const std::exception& e)
   {
-    vtksys::SystemTools::RemoveFile(path);
+    if (opened)
+    {
+      vtksys::SystemTools::RemoveFile(path);
+    }
     return fail(vtkErrorCode::UnknownError, std::string("OpenImageIO failed: ") + e.what());
   }
   return true;

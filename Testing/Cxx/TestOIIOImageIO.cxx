@@ -27,9 +27,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -547,6 +550,61 @@ TEST(TestOIIOImageIO, WriterRejectsUnsupportedType)
   image->SetDimensions(4, 4, 1);
   image->AllocateScalars(VTK_LONG_LONG, 1);
   ExpectWriteFails(image, TempPath("longlong.tif"), "scalar type");
+}
+
+// A write that fails before the writer has opened the file must leave a file already at
+// that path as it was: it is the user's, not a partial file of the writer's.
+TEST(TestOIIOImageIO, WriterFailingBeforeOpenKeepsExistingFile)
+{
+  const std::string original = "the user's file, not an image";
+  auto makeExisting = [&original](const std::string& path)
+  {
+    std::ofstream(path, std::ios::binary) << original;
+    return path;
+  };
+  auto contents = [](const std::string& path)
+  {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  };
+  auto fiveComponents = RandomImage(VTK_UNSIGNED_CHAR, 5, 4, 4, 1u);
+  auto rgb = RandomImage(VTK_UNSIGNED_CHAR, 3, 4, 4, 1u);
+
+  // Layouts rejected before OpenImageIO is asked, and an extension it has no writer for.
+  const std::string rejected = makeExisting(TempPath("existing_five.png"));
+  const std::string unknown = makeExisting(TempPath("existing.notaformat"));
+  for (const auto& job :
+    { std::make_pair(fiveComponents.Get(), rejected), std::make_pair(rgb.Get(), unknown) })
+  {
+    vtkNew<vtkOIIOImageWriter> writer;
+    vtkNew<ErrorObserver> observer;
+    writer->AddObserver(vtkCommand::ErrorEvent, observer);
+    writer->SetInputData(job.first);
+    writer->SetFileName(job.second.c_str());
+    writer->Write();
+    EXPECT_EQ(observer->Errors, 1) << job.second;
+    EXPECT_NE(writer->GetErrorCode(), vtkErrorCode::NoError);
+    EXPECT_EQ(contents(job.second), original) << job.second;
+  }
+
+  // An exception before open() (here from an ErrorEvent observer that throws, as
+  // applications that turn VTK errors into exceptions have) must not delete the file either.
+  class ThrowingObserver : public vtkCommand
+  {
+  public:
+    static ThrowingObserver* New() { return new ThrowingObserver; }
+    void Execute(vtkObject*, unsigned long, void*) override
+    {
+      throw std::runtime_error("error turned into an exception");
+    }
+  };
+  vtkNew<vtkOIIOImageWriter> writer;
+  vtkNew<ThrowingObserver> thrower;
+  writer->AddObserver(vtkCommand::ErrorEvent, thrower);
+  writer->SetInputData(rgb);
+  writer->SetFileName(unknown.c_str());
+  EXPECT_THROW(writer->Write(), std::runtime_error);
+  EXPECT_EQ(contents(unknown), original);
 }
 
 TEST(TestOIIOImageIO, WriterWithoutInputOrFileName)
