@@ -304,11 +304,14 @@ TEST(TestOIIOImageIO, ReadsJPEGFromCjpegUpright)
     }
   }
   vtksys::SystemTools::RemoveFile(jpg);
-  const std::string command = "cjpeg -quality 95 -outfile '" + jpg + "' '" + ppm + "'";
-  if (std::system(command.c_str()) != 0)
-  {
-    GTEST_SKIP() << "cjpeg (libjpeg-turbo-progs) is missing; scripts/install-deps.sh installs it";
-  }
+  // A hard failure, not a skip: ctest counts a skipped gtest as passed, and the JPEG path
+  // would then go unchecked without anyone noticing.
+  const std::string cjpeg = vtksys::SystemTools::FindProgram("cjpeg");
+  ASSERT_FALSE(cjpeg.empty())
+    << "cjpeg (Debian package libjpeg-turbo-progs) is not on the PATH: run "
+       "scripts/install-deps.sh";
+  const std::string command = "'" + cjpeg + "' -quality 95 -outfile '" + jpg + "' '" + ppm + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
 
   vtkNew<vtkOIIOImageReader> reader;
   reader->SetFileName(jpg.c_str());
