@@ -609,6 +609,24 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
 }
 
 //------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
+{
+  if (auto* other = vtkSurfaceDetailMapper::SafeDownCast(m))
+  {
+    this->SetTechnique(other->GetTechnique());
+    this->SetNormalMap(other->GetNormalMap());
+    this->SetHeightMap(other->GetHeightMap());
+    this->SetNormalStrength(other->GetNormalStrength());
+    this->SetGreenUp(other->GetGreenUp());
+    this->SetBumpScale(other->GetBumpScale());
+    this->SetDifferences(other->GetDifferences());
+    this->SetTangentFree(other->GetTangentFree());
+    this->SetDepthScale(other->GetDepthScale());
+  }
+  this->Superclass::ShallowCopy(m);
+}
+
+//------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -179,6 +179,11 @@ public:
    */
   vtkGetMacro(ActiveTechnique, int);
 
+  /**
+   * Copies the technique, the maps and every setting, then the superclass's state.
+   */
+  void ShallowCopy(vtkAbstractMapper* m) override;
+
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;

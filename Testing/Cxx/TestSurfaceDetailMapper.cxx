@@ -820,6 +820,31 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   EXPECT_EQ(mapper->Builds, afterSwitch);
 }
 
+TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
+{
+  vtkNew<vtkSurfaceDetailMapper> source;
+  source->SetTechniqueToParallaxMapping();
+  auto heights = MakeHeightMap();
+  source->SetHeightMap(heights);
+  source->SetNormalStrength(0.5);
+  source->GreenUpOff();
+  source->SetBumpScale(0.25);
+  source->SetDifferencesToCentral();
+  source->TangentFreeOn();
+  source->SetDepthScale(0.2);
+  vtkNew<vtkSurfaceDetailMapper> copy;
+  copy->ShallowCopy(source);
+  EXPECT_EQ(copy->GetTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
+  EXPECT_EQ(copy->GetHeightMap(), heights.Get());
+  EXPECT_EQ(copy->GetNormalMap(), nullptr);
+  EXPECT_EQ(copy->GetNormalStrength(), 0.5);
+  EXPECT_FALSE(copy->GetGreenUp());
+  EXPECT_EQ(copy->GetBumpScale(), 0.25);
+  EXPECT_EQ(copy->GetDifferences(), vtkSurfaceDetailMapper::Central);
+  EXPECT_TRUE(copy->GetTangentFree());
+  EXPECT_EQ(copy->GetDepthScale(), 0.2);
+}
+
 TEST(vtkSurfaceDetailMapper, PrintSelf)
 {
   vtkNew<vtkSurfaceDetailMapper> mapper;
