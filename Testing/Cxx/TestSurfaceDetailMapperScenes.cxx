@@ -1,7 +1,8 @@
 // Regression scenes for vtkSurfaceDetailMapper: one technique on one brick-textured surface
 // from vtkParametricSurfaceSource, seen head-on or obliquely, under the headlight or a
 // positional light. Arguments:
-//   --technique none|normal|bump|parallax   --surface rectangle|sphere|torus|vase
+//   --technique none|normal|bump|bump-tangent-free|parallax
+//   --surface rectangle|sphere|torus|vase
 //   --view head-on|oblique                  --light headlight|positional|spot|lightkit
 // The bricks are a procedural height field (bricks at height 1, mortar joints at 0 with a
 // bevel), a colour texture of the same layout, and the normal map vtkHeightMapToNormalMap
@@ -202,9 +203,10 @@ int main(int argc, char* argv[])
   {
     mapper->SetTechniqueToNormalMapping();
   }
-  else if (technique == "bump")
+  else if (technique == "bump" || technique == "bump-tangent-free")
   {
     mapper->SetTechniqueToBumpMapping();
+    mapper->SetTangentFree(technique == "bump-tangent-free");
   }
   else if (technique == "parallax")
   {
