@@ -554,7 +554,13 @@ void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
     // Whole identifiers only: VTK's seamless-texture varyings (tcoordVCVSOutputU1, ...) keep
     // their names.
     vs = std::regex_replace(vs, std::regex("\\btcoordVCVSOutput\\b"), "sdTCoordVCVSOutput");
-    vtkShaderProgram::Substitute(fs, "in vec2 tcoordVCVSOutput;\n", fsDecl);
+    if (!vtkShaderProgram::Substitute(fs, "in vec2 tcoordVCVSOutput;\n", fsDecl))
+    {
+      // Only a VTK whose shader text differs from 9.1's gets here; say so rather than
+      // leave a shader that does not compile without explanation.
+      vtkErrorMacro("VTK's fragment shader does not declare \"in vec2 tcoordVCVSOutput;\" "
+                    "as VTK 9.1 does; the surface-detail shader will not compile.");
+    }
     vtkShaderProgram::Substitute(vs, DecTag, "");
     vtkShaderProgram::Substitute(vs, VSImplTag, "");
     vtkShaderProgram::Substitute(fs, DecTag, "");
