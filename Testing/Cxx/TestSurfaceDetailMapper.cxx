@@ -591,7 +591,10 @@ TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
 
 // Parallax with offset limiting over a constant depth d: every texture lookup moves by
 // -d * (tangential part of the view vector) in texture units, the colour texture included.
-TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
+// DepthScale is in the mesh's units, so scaling the actor by z along the rectangle's normal
+// makes the field z*d deep in the world. Returns the PSNR against that expectation with the
+// shift multiplied by shiftScale (1: the right picture).
+std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shiftScales)
 {
   auto mapper = MakeMapper(MakeRectangle(false, false));
   mapper->SetTechniqueToParallaxMapping();
@@ -609,16 +612,17 @@ TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
   scene.Actor->SetTexture(colour);
   scene.Actor->RotateY(40);
   scene.Actor->RotateX(-25);
+  scene.Actor->SetScale(1.0, 1.0, zScale);
   scene.Mat.Ambient = 1.0;
   scene.Mat.Diffuse = 0.0;
   const auto image = scene.Render();
 
-  // View vector (0,0,1) in the model frame: its tangential part, in model units, over
-  // dP/ds = dP/dt = 2 model units per texture unit.
+  // The view vector (0,0,1) against the world images of the model's x and y axes (unit
+  // vectors: the scale is along z only), over dP/ds = dP/dt = 2 units per texture unit.
   vtkMatrix4x4* m = scene.Actor->GetMatrix();
-  Vec3 vModel{ m->GetElement(2, 0), m->GetElement(2, 1), m->GetElement(2, 2) };
-  vModel = Normalized(vModel); // rows of a rotation: the inverse applied to (0,0,1)
-  auto expectedImage = [&](double shiftScale)
+  const double vx = m->GetElement(2, 0), vy = m->GetElement(2, 1);
+  std::vector<double> result;
+  for (double shiftScale : shiftScales)
   {
     double sum = 0;
     long count = 0;
@@ -631,8 +635,9 @@ TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
         {
           continue;
         }
-        const double s = (hit.X + 1) / 2 - shiftScale * depth * vModel[0] / 2;
-        const double t = (hit.Y + 1) / 2 - shiftScale * depth * vModel[1] / 2;
+        const double shift = shiftScale * zScale * depth;
+        const double s = (hit.X + 1) / 2 - shift * vx / 2;
+        const double t = (hit.Y + 1) / 2 - shift * vy / 2;
         const double e[3] = { 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t),
           0.5 };
         for (int k = 0; k < 3; ++k)
@@ -643,10 +648,26 @@ TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
         }
       }
     }
-    return 10.0 * std::log10(255.0 * 255.0 / std::max(sum / std::max(count, 1L), 1e-9));
-  };
-  EXPECT_GE(expectedImage(1.0), 40.0);
-  EXPECT_LT(expectedImage(0.0), 30.0); // without the shift the picture is clearly different
+    result.push_back(10.0 * std::log10(255.0 * 255.0 / std::max(sum / std::max(count, 1L), 1e-9)));
+    std::cout << "parallax z-scale " << zScale << ", shift x" << shiftScale << ": PSNR "
+              << result.back() << " dB\n";
+  }
+  return result;
+}
+
+TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
+{
+  const auto psnr = ParallaxPSNRs(1.0, { 1.0, 0.0 });
+  EXPECT_GE(psnr[0], 40.0);
+  EXPECT_LT(psnr[1], 30.0); // without the shift the picture is clearly different
+}
+
+TEST(vtkSurfaceDetailMapper, ParallaxDepthInObjectUnits)
+{
+  // Scaled 2.5x along its normal, the field is 2.5 times deeper in the world.
+  const auto psnr = ParallaxPSNRs(2.5, { 1.0, 1.0 / 2.5 });
+  EXPECT_GE(psnr[0], 40.0);
+  EXPECT_LT(psnr[1], 30.0); // depth taken in world units instead
 }
 
 TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
