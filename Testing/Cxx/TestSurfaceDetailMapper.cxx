@@ -28,6 +28,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkShader.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
@@ -864,6 +865,44 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   EXPECT_EQ(copy->GetDifferences(), vtkSurfaceDetailMapper::Central);
   EXPECT_TRUE(copy->GetTangentFree());
   EXPECT_EQ(copy->GetDepthScale(), 0.2);
+}
+
+// With Technique None the triangles' program is VTK's own, to the character.
+class PlainMapperProbe : public vtkOpenGLPolyDataMapper
+{
+public:
+  static PlainMapperProbe* New();
+  vtkTypeMacro(PlainMapperProbe, vtkOpenGLPolyDataMapper);
+  vtkShaderProgram* TrianglesProgram() { return this->Primitives[PrimitiveTris].Program; }
+};
+vtkStandardNewMacro(PlainMapperProbe);
+
+TEST(vtkSurfaceDetailMapper, NoneShaderIsThePlainShader)
+{
+  auto poly = MakeRectangle(false);
+  vtkNew<CountingMapper> ours;
+  ours->SetInputData(poly);
+  ours->SetNormalMap(MakeNormalMap());
+  ours->SetHeightMap(MakeHeightMap());
+  Scene scene(ours);
+  scene.Actor->SetTexture(MakeNormalMap());
+  scene.Render();
+  vtkNew<PlainMapperProbe> plain;
+  plain->SetInputData(poly);
+  scene.Actor->SetMapper(plain);
+  scene.Render();
+  ASSERT_NE(ours->TrianglesProgram(), nullptr);
+  ASSERT_NE(plain->TrianglesProgram(), nullptr);
+  EXPECT_EQ(ours->TrianglesProgram()->GetVertexShader()->GetSource(),
+    plain->TrianglesProgram()->GetVertexShader()->GetSource());
+  EXPECT_EQ(ours->TrianglesProgram()->GetFragmentShader()->GetSource(),
+    plain->TrianglesProgram()->GetFragmentShader()->GetSource());
+  // And with a technique on, our code is there.
+  ours->SetTechniqueToNormalMapping();
+  scene.Actor->SetMapper(ours);
+  scene.Render();
+  EXPECT_NE(ours->TrianglesProgram()->GetFragmentShader()->GetSource().find("sdNormalMapTS"),
+    std::string::npos);
 }
 
 TEST(vtkSurfaceDetailMapper, PrintSelf)
