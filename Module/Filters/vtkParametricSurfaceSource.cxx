@@ -620,6 +620,28 @@ int vtkParametricSurfaceSource::RequestData(
                                                           "its Minimum/Maximum U and V.");
     return 0;
   }
+  // The transform feeds the texture coordinates and the tangents (through 1/repeat); a
+  // non-finite value would put NaN into them.
+  const bool textured = this->GenerateTextureCoordinates || this->GenerateTangents;
+  if (textured &&
+    (!std::isfinite(this->TextureOffset[0]) || !std::isfinite(this->TextureOffset[1]) ||
+      !std::isfinite(this->TextureRepeat[0]) || !std::isfinite(this->TextureRepeat[1])))
+  {
+    vtkErrorMacro("TextureOffset (" << this->TextureOffset[0] << ", " << this->TextureOffset[1]
+                                    << ") and TextureRepeat (" << this->TextureRepeat[0] << ", "
+                                    << this->TextureRepeat[1]
+                                    << ") must be finite: set finite values.");
+    return 0;
+  }
+  constexpr double floatMax = std::numeric_limits<float>::max();
+  if (this->GenerateTextureCoordinates &&
+    (std::abs(this->TextureOffset[0]) + std::abs(this->TextureRepeat[0]) > floatMax ||
+      std::abs(this->TextureOffset[1]) + std::abs(this->TextureRepeat[1]) > floatMax))
+  {
+    vtkErrorMacro("TextureOffset and TextureRepeat give texture coordinates beyond the float "
+                  "range of the TCoords array: use smaller values.");
+    return 0;
+  }
   if (this->GenerateTangents &&
     (!(this->TextureRepeat[0] != 0.0) || !(this->TextureRepeat[1] != 0.0) ||
       !std::isfinite(1.0 / this->TextureRepeat[0]) || !std::isfinite(1.0 / this->TextureRepeat[1])))

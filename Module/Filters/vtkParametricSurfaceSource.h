@@ -122,8 +122,9 @@ public:
   ///@{
   /**
    * Texture transform: s = TextureOffset[0] + TextureRepeat[0]*u, and the same for t with v.
-   * Default repeat (1,1), offset (0,0). A repeat of zero, which leaves no texture direction
-   * for the tangents, is an error when tangents are asked for.
+   * Default repeat (1,1), offset (0,0). Non-finite values are an error when texture
+   * coordinates or tangents are asked for; so is a repeat of zero, which leaves no texture
+   * direction for the tangents, when tangents are asked for.
    */
   vtkSetVector2Macro(TextureRepeat, double);
   vtkGetVector2Macro(TextureRepeat, double);

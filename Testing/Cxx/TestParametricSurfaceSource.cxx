@@ -301,6 +301,36 @@ TEST(ParametricSurfaceSource, BadInputIsAClearError)
   expectError(source, "non-zero repeat");
   source->SetTextureRepeat(1, 1);
 
+  // A non-finite texture transform would put NaN into the texture coordinates (and the
+  // tangents): an error whenever either is asked for, not only with tangents.
+  for (bool tangents : { true, false })
+  {
+    source->SetGenerateTangents(tangents);
+    source->SetTextureOffset(vtkMath::Nan(), 0);
+    expectError(source, "TextureOffset");
+    source->SetTextureOffset(0, vtkMath::Inf());
+    expectError(source, "TextureOffset");
+    source->SetTextureOffset(0, 0);
+    source->SetTextureRepeat(vtkMath::Nan(), 1);
+    expectError(source, "TextureRepeat");
+    source->SetTextureRepeat(1, -vtkMath::Inf());
+    expectError(source, "TextureRepeat");
+    source->SetTextureRepeat(1, 1);
+  }
+  source->SetTextureRepeat(1e39, 1); // finite, but not as a float texture coordinate
+  expectError(source, "float range");
+  source->SetTextureRepeat(1, 1);
+  // Neither texture coordinates nor tangents: the transform is not used, so not an error.
+  source->GenerateTextureCoordinatesOff();
+  source->SetTextureOffset(vtkMath::Nan(), 0);
+  observer->Clear();
+  source->Update();
+  EXPECT_EQ(observer->ErrorCount, 0);
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 9 * 5);
+  source->SetTextureOffset(0, 0);
+  source->GenerateTextureCoordinatesOn();
+  source->GenerateTangentsOn();
+
   vtkNew<vtkParametricSpline> curve; // a curve, not a surface
   source->SetParametricFunction(curve);
   expectError(source, "dimension");
