@@ -496,6 +496,24 @@ TEST(ParametricSurfaceSource, StressDegenerateShapes)
   }
 }
 
+// The smallest n.(P - C) over the output, C(P) the centre the normal must face away from.
+template <typename Centre>
+double MinOutwardness(vtkPolyData* out, Centre&& centre)
+{
+  double smallest = vtkMath::Inf();
+  for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+  {
+    double p[3], n[3], c[3];
+    out->GetPoint(id, p);
+    out->GetPointData()->GetNormals()->GetTuple(id, n);
+    centre(p, c);
+    double d[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] };
+    vtkMath::Normalize(d);
+    smallest = std::min(smallest, vtkMath::Dot(n, d));
+  }
+  return smallest;
+}
+
 TEST(ParametricSurfaceSource, StressVTKFunctions)
 {
   std::vector<vtkSmartPointer<vtkParametricFunction>> functions = {
@@ -511,7 +529,74 @@ TEST(ParametricSurfaceSource, StressVTKFunctions)
   {
     for (int res : { 1, 2, 3, 64 })
     {
-      RunChecked(f, res, res, std::string(f->GetClassName()) + " " + std::to_string(res));
+      EXPECT_TRUE(
+        RunChecked(f, res, res, std::string(f->GetClassName()) + " " + std::to_string(res)));
     }
   }
+}
+
+TEST(ParametricSurfaceSource, VTKClosedSurfacesFaceOutward)
+{
+  auto run = [](vtkParametricFunction* f)
+  {
+    auto source = MakeSource(f, 48, 40);
+    source->Update();
+    return vtkSmartPointer<vtkPolyData>(source->GetOutput());
+  };
+  auto origin = [](const double*, double c[3]) { c[0] = c[1] = c[2] = 0.0; };
+  // Tori about z: the normal faces away from the nearest point of the ring circle.
+  auto ring = [](double radius)
+  {
+    return [radius](const double p[3], double c[3])
+    {
+      const double rho = std::hypot(p[0], p[1]);
+      c[0] = radius * p[0] / rho;
+      c[1] = radius * p[1] / rho;
+      c[2] = 0.0;
+    };
+  };
+
+  vtkNew<vtkParametricEllipsoid> ellipsoid;
+  ellipsoid->SetXRadius(1);
+  ellipsoid->SetYRadius(2);
+  ellipsoid->SetZRadius(0.5);
+  // A convex body around the origin: n.P > 0 everywhere, poles included.
+  EXPECT_GT(MinOutwardness(run(ellipsoid), origin), 0.0);
+
+  vtkNew<vtkParametricTorus> torus;
+  EXPECT_GT(MinOutwardness(run(torus), ring(torus->GetRingRadius())), 1 - 1e-6);
+
+  // The measure tells them apart: with ClockwiseOrdering on, VTK's torus faces inward.
+  vtkNew<vtkParametricTorus> inward;
+  inward->ClockwiseOrderingOn();
+  EXPECT_LT(-MinOutwardness(run(inward),
+              [&](const double p[3], double c[3])
+              {
+                // C mirrored through P turns n.(P - C) round: the largest n.(P - C), below
+                // -1 + 1e-6, says every normal faces inward.
+                ring(inward->GetRingRadius())(p, c);
+                for (int k = 0; k < 3; ++k)
+                {
+                  c[k] = 2 * p[k] - c[k];
+                }
+              }),
+    -1 + 1e-6);
+
+  vtkNew<vtkParametricSuperToroid> superToroid; // N1 = N2 = 1: an ordinary torus
+  superToroid->SetN1(1);
+  superToroid->SetN2(1);
+  EXPECT_GT(MinOutwardness(run(superToroid), ring(superToroid->GetRingRadius())), 1 - 1e-6);
+
+  // SuperEllipsoid with N1 = N2 = 1 is the unit sphere and has no analytic derivatives (the
+  // source differentiates its points): its normal must be the radial direction, poles too.
+  vtkNew<vtkParametricSuperEllipsoid> superEllipsoid;
+  superEllipsoid->SetN1(1);
+  superEllipsoid->SetN2(1);
+  EXPECT_GT(MinOutwardness(run(superEllipsoid), origin), 1 - 1e-6);
+
+  // Our closed surfaces, with the same measure.
+  vtkNew<vtkParametricSphere> sphere;
+  EXPECT_GT(MinOutwardness(run(sphere), origin), 1 - 1e-6);
+  vtkNew<vtkParametricDonut> donut;
+  EXPECT_GT(MinOutwardness(run(donut), ring(donut->GetRingRadius())), 1 - 1e-6);
 }
