@@ -416,6 +416,16 @@ TEST(ParametricSurfaceSource, StressOurSurfaces)
   }
 }
 
+TEST(ParametricSurfaceSource, StressFullResolution2048)
+{
+  // 2049 x 2049 = 4.2M points with every array, poles and the arc-length profile included.
+  vtkNew<vtkParametricSphere> sphere;
+  EXPECT_TRUE(RunChecked(sphere, 2048, 2048, "sphere 2048x2048"));
+  vtkNew<vtkParametricRevolution> vase;
+  vase->GetProfile()->ArcLengthParameterizationOn();
+  EXPECT_TRUE(RunChecked(vase, 2048, 2048, "arc-length vase 2048x2048"));
+}
+
 TEST(ParametricSurfaceSource, StressDegenerateShapes)
 {
   // Zero sizes: no area at all. The frames are arbitrary but finite and unit, with a warning.
