@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkBezierProfile);
 
@@ -74,28 +75,12 @@ int vtkBezierProfile::GetNumberOfSegments()
 //------------------------------------------------------------------------------
 bool vtkBezierProfile::IsValid(std::string* reason)
 {
-  const size_t n = this->ControlPoints.size();
-  if (n < 4 || (n - 1) % 3 != 0)
+  this->Prepare();
+  if (!this->Valid && reason)
   {
-    if (reason)
-    {
-      *reason = "the Bézier profile has " + std::to_string(n) +
-        " control points; a composite cubic needs 3k+1 (4, 7, 10, ...)";
-    }
-    return false;
+    *reason = this->InvalidReason;
   }
-  for (const Point& p : this->ControlPoints)
-  {
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
-    {
-      if (reason)
-      {
-        *reason = "the Bézier profile has a non-finite control point";
-      }
-      return false;
-    }
-  }
-  return true;
+  return this->Valid;
 }
 
 //------------------------------------------------------------------------------
@@ -151,38 +136,72 @@ double vtkBezierProfile::LengthBetween(double a, double b) const
 }
 
 //------------------------------------------------------------------------------
-void vtkBezierProfile::BuildLengthTable()
+void vtkBezierProfile::Prepare()
 {
-  if (this->LengthTableTime.load() >= this->GetMTime())
+  if (this->PreparedTime.load() >= this->GetMTime())
   {
     return;
   }
-  std::lock_guard<std::mutex> lock(this->LengthTableMutex);
+  std::lock_guard<std::mutex> lock(this->PrepareMutex);
   const vtkMTimeType now = this->GetMTime();
-  if (this->LengthTableTime.load() >= now)
+  if (this->PreparedTime.load() >= now)
   {
     return;
   }
-  const int k = static_cast<int>(this->ControlPoints.size() - 1) / 3;
-  const int intervals = k * TableIntervalsPerSegment;
-  this->LengthTable.assign(intervals + 1, 0.0);
-  for (int i = 0; i < intervals; ++i)
+  this->LengthTable.clear();
+  this->SpeedTable.clear();
+  this->NewtonFactor.clear();
+  const size_t n = this->ControlPoints.size();
+  this->Valid = n >= 4 && (n - 1) % 3 == 0;
+  this->InvalidReason.clear();
+  if (!this->Valid)
   {
-    this->LengthTable[i + 1] = this->LengthTable[i] +
-      this->LengthBetween(
-        static_cast<double>(i) / intervals, static_cast<double>(i + 1) / intervals);
+    this->InvalidReason = "the Bézier profile has " + std::to_string(n) +
+      " control points; a composite cubic needs 3k+1 (4, 7, 10, ...)";
   }
-  this->LengthTableTime.store(now);
+  for (const Point& p : this->ControlPoints)
+  {
+    if (this->Valid && (!std::isfinite(p[0]) || !std::isfinite(p[1])))
+    {
+      this->Valid = false;
+      this->InvalidReason = "the Bézier profile has a non-finite control point";
+    }
+  }
+  if (this->Valid)
+  {
+    const int k = static_cast<int>(n - 1) / 3;
+    const int intervals = k * TableIntervalsPerSegment;
+    this->LengthTable.assign(intervals + 1, 0.0);
+    this->SpeedTable.assign(intervals + 1, 0.0);
+    this->NewtonFactor.assign(intervals, 0.0);
+    // |s'| / 2s at tau, s the speed: the factor K in Newton's error e' = K e^2.
+    auto newtonFactor = [this](double tau)
+    {
+      double d1[2], d2[2];
+      this->EvaluateBezier(tau, nullptr, d1, d2, nullptr);
+      const double s2 = d1[0] * d1[0] + d1[1] * d1[1];
+      return s2 > 0.0 ? std::abs(d1[0] * d2[0] + d1[1] * d2[1]) / (2.0 * s2)
+                      : std::numeric_limits<double>::infinity();
+    };
+    for (int i = 0; i <= intervals; ++i)
+    {
+      const double tau = static_cast<double>(i) / intervals;
+      this->SpeedTable[i] = this->Speed(tau);
+      if (i < intervals)
+      {
+        const double next = static_cast<double>(i + 1) / intervals;
+        this->LengthTable[i + 1] = this->LengthTable[i] + this->LengthBetween(tau, next);
+        this->NewtonFactor[i] =
+          std::max({ newtonFactor(tau), newtonFactor(0.5 * (tau + next)), newtonFactor(next) });
+      }
+    }
+  }
+  this->PreparedTime.store(now);
 }
 
 double vtkBezierProfile::GetLength()
 {
-  if (!this->IsValid())
-  {
-    return 0.0;
-  }
-  this->BuildLengthTable();
-  return this->LengthTable.back();
+  return this->IsValid() ? this->LengthTable.back() : 0.0;
 }
 
 // The Bézier parameter at which the curve has run @a length from its start.
@@ -201,32 +220,48 @@ double vtkBezierProfile::InverseLength(double length) const
   const int i = std::min(
     static_cast<int>(std::upper_bound(table.begin(), table.end(), length) - table.begin()) - 1,
     intervals - 1);
+  const double width = 1.0 / intervals;
   double lo = static_cast<double>(i) / intervals;
   double hi = static_cast<double>(i + 1) / intervals;
   const double start = lo;
   const double rest = length - table[i];
   const double span = table[i + 1] - table[i];
-  double tau = span > 0.0 ? lo + (hi - lo) * rest / span : lo;
+  const double s0 = this->SpeedTable[i], s1 = this->SpeedTable[i + 1];
+  double tau = lo;
+  if (span > 0.0)
+  {
+    // First guess: the cubic Hermite interpolant of tau(length), whose slope is 1/speed,
+    // accurate to O(width^4); linear where the curve stops at an end of the interval.
+    const double x = rest / span;
+    tau = lo + width * x;
+    if (s0 > 0.0 && s1 > 0.0)
+    {
+      const double m0 = span / s0, m1 = span / s1;
+      tau =
+        lo + (x * (1 - x) * (1 - x)) * m0 + (x * x * (3 - 2 * x)) * width - (x * x * (1 - x)) * m1;
+    }
+    tau = std::min(std::max(tau, lo), hi);
+  }
   // Newton on L(tau) = rest with L' = speed, falling back to bisection whenever a step
-  // leaves the bracket (the speed may vanish where control points coincide).
-  for (int iteration = 0; iteration < 60; ++iteration)
+  // leaves the bracket (the speed may vanish where control points coincide). Steps stop at
+  // a few ulps of tau; and once Newton's quadratic error K step^2 is below that, the step
+  // just taken is the answer without evaluating the length again.
+  const double factor = this->NewtonFactor[i];
+  for (int iteration = 0; iteration < 100; ++iteration)
   {
     const double f = this->LengthBetween(start, tau) - rest;
-    if (f > 0.0)
-    {
-      hi = tau;
-    }
-    else
-    {
-      lo = tau;
-    }
+    (f > 0.0 ? hi : lo) = tau;
     const double speed = this->Speed(tau);
-    double next = speed > 0.0 ? tau - f / speed : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi))
+    double next = speed > 0.0 ? tau - f / speed : lo;
+    const bool newton = next > lo && next < hi;
+    if (!newton)
     {
       next = 0.5 * (lo + hi);
     }
-    if (std::abs(next - tau) <= 1e-16 || hi - lo <= 1e-16)
+    const double step = std::abs(next - tau);
+    const double tolerance = 4.0 * std::numeric_limits<double>::epsilon() * std::max(tau, width);
+    if (step <= tolerance || hi - lo <= tolerance ||
+      (newton && 4.0 * factor * step * step <= tolerance))
     {
       return next;
     }
@@ -257,7 +292,6 @@ bool vtkBezierProfile::Evaluate(double t, double point[2], double d1[2], double 
   }
   else
   {
-    this->BuildLengthTable();
     const double length = this->LengthTable.back();
     const double tau = this->InverseLength(t * length);
     this->EvaluateBezier(tau, p, b1, b2, b3);

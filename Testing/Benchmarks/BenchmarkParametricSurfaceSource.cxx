@@ -7,11 +7,13 @@
 // Sizes are 1M and 4M points; the second argument is the number of threads given to
 // vtkSMPTools::Initialize. See BENCHMARKS.md for the command and the figures.
 
+#include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkParametricDonut.h>
 #include <vtkParametricFunctionSource.h>
+#include <vtkParametricRevolution.h>
 #include <vtkParametricSphere.h>
 #include <vtkParametricSurfaceSource.h>
 #include <vtkParametricTorus.h>
@@ -147,6 +149,53 @@ void BM_SurfaceSourceSphere(benchmark::State& state)
   Report(state, source->GetOutput());
 }
 
+// Ours, seed 004's vase (a vtkBezierProfile turned about y), every array; range(2) turns
+// the profile's arc-length parameterisation on, which inverts the length integral at
+// every row.
+void BM_SurfaceSourceVase(benchmark::State& state)
+{
+  SetThreads(state);
+  const int side = Side(state);
+  vtkNew<vtkParametricRevolution> vase;
+  vase->GetProfile()->SetArcLengthParameterization(state.range(2) != 0);
+  vtkNew<vtkParametricSurfaceSource> source;
+  source->SetParametricFunction(vase);
+  source->SetUResolution(side - 1);
+  source->SetVResolution(side - 1);
+  source->GenerateTangentsOn();
+  source->GenerateDerivativesOn();
+  for (auto _ : state)
+  {
+    source->Modified();
+    source->Update();
+    benchmark::DoNotOptimize(source->GetOutput()->GetPoints());
+  }
+  Report(state, source->GetOutput());
+}
+
+// One vtkBezierProfile::Evaluate per point, as a caller outside the source pays it (e.g.
+// vtkParametricFunctionSource on a vtkParametricRevolution): range(2) = arc length.
+void BM_BezierProfileEvaluate(benchmark::State& state)
+{
+  vtkNew<vtkBezierProfile> profile;
+  profile->SetToVase();
+  profile->SetArcLengthParameterization(state.range(2) != 0);
+  const vtkIdType n = state.range(0);
+  for (auto _ : state)
+  {
+    double sum = 0.0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[2], d1[2];
+      profile->Evaluate(static_cast<double>(i) / static_cast<double>(n - 1), p, d1, nullptr);
+      sum += p[0] + d1[1];
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["ns/eval"] = benchmark::Counter(static_cast<double>(n),
+    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void BM_VTKTexturedSphereSource(benchmark::State& state)
 {
   SetThreads(state);
@@ -210,6 +259,11 @@ BENCHMARK(BM_SurfaceSourceDonut)->Apply([](benchmark::internal::Benchmark* b) { 
 BENCHMARK(BM_VTKFunctionSourceAndTangentsTorus)
   ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
 BENCHMARK(BM_SurfaceSourceSphere)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_SurfaceSourceVase)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_BezierProfileEvaluate)
+  ->Args({ 1000000, 1, 0 })
+  ->Args({ 1000000, 1, 1 })
+  ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VTKTexturedSphereSource)
   ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
 BENCHMARK(BM_WriteBound)

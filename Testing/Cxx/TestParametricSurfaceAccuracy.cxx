@@ -628,6 +628,26 @@ TEST(ParametricSurfaceAccuracy, BezierProfileArcLength)
     EXPECT_NEAR(d2[1], 0, 1e-7);
   }
 
+  // The parabola y = x^2 on [0,1] (a quadratic raised to a cubic), whose length from 0 to x
+  // is x sqrt(1 + 4x^2) / 2 + asinh(2x) / 4: the inversion must be exact to rounding.
+  vtkNew<vtkBezierProfile> parabola;
+  parabola->AddControlPoint(0, 0);
+  parabola->AddControlPoint(1.0 / 3, 0);
+  parabola->AddControlPoint(2.0 / 3, 1.0 / 3);
+  parabola->AddControlPoint(1, 1);
+  parabola->ArcLengthParameterizationOn();
+  auto parabolaLength = [](double x)
+  { return 0.5 * x * std::sqrt(1 + 4 * x * x) + 0.25 * std::asinh(2 * x); };
+  EXPECT_NEAR(parabola->GetLength(), parabolaLength(1), 1e-14);
+  for (int i = 0; i <= 1000; ++i)
+  {
+    const double t = i / 1000.0;
+    double p[2];
+    parabola->Evaluate(t, p, nullptr, nullptr);
+    EXPECT_NEAR(p[1], p[0] * p[0], 1e-15);
+    EXPECT_NEAR(parabolaLength(p[0]), t * parabolaLength(1), 2e-15) << "t = " << t;
+  }
+
   vtkNew<vtkBezierProfile> vase;
   vase->SetToVase();
   vase->ArcLengthParameterizationOn();
