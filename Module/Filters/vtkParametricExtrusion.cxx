@@ -3,57 +3,21 @@
 #include "vtkBezierProfile.h"
 #include "vtkObjectFactory.h"
 
-#include <algorithm>
-#include <string>
-
 vtkStandardNewMacro(vtkParametricExtrusion);
 
 //------------------------------------------------------------------------------
 vtkParametricExtrusion::vtkParametricExtrusion()
-  : Profile(vtkSmartPointer<vtkBezierProfile>::New())
 {
   this->Profile->SetToHeart();
-  this->JoinU = 1;
 }
 
 vtkParametricExtrusion::~vtkParametricExtrusion() = default;
 
 //------------------------------------------------------------------------------
-void vtkParametricExtrusion::SetProfile(vtkBezierProfile* profile)
-{
-  if (this->Profile != profile)
-  {
-    this->Profile = profile;
-    this->Modified();
-  }
-}
-
-vtkBezierProfile* vtkParametricExtrusion::GetProfile()
-{
-  return this->Profile;
-}
-
-vtkMTimeType vtkParametricExtrusion::GetMTime()
-{
-  vtkMTimeType mtime = this->Superclass::GetMTime();
-  if (this->Profile)
-  {
-    mtime = std::max(mtime, this->Profile->GetMTime());
-  }
-  return mtime;
-}
-
-//------------------------------------------------------------------------------
 void vtkParametricExtrusion::EvaluateUTerms(double u, double* terms)
 {
   // (x, z, dx/du, dz/du)
-  std::string reason = "there is no profile";
-  if (!this->Profile || !this->Profile->IsValid(&reason) ||
-    !this->Profile->Evaluate(u, terms, terms + 2, nullptr))
-  {
-    std::fill(terms, terms + 4, 0.0);
-    vtkErrorMacro("Cannot evaluate the extrusion: " << reason << "; see SetProfile().");
-  }
+  this->EvaluateProfile(u, terms, "extrusion");
 }
 
 void vtkParametricExtrusion::EvaluateVTerms(double v, double* terms)
@@ -81,9 +45,4 @@ void vtkParametricExtrusion::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Height: " << this->Height << "\n";
-  os << indent << "Profile: " << this->Profile.Get() << "\n";
-  if (this->Profile)
-  {
-    this->Profile->PrintSelf(os, indent.GetNextIndent());
-  }
 }

@@ -15,32 +15,20 @@
 #define vtkParametricExtrusion_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricSeparableFunction.h"
-#include "vtkSmartPointer.h" // For the profile member
+#include "vtkParametricProfileFunction.h"
 
-class vtkBezierProfile;
-
-class SURFACEDETAILFILTERS_EXPORT vtkParametricExtrusion : public vtkParametricSeparableFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricExtrusion : public vtkParametricProfileFunction
 {
 public:
   static vtkParametricExtrusion* New();
-  vtkTypeMacro(vtkParametricExtrusion, vtkParametricSeparableFunction);
+  vtkTypeMacro(vtkParametricExtrusion, vtkParametricProfileFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The (x, z) profile. Default: the heart. Must not be null. */
-  void SetProfile(vtkBezierProfile* profile);
-  vtkBezierProfile* GetProfile();
-  ///@}
 
   ///@{
   /** Height of the extrusion along +y, from y = 0. Default 2. */
   vtkSetMacro(Height, double);
   vtkGetMacro(Height, double);
   ///@}
-
-  /** Includes the profile's modification time. */
-  vtkMTimeType GetMTime() override;
 
   ///@{
   /**
@@ -59,7 +47,6 @@ protected:
   vtkParametricExtrusion();
   ~vtkParametricExtrusion() override;
 
-  vtkSmartPointer<vtkBezierProfile> Profile;
   double Height = 2.0;
 
 private:

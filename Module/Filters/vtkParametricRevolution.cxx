@@ -4,46 +4,17 @@
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 
-#include <algorithm>
 #include <cmath>
-#include <string>
 
 vtkStandardNewMacro(vtkParametricRevolution);
 
 //------------------------------------------------------------------------------
 vtkParametricRevolution::vtkParametricRevolution()
-  : Profile(vtkSmartPointer<vtkBezierProfile>::New())
 {
   this->Profile->SetToVase();
-  this->JoinU = 1;
 }
 
 vtkParametricRevolution::~vtkParametricRevolution() = default;
-
-//------------------------------------------------------------------------------
-void vtkParametricRevolution::SetProfile(vtkBezierProfile* profile)
-{
-  if (this->Profile != profile)
-  {
-    this->Profile = profile;
-    this->Modified();
-  }
-}
-
-vtkBezierProfile* vtkParametricRevolution::GetProfile()
-{
-  return this->Profile;
-}
-
-vtkMTimeType vtkParametricRevolution::GetMTime()
-{
-  vtkMTimeType mtime = this->Superclass::GetMTime();
-  if (this->Profile)
-  {
-    mtime = std::max(mtime, this->Profile->GetMTime());
-  }
-  return mtime;
-}
 
 //------------------------------------------------------------------------------
 void vtkParametricRevolution::EvaluateUTerms(double u, double* terms)
@@ -56,13 +27,7 @@ void vtkParametricRevolution::EvaluateUTerms(double u, double* terms)
 void vtkParametricRevolution::EvaluateVTerms(double v, double* terms)
 {
   // (r, y, dr/dv, dy/dv)
-  std::string reason = "there is no profile";
-  if (!this->Profile || !this->Profile->IsValid(&reason) ||
-    !this->Profile->Evaluate(v, terms, terms + 2, nullptr))
-  {
-    std::fill(terms, terms + 4, 0.0);
-    vtkErrorMacro("Cannot evaluate the surface of revolution: " << reason << "; see SetProfile().");
-  }
+  this->EvaluateProfile(v, terms, "surface of revolution");
 }
 
 void vtkParametricRevolution::EvaluateTerms(
@@ -87,9 +52,4 @@ void vtkParametricRevolution::EvaluateTerms(
 void vtkParametricRevolution::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Profile: " << this->Profile.Get() << "\n";
-  if (this->Profile)
-  {
-    this->Profile->PrintSelf(os, indent.GetNextIndent());
-  }
 }

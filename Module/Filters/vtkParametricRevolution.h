@@ -16,26 +16,14 @@
 #define vtkParametricRevolution_h
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
-#include "vtkParametricSeparableFunction.h"
-#include "vtkSmartPointer.h" // For the profile member
+#include "vtkParametricProfileFunction.h"
 
-class vtkBezierProfile;
-
-class SURFACEDETAILFILTERS_EXPORT vtkParametricRevolution : public vtkParametricSeparableFunction
+class SURFACEDETAILFILTERS_EXPORT vtkParametricRevolution : public vtkParametricProfileFunction
 {
 public:
   static vtkParametricRevolution* New();
-  vtkTypeMacro(vtkParametricRevolution, vtkParametricSeparableFunction);
+  vtkTypeMacro(vtkParametricRevolution, vtkParametricProfileFunction);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The (radius, height) profile. Default: the vase. Must not be null. */
-  void SetProfile(vtkBezierProfile* profile);
-  vtkBezierProfile* GetProfile();
-  ///@}
-
-  /** Includes the profile's modification time. */
-  vtkMTimeType GetMTime() override;
 
   ///@{
   /**
@@ -53,8 +41,6 @@ public:
 protected:
   vtkParametricRevolution();
   ~vtkParametricRevolution() override;
-
-  vtkSmartPointer<vtkBezierProfile> Profile;
 
 private:
   vtkParametricRevolution(const vtkParametricRevolution&) = delete;
