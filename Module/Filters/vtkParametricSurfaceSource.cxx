@@ -200,19 +200,22 @@ inline bool RegularNormal(
   return true;
 }
 
-// Direction in which a derivative that vanishes at unit parameter x grows when one moves
-// from x into the domain: the one-sided derivative of f(x + sigma*e) at e = 0, by the
-// second-order difference (4 f(h) - f(2h) - 3 f(0)) / 2h.
-template <typename F>
-void OneSidedLimit(double x, const double f0[3], F&& f, double out[3])
+// Direction in which the derivative along @a axis (0: Du, 1: Dv), which vanishes at unit
+// parameters (u, v) with value d0, grows when one moves across the line where it vanishes
+// (along the other parameter) into the domain: the one-sided derivative by the second-order
+// difference (4 d(h) - d(2h) - 3 d(0)) / 2h.
+void VanishingLimit(const Grid& g, int axis, double u, double v, const double d0[3], double out[3])
 {
+  const double x = axis == 0 ? v : u;
   const double sigma = x < 0.5 ? 1.0 : -1.0;
-  double f1[3], f2[3];
-  f(x + sigma * LimitStep, f1);
-  f(x + 2.0 * sigma * LimitStep, f2);
+  double d1[2][3], d2[2][3]; // Du and Dv one and two steps away
+  auto at = [&](double offset, double d[2][3])
+  { g.Derivatives(axis == 0 ? u : u + offset, axis == 0 ? v + offset : v, d[0], d[1]); };
+  at(sigma * LimitStep, d1);
+  at(2.0 * sigma * LimitStep, d2);
   for (int k = 0; k < 3; ++k)
   {
-    out[k] = (4.0 * f1[k] - f2[k] - 3.0 * f0[k]) / (2.0 * LimitStep);
+    out[k] = (4.0 * d1[axis][k] - d2[axis][k] - 3.0 * d0[k]) / (2.0 * LimitStep);
   }
 }
 
@@ -231,25 +234,11 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
   const bool bVanishes = !(b2 > DegenerateTolerance2 * a2);
   if (aVanishes)
   {
-    OneSidedLimit(
-      v, du,
-      [&](double vv, double out[3])
-      {
-        double tmp[3];
-        g.Derivatives(u, vv, out, tmp);
-      },
-      a);
+    VanishingLimit(g, 0, u, v, du, a);
   }
   if (bVanishes)
   {
-    OneSidedLimit(
-      u, dv,
-      [&](double uu, double out[3])
-      {
-        double tmp[3];
-        g.Derivatives(uu, v, tmp, out);
-      },
-      b);
+    VanishingLimit(g, 1, u, v, dv, b);
   }
   double length2;
   bool found = RegularNormal(a, b, g.Orientation, n, length2);
