@@ -17,16 +17,12 @@ vtkParametricDonut::vtkParametricDonut()
 //------------------------------------------------------------------------------
 void vtkParametricDonut::EvaluateUTerms(double u, double* terms)
 {
-  const double a = 2.0 * vtkMath::Pi() * u;
-  terms[0] = std::cos(a);
-  terms[1] = std::sin(a);
+  this->EvaluateTurn(u, terms);
 }
 
 void vtkParametricDonut::EvaluateVTerms(double v, double* terms)
 {
-  const double b = 2.0 * vtkMath::Pi() * v;
-  terms[0] = std::cos(b);
-  terms[1] = std::sin(b);
+  this->EvaluateTurn(v, terms);
 }
 
 void vtkParametricDonut::EvaluateTerms(

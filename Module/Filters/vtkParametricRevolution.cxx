@@ -19,9 +19,7 @@ vtkParametricRevolution::~vtkParametricRevolution() = default;
 //------------------------------------------------------------------------------
 void vtkParametricRevolution::EvaluateUTerms(double u, double* terms)
 {
-  const double theta = 2.0 * vtkMath::Pi() * u;
-  terms[0] = std::cos(theta);
-  terms[1] = std::sin(theta);
+  this->EvaluateTurn(u, terms);
 }
 
 void vtkParametricRevolution::EvaluateVTerms(double v, double* terms)

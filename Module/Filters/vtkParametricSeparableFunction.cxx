@@ -1,5 +1,9 @@
 #include "vtkParametricSeparableFunction.h"
 
+#include "vtkMath.h"
+
+#include <cmath>
+
 //------------------------------------------------------------------------------
 vtkParametricSeparableFunction::vtkParametricSeparableFunction()
 {
@@ -24,6 +28,14 @@ void vtkParametricSeparableFunction::Evaluate(double uvw[3], double Pt[3], doubl
   this->EvaluateUTerms(uvw[0], uTerms);
   this->EvaluateVTerms(uvw[1], vTerms);
   this->EvaluateTerms(uTerms, vTerms, Pt, Duvw);
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricSeparableFunction::EvaluateTurn(double x, double* terms)
+{
+  const double angle = 2.0 * vtkMath::Pi() * x;
+  terms[0] = std::cos(angle);
+  terms[1] = std::sin(angle);
 }
 
 //------------------------------------------------------------------------------

@@ -63,6 +63,9 @@ protected:
   vtkParametricSeparableFunction();
   ~vtkParametricSeparableFunction() override = default;
 
+  /** terms[0] = cos(2 pi x), terms[1] = sin(2 pi x): the turn of the round surfaces. */
+  static void EvaluateTurn(double x, double* terms);
+
 private:
   vtkParametricSeparableFunction(const vtkParametricSeparableFunction&) = delete;
   void operator=(const vtkParametricSeparableFunction&) = delete;

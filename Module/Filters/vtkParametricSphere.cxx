@@ -16,9 +16,7 @@ vtkParametricSphere::vtkParametricSphere()
 //------------------------------------------------------------------------------
 void vtkParametricSphere::EvaluateUTerms(double u, double* terms)
 {
-  const double theta = 2.0 * vtkMath::Pi() * u;
-  terms[0] = std::cos(theta);
-  terms[1] = std::sin(theta);
+  this->EvaluateTurn(u, terms);
 }
 
 void vtkParametricSphere::EvaluateVTerms(double v, double* terms)
