@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 namespace
 {
@@ -59,20 +60,19 @@ void Report(benchmark::State& state, vtkPolyData* pd)
   state.counters["MB"] = static_cast<double>(OutputBytes(pd)) / 1e6;
 }
 
-// Ours on VTK's own vtkParametricTorus (a virtual Evaluate with its trigonometry at every
-// point): every array the VTK pair gives (normals, texture coordinates, tangents), and
-// with range(2) the derivatives too.
-void BM_SurfaceSourceTorus(benchmark::State& state)
+// Runs our source on @a function at side x side points with the given arrays (normals and
+// texture coordinates always), re-executing it at every iteration.
+void RunSource(
+  benchmark::State& state, vtkParametricFunction* function, bool tangents, bool derivatives)
 {
   SetThreads(state);
   const int side = Side(state);
-  vtkNew<vtkParametricTorus> torus;
   vtkNew<vtkParametricSurfaceSource> source;
-  source->SetParametricFunction(torus);
+  source->SetParametricFunction(function);
   source->SetUResolution(side - 1);
   source->SetVResolution(side - 1);
-  source->GenerateTangentsOn();
-  source->SetGenerateDerivatives(state.range(2) != 0);
+  source->SetGenerateTangents(tangents);
+  source->SetGenerateDerivatives(derivatives);
   for (auto _ : state)
   {
     source->Modified();
@@ -82,26 +82,21 @@ void BM_SurfaceSourceTorus(benchmark::State& state)
   Report(state, source->GetOutput());
 }
 
+// Ours on VTK's own vtkParametricTorus (a virtual Evaluate with its trigonometry at every
+// point): every array the VTK pair gives (normals, texture coordinates, tangents), and
+// with range(2) the derivatives too.
+void BM_SurfaceSourceTorus(benchmark::State& state)
+{
+  vtkNew<vtkParametricTorus> torus;
+  RunSource(state, torus, true, state.range(2) != 0);
+}
+
 // Ours on seed 000's donut: the same surface as vtkParametricTorus up to a mirror, but a
 // vtkParametricSeparableFunction, so its trigonometry is done per row and column.
 void BM_SurfaceSourceDonut(benchmark::State& state)
 {
-  SetThreads(state);
-  const int side = Side(state);
   vtkNew<vtkParametricDonut> donut;
-  vtkNew<vtkParametricSurfaceSource> source;
-  source->SetParametricFunction(donut);
-  source->SetUResolution(side - 1);
-  source->SetVResolution(side - 1);
-  source->GenerateTangentsOn();
-  source->SetGenerateDerivatives(state.range(2) != 0);
-  for (auto _ : state)
-  {
-    source->Modified();
-    source->Update();
-    benchmark::DoNotOptimize(source->GetOutput()->GetPoints());
-  }
-  Report(state, source->GetOutput());
+  RunSource(state, donut, true, state.range(2) != 0);
 }
 
 // VTK's pair on the same torus.
@@ -131,22 +126,8 @@ void BM_VTKFunctionSourceAndTangentsTorus(benchmark::State& state)
 // with range(2) tangents and derivatives as well.
 void BM_SurfaceSourceSphere(benchmark::State& state)
 {
-  SetThreads(state);
-  const int side = Side(state);
   vtkNew<vtkParametricSphere> sphere;
-  vtkNew<vtkParametricSurfaceSource> source;
-  source->SetParametricFunction(sphere);
-  source->SetUResolution(side - 1);
-  source->SetVResolution(side - 1);
-  source->SetGenerateTangents(state.range(2) != 0);
-  source->SetGenerateDerivatives(state.range(2) != 0);
-  for (auto _ : state)
-  {
-    source->Modified();
-    source->Update();
-    benchmark::DoNotOptimize(source->GetOutput()->GetPoints());
-  }
-  Report(state, source->GetOutput());
+  RunSource(state, sphere, state.range(2) != 0, state.range(2) != 0);
 }
 
 // Ours, seed 004's vase (a vtkBezierProfile turned about y), every array; range(2) turns
@@ -154,23 +135,9 @@ void BM_SurfaceSourceSphere(benchmark::State& state)
 // every row.
 void BM_SurfaceSourceVase(benchmark::State& state)
 {
-  SetThreads(state);
-  const int side = Side(state);
   vtkNew<vtkParametricRevolution> vase;
   vase->GetProfile()->SetArcLengthParameterization(state.range(2) != 0);
-  vtkNew<vtkParametricSurfaceSource> source;
-  source->SetParametricFunction(vase);
-  source->SetUResolution(side - 1);
-  source->SetVResolution(side - 1);
-  source->GenerateTangentsOn();
-  source->GenerateDerivativesOn();
-  for (auto _ : state)
-  {
-    source->Modified();
-    source->Update();
-    benchmark::DoNotOptimize(source->GetOutput()->GetPoints());
-  }
-  Report(state, source->GetOutput());
+  RunSource(state, vase, true, true);
 }
 
 // One vtkBezierProfile::Evaluate per point, as a caller outside the source pays it (e.g.
@@ -212,31 +179,71 @@ void BM_VTKTexturedSphereSource(benchmark::State& state)
   Report(state, source->GetOutput());
 }
 
-// The bandwidth bound: allocate and write range(2) bytes per point (the output of the
-// matching source configuration), split among the threads.
+// Bytes per point of each array our source writes: points 12, normals 12, tcoords 8, and
+// 2 triangles = 24 bytes of 32-bit connectivity + 8 of offsets; then tangents 16; then
+// dPdu and dPdv 12 each. range(2) = 0: sphere arrays, 1: + tangents, 2: + derivatives.
+std::vector<size_t> ArrayBytesPerPoint(int variant)
+{
+  std::vector<size_t> bytes = { 12, 12, 8, 24, 8 };
+  if (variant >= 1)
+  {
+    bytes.push_back(16);
+  }
+  if (variant >= 2)
+  {
+    bytes.insert(bytes.end(), { 12, 12 });
+  }
+  return bytes;
+}
+
+// The bandwidth bound: write the same arrays as the source (one allocation each, as VTK
+// arrays are), split among the threads. range(3) = 0: fresh allocations at every iteration,
+// as every VTK source's execution makes (page faults included); 1: the same buffers
+// reused, which no VTK source does (its output arrays are new at each execution) but
+// which is the bare write bandwidth.
 void BM_WriteBound(benchmark::State& state)
 {
   SetThreads(state);
   const int side = Side(state);
-  const size_t bytes = static_cast<size_t>(side) * side * static_cast<size_t>(state.range(2));
+  const size_t points = static_cast<size_t>(side) * side;
+  const bool reuse = state.range(3) != 0;
+  std::vector<std::unique_ptr<char[]>> buffers;
+  std::vector<size_t> sizes;
+  for (size_t perPoint : ArrayBytesPerPoint(static_cast<int>(state.range(2))))
+  {
+    sizes.push_back(perPoint * points);
+    buffers.emplace_back(reuse ? new char[sizes.back()] : nullptr);
+  }
   for (auto _ : state)
   {
-    std::unique_ptr<char[]> buffer(new char[bytes]);
-    char* data = buffer.get();
-    vtkSMPTools::For(0, static_cast<vtkIdType>(bytes), 1 << 20,
-      [data](vtkIdType begin, vtkIdType end)
-      { std::memset(data + begin, 1, static_cast<size_t>(end - begin)); });
-    benchmark::DoNotOptimize(data);
+    for (size_t a = 0; a < sizes.size(); ++a)
+    {
+      if (!reuse)
+      {
+        buffers[a].reset(new char[sizes[a]]);
+      }
+      char* data = buffers[a].get();
+      vtkSMPTools::For(0, static_cast<vtkIdType>(sizes[a]), 1 << 20,
+        [data](vtkIdType begin, vtkIdType end)
+        { std::memset(data + begin, 1, static_cast<size_t>(end - begin)); });
+      benchmark::DoNotOptimize(data);
+    }
     benchmark::ClobberMemory();
+    if (!reuse)
+    {
+      for (auto& buffer : buffers)
+      {
+        buffer.reset();
+      }
+    }
   }
-  state.counters["MB"] = static_cast<double>(bytes) / 1e6;
+  size_t total = 0;
+  for (size_t size : sizes)
+  {
+    total += size;
+  }
+  state.counters["MB"] = static_cast<double>(total) / 1e6;
 }
-
-// Bytes per point written by our source: points 12, normals 12, tcoords 8, tangents 16,
-// derivatives 24, and 2 triangles = 2 x (3 + 1) 32-bit ids.
-constexpr int BytesSphere = 12 + 12 + 8 + 32;
-constexpr int BytesTorus = BytesSphere + 16;
-constexpr int BytesAll = BytesTorus + 24;
 
 void Sizes(benchmark::internal::Benchmark* b, int variants)
 {
@@ -274,9 +281,12 @@ BENCHMARK(BM_WriteBound)
       {
         for (int threads : { 1, 2 })
         {
-          for (int bytes : { BytesSphere, BytesTorus, BytesAll })
+          for (int variant : { 0, 1, 2 })
           {
-            b->Args({ points, threads, bytes });
+            for (int reuse : { 0, 1 })
+            {
+              b->Args({ points, threads, variant, reuse });
+            }
           }
         }
       }
