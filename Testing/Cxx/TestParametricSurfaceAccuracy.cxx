@@ -811,6 +811,16 @@ TEST(ParametricSurfaceAccuracy, BezierProfileBadInput)
   std::ostringstream printed;
   profile->Print(printed);
   EXPECT_NE(printed.str().find("NumberOfControlPoints: 10"), std::string::npos);
+
+  // The surfaces made from profiles print theirs (the heart has 13 control points).
+  vtkNew<vtkParametricExtrusion> pillar;
+  vtkNew<vtkParametricRevolution> vase;
+  std::ostringstream surfaces;
+  pillar->Print(surfaces);
+  vase->Print(surfaces);
+  EXPECT_NE(surfaces.str().find("Height: 2"), std::string::npos);
+  EXPECT_NE(surfaces.str().find("NumberOfControlPoints: 13"), std::string::npos);
+  EXPECT_NE(surfaces.str().find("NumberOfControlPoints: 10"), std::string::npos);
 }
 
 TEST(ParametricSurfaceAccuracy, ConeApexTakesEachColumnsLimit)
