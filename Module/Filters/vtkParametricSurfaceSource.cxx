@@ -683,26 +683,24 @@ int vtkParametricSurfaceSource::RequestData(
   g.InvRepeat[1] = 1.0 / this->TextureRepeat[1];
   g.TangentSign = this->TextureRepeat[0] < 0.0 ? -1.0 : 1.0;
   g.Handedness = g.Orientation * g.TangentSign * (this->TextureRepeat[1] < 0.0 ? -1.0 : 1.0);
-  g.UUnit.resize(U + 1);
-  g.UDomain.resize(U + 1);
-  g.S.resize(U + 1);
-  for (vtkIdType i = 0; i <= U; ++i)
+  // Unit-square parameter, the function's own parameter (its maximum exactly at the end)
+  // and texture coordinate of each of the n + 1 columns (rows).
+  auto sample = [](vtkIdType n, double lo, double hi, double offset, double repeat,
+                  std::vector<double>& unit, std::vector<double>& domain, std::vector<float>& tex)
   {
-    const double u = static_cast<double>(i) / static_cast<double>(U);
-    g.UUnit[i] = u;
-    g.UDomain[i] = i == U ? umax : umin + g.UExtent * u;
-    g.S[i] = static_cast<float>(this->TextureOffset[0] + this->TextureRepeat[0] * u);
-  }
-  g.VUnit.resize(V + 1);
-  g.VDomain.resize(V + 1);
-  g.T.resize(V + 1);
-  for (vtkIdType j = 0; j <= V; ++j)
-  {
-    const double v = static_cast<double>(j) / static_cast<double>(V);
-    g.VUnit[j] = v;
-    g.VDomain[j] = j == V ? vmax : vmin + g.VExtent * v;
-    g.T[j] = static_cast<float>(this->TextureOffset[1] + this->TextureRepeat[1] * v);
-  }
+    unit.resize(n + 1);
+    domain.resize(n + 1);
+    tex.resize(n + 1);
+    for (vtkIdType i = 0; i <= n; ++i)
+    {
+      const double x = static_cast<double>(i) / static_cast<double>(n);
+      unit[i] = x;
+      domain[i] = i == n ? hi : lo + (hi - lo) * x;
+      tex[i] = static_cast<float>(offset + repeat * x);
+    }
+  };
+  sample(U, umin, umax, this->TextureOffset[0], this->TextureRepeat[0], g.UUnit, g.UDomain, g.S);
+  sample(V, vmin, vmax, this->TextureOffset[1], this->TextureRepeat[1], g.VUnit, g.VDomain, g.T);
 
   // One evaluation before the threads start: functions that build state lazily (profiles,
   // splines) do it here, and errors they report stop the source before any output exists.
