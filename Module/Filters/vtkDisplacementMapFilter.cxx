@@ -1,0 +1,1169 @@
+#include "vtkDisplacementMapFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSurfaceDetailConventions.h"
+#include "vtkTypeInt64Array.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkDisplacementMapFilter);
+
+namespace
+{
+using namespace vtkSurfaceDetail;
+
+// Reads float, double or any other real array; float and double (what every source makes)
+// take the fast path, the rest goes through the virtual GetComponent.
+struct ArrayReader
+{
+  const float* F = nullptr;
+  const double* D = nullptr;
+  vtkDataArray* Generic = nullptr;
+  int NC = 0;
+
+  explicit ArrayReader(vtkDataArray* a)
+    : Generic(a)
+    , NC(a->GetNumberOfComponents())
+  {
+    if (a->GetDataType() == VTK_FLOAT && a->HasStandardMemoryLayout())
+    {
+      this->F = static_cast<const float*>(a->GetVoidPointer(0));
+    }
+    else if (a->GetDataType() == VTK_DOUBLE && a->HasStandardMemoryLayout())
+    {
+      this->D = static_cast<const double*>(a->GetVoidPointer(0));
+    }
+  }
+
+  double Get(vtkIdType i, int c) const
+  {
+    if (this->F)
+    {
+      return this->F[i * this->NC + c];
+    }
+    if (this->D)
+    {
+      return this->D[i * this->NC + c];
+    }
+    return this->Generic->GetComponent(i, c);
+  }
+
+  void Get3(vtkIdType i, double v[3]) const
+  {
+    v[0] = this->Get(i, 0);
+    v[1] = this->Get(i, 1);
+    v[2] = this->Get(i, 2);
+  }
+};
+
+// Writes a float or double array through a raw pointer.
+struct ArrayWriter
+{
+  float* F = nullptr;
+  double* D = nullptr;
+  int NC = 0;
+
+  explicit ArrayWriter(vtkDataArray* a)
+    : NC(a->GetNumberOfComponents())
+  {
+    if (a->GetDataType() == VTK_FLOAT)
+    {
+      this->F = static_cast<float*>(a->GetVoidPointer(0));
+    }
+    else
+    {
+      this->D = static_cast<double*>(a->GetVoidPointer(0));
+    }
+  }
+
+  void Set(vtkIdType i, int c, double v) const
+  {
+    if (this->F)
+    {
+      constexpr double big = std::numeric_limits<float>::max();
+      this->F[i * this->NC + c] = static_cast<float>(std::min(std::max(v, -big), big));
+    }
+    else
+    {
+      this->D[i * this->NC + c] = v;
+    }
+  }
+};
+
+// A new float array when the model is float, else double: the output keeps the input's
+// precision.
+vtkSmartPointer<vtkDataArray> NewRealArray(vtkDataArray* like, int nc, vtkIdType n)
+{
+  vtkSmartPointer<vtkDataArray> a;
+  if (like && like->GetDataType() == VTK_FLOAT)
+  {
+    a = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  else
+  {
+    a = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  a->SetNumberOfComponents(nc);
+  a->SetNumberOfTuples(n);
+  if (like)
+  {
+    a->SetName(like->GetName());
+  }
+  return a;
+}
+
+// The height map as a texture: texel values of one component, normalised, non-finite
+// values replaced by the midlevel.
+template <typename T>
+struct Texels
+{
+  const T* Data;
+  int W, H, NC, Comp;
+  double Norm, Mid;
+
+  double At(int i, int j) const
+  {
+    const double v =
+      this->Norm * this->Data[(static_cast<vtkIdType>(j) * this->W + i) * this->NC + this->Comp];
+    return std::isfinite(v) ? v : this->Mid;
+  }
+};
+
+// Keeps huge coordinates from overflowing the texel index; 2 is a period of every wrap.
+inline double TameCoordinate(double s, int wrap)
+{
+  if (std::abs(s) < 1e6)
+  {
+    return s;
+  }
+  return wrap == ClampToEdge ? std::min(std::max(s, -1.0), 2.0) : std::fmod(s, 2.0);
+}
+
+// Catmull-Rom weights and their derivatives for the fraction f in [0,1).
+inline void CatmullRom(double f, double w[4], double dw[4])
+{
+  const double f2 = f * f, f3 = f2 * f;
+  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
+  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
+  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
+  w[3] = 0.5 * (f3 - f2);
+  dw[0] = 0.5 * (-3.0 * f2 + 4.0 * f - 1.0);
+  dw[1] = 0.5 * (9.0 * f2 - 10.0 * f);
+  dw[2] = 0.5 * (-9.0 * f2 + 8.0 * f + 1.0);
+  dw[3] = 0.5 * (3.0 * f2 - 2.0 * f);
+}
+
+// Height h(s,t) of the interpolant and its derivatives with respect to s and t.
+template <typename T>
+void SampleHeight(
+  const Texels<T>& tex, int wrap, int interp, double s, double t, double& h, double& hs, double& ht)
+{
+  s = TameCoordinate(s, wrap);
+  t = TameCoordinate(t, wrap);
+  const int W = tex.W, H = tex.H;
+  if (interp == vtkDisplacementMapFilter::Nearest)
+  {
+    const double x = std::floor(s * W), y = std::floor(t * H);
+    const int i = std::isfinite(x) ? static_cast<int>(x) : 0;
+    const int j = std::isfinite(y) ? static_cast<int>(y) : 0;
+    h = tex.At(WrapIndex(i, W, wrap), WrapIndex(j, H, wrap));
+    hs = 0.0;
+    ht = 0.0;
+    return;
+  }
+  int i0, j0;
+  double fx, fy;
+  LinearTexels(s, W, i0, fx);
+  LinearTexels(t, H, j0, fy);
+  if (interp == vtkDisplacementMapFilter::Linear)
+  {
+    const int ia = WrapIndex(i0, W, wrap), ib = WrapIndex(i0 + 1, W, wrap);
+    const int ja = WrapIndex(j0, H, wrap), jb = WrapIndex(j0 + 1, H, wrap);
+    const double h00 = tex.At(ia, ja), h10 = tex.At(ib, ja);
+    const double h01 = tex.At(ia, jb), h11 = tex.At(ib, jb);
+    const double b0 = (1.0 - fx) * h00 + fx * h10;
+    const double b1 = (1.0 - fx) * h01 + fx * h11;
+    h = (1.0 - fy) * b0 + fy * b1;
+    hs = W * ((1.0 - fy) * (h10 - h00) + fy * (h11 - h01));
+    ht = H * (b1 - b0);
+    return;
+  }
+  double wx[4], dwx[4], wy[4], dwy[4];
+  CatmullRom(fx, wx, dwx);
+  CatmullRom(fy, wy, dwy);
+  int ii[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    ii[k] = WrapIndex(i0 - 1 + k, W, wrap);
+  }
+  h = hs = ht = 0.0;
+  for (int l = 0; l < 4; ++l)
+  {
+    const int j = WrapIndex(j0 - 1 + l, H, wrap);
+    double row = 0.0, drow = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      const double v = tex.At(ii[k], j);
+      row += wx[k] * v;
+      drow += dwx[k] * v;
+    }
+    h += wy[l] * row;
+    hs += wy[l] * drow;
+    ht += dwy[l] * row;
+  }
+  hs *= W;
+  ht *= H;
+}
+
+// Polygons as offsets + connectivity, and the point-to-polygon links in CSR form (each
+// point's polygons in increasing id order, so that every sum over them has one order).
+struct PolyLinks
+{
+  std::vector<vtkIdType> OffsetsCopy, ConnCopy;
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Conn = nullptr;
+  vtkIdType NumCells = 0;
+  std::vector<vtkIdType> LinkOffsets, Links;
+
+  void Build(vtkCellArray* polys, vtkIdType numPts)
+  {
+    this->NumCells = polys->GetNumberOfCells();
+    static_assert(sizeof(vtkIdType) == 8 || sizeof(vtkIdType) == 4, "id size");
+    if (polys->IsStorage64Bit() && sizeof(vtkIdType) == 8)
+    {
+      this->Offsets = reinterpret_cast<const vtkIdType*>(polys->GetOffsetsArray64()->GetPointer(0));
+      this->Conn =
+        reinterpret_cast<const vtkIdType*>(polys->GetConnectivityArray64()->GetPointer(0));
+    }
+    else
+    {
+      vtkDataArray* off = polys->GetOffsetsArray();
+      vtkDataArray* conn = polys->GetConnectivityArray();
+      this->OffsetsCopy.resize(off->GetNumberOfTuples());
+      this->ConnCopy.resize(conn->GetNumberOfTuples());
+      for (vtkIdType i = 0; i < off->GetNumberOfTuples(); ++i)
+      {
+        this->OffsetsCopy[i] = static_cast<vtkIdType>(off->GetComponent(i, 0));
+      }
+      for (vtkIdType i = 0; i < conn->GetNumberOfTuples(); ++i)
+      {
+        this->ConnCopy[i] = static_cast<vtkIdType>(conn->GetComponent(i, 0));
+      }
+      this->Offsets = this->OffsetsCopy.data();
+      this->Conn = this->ConnCopy.data();
+    }
+    this->LinkOffsets.assign(numPts + 1, 0);
+    const vtkIdType nConn = this->Offsets[this->NumCells];
+    for (vtkIdType k = 0; k < nConn; ++k)
+    {
+      ++this->LinkOffsets[this->Conn[k] + 1];
+    }
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      this->LinkOffsets[i + 1] += this->LinkOffsets[i];
+    }
+    this->Links.resize(nConn);
+    std::vector<vtkIdType> cursor(this->LinkOffsets.begin(), this->LinkOffsets.end() - 1);
+    for (vtkIdType c = 0; c < this->NumCells; ++c)
+    {
+      for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
+      {
+        this->Links[cursor[this->Conn[k]]++] = c;
+      }
+    }
+  }
+};
+
+// Per-point least-squares fit of the derivatives of a vector field f with respect to
+// (s,t) over the point's polygons: minimise sum |f_j - f_i - fs ds - ft dt|^2.
+struct Fit
+{
+  double M[3] = { 0.0, 0.0, 0.0 }; // sum ds^2, ds dt, dt^2
+  double Bs[3] = { 0.0, 0.0, 0.0 }, Bt[3] = { 0.0, 0.0, 0.0 };
+
+  void Add(double ds, double dt, const double df[3])
+  {
+    this->M[0] += ds * ds;
+    this->M[1] += ds * dt;
+    this->M[2] += dt * dt;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Bs[k] += ds * df[k];
+      this->Bt[k] += dt * df[k];
+    }
+  }
+
+  // False (and zero derivatives) when the texture coordinates around the point do not
+  // span two directions.
+  bool Solve(double fs[3], double ft[3]) const
+  {
+    const double det = this->M[0] * this->M[2] - this->M[1] * this->M[1];
+    const double tr = this->M[0] + this->M[2];
+    if (!(det > 1e-12 * tr * tr))
+    {
+      fs[0] = fs[1] = fs[2] = ft[0] = ft[1] = ft[2] = 0.0;
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      fs[k] = (this->M[2] * this->Bs[k] - this->M[1] * this->Bt[k]) / det;
+      ft[k] = (this->M[0] * this->Bt[k] - this->M[1] * this->Bs[k]) / det;
+    }
+    return true;
+  }
+};
+
+// NaN becomes 0 and infinity the largest double.
+inline double Finite(double x)
+{
+  if (std::isnan(x))
+  {
+    return 0.0;
+  }
+  return std::min(
+    std::max(x, -std::numeric_limits<double>::max()), std::numeric_limits<double>::max());
+}
+
+inline void ScaleToUnitMax(double v[3])
+{
+  const double mx = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
+  if (mx > 0.0)
+  {
+    v[0] /= mx;
+    v[1] /= mx;
+    v[2] /= mx;
+  }
+}
+
+inline void RemoveNormalPart(const double n[3], double v[3])
+{
+  const double d = Dot(n, v);
+  v[0] -= d * n[0];
+  v[1] -= d * n[1];
+  v[2] -= d * n[2];
+}
+
+// Everything RequestData hands to the threaded passes.
+struct Context
+{
+  vtkIdType NumPts = 0;
+  ArrayReader* Points = nullptr;
+  ArrayReader* Normals = nullptr;
+  ArrayReader* TCoords = nullptr;
+  ArrayReader* DPdu = nullptr;
+  ArrayReader* DPdv = nullptr;
+  const PolyLinks* Polys = nullptr;
+  int Wrap = Repeat;
+  int Interpolation = vtkDisplacementMapFilter::Linear;
+  int NormalMode = vtkDisplacementMapFilter::Exact;
+  double Scale = 1.0;
+  double Midlevel = 0.0;
+  // Outputs of the first pass, 3 per point.
+  std::vector<double> Offset; // displacement vector d n
+  std::vector<double> NewNormal;
+  std::vector<double> NewDPds, NewDPdt; // only when the input has dPdu/dPdv
+  std::vector<unsigned char> Unchanged; // normal kept bit for bit
+};
+
+// Pass 1: displacement, and the analytic normals (Approximate, Exact).
+template <typename T>
+struct DisplaceWorker
+{
+  Context& C;
+  const Texels<T>& Tex;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    const Context& c = this->C;
+    const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
+      c.NormalMode == vtkDisplacementMapFilter::Exact;
+    const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double n[3];
+      c.Normals->Get3(i, n);
+      if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
+      {
+        n[0] = n[1] = n[2] = 0.0;
+      }
+      const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
+      double h, hs, ht;
+      SampleHeight(this->Tex, c.Wrap, c.Interpolation, s, t, h, hs, ht);
+      // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
+      const double d = Finite(c.Scale * (h - c.Midlevel));
+      const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
+      double* off = &this->C.Offset[3 * i];
+      for (int k = 0; k < 3; ++k)
+      {
+        off[k] = d * n[k];
+      }
+      if (!analytic)
+      {
+        continue;
+      }
+      double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
+      if (c.DPdu)
+      {
+        c.DPdu->Get3(i, Ps);
+        c.DPdv->Get3(i, Pt);
+      }
+      if (!c.DPdu || exact)
+      {
+        this->FitDerivatives(i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      }
+      RemoveNormalPart(n, Ps);
+      RemoveNormalPart(n, Pt);
+      double base[3];
+      Cross(Ps, Pt, base);
+      const double area = Dot(n, base);
+      const double scale = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
+      double* nn = &this->C.NewNormal[3 * i];
+      double m[3];
+      double Qs[3], Qt[3];
+      if (exact)
+      {
+        RemoveNormalPart(n, Ns);
+        RemoveNormalPart(n, Nt);
+        for (int k = 0; k < 3; ++k)
+        {
+          Qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
+          Qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
+        }
+        // Only the direction matters: scaling first keeps the cross product finite.
+        double qs[3] = { Qs[0], Qs[1], Qs[2] }, qt[3] = { Qt[0], Qt[1], Qt[2] };
+        ScaleToUnitMax(qs);
+        ScaleToUnitMax(qt);
+        Cross(qs, qt, m);
+      }
+      else
+      {
+        double nxPs[3], nxPt[3];
+        Cross(n, Ps, nxPs);
+        Cross(n, Pt, nxPt);
+        const double mx = std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
+        for (int k = 0; k < 3; ++k)
+        {
+          m[k] = (area / mx) * n[k] + (ds / mx) * nxPt[k] - (dt / mx) * nxPs[k];
+          Qs[k] = Ps[k] + ds * n[k];
+          Qt[k] = Pt[k] + dt * n[k];
+        }
+      }
+      const bool flat = ds == 0.0 && dt == 0.0 && (!exact || d == 0.0);
+      const bool degenerate = !(std::abs(area) > 1e-10 * scale) || !std::isfinite(area);
+      if (flat || degenerate)
+      {
+        c.Normals->Get3(i, nn);
+        this->C.Unchanged[i] = 1;
+      }
+      else
+      {
+        const double sign = area < 0.0 ? -1.0 : 1.0;
+        const double len = Normalize(m);
+        for (int k = 0; k < 3; ++k)
+        {
+          nn[k] = len > 0.0 && std::isfinite(len) ? sign * m[k] : n[k];
+        }
+      }
+      if (!this->C.NewDPds.empty())
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          this->C.NewDPds[3 * i + k] = std::isfinite(Qs[k]) ? Qs[k] : 0.0;
+          this->C.NewDPdt[3 * i + k] = std::isfinite(Qt[k]) ? Qt[k] : 0.0;
+        }
+      }
+    }
+  }
+
+  // Least-squares P_s, P_t (when wanted) and n_s, n_t (when wanted) over the point's
+  // polygons.
+  void FitDerivatives(vtkIdType i, double s, double t, bool wantP, bool wantN, double Ps[3],
+    double Pt[3], double Ns[3], double Nt[3]) const
+  {
+    const Context& c = this->C;
+    const PolyLinks& mesh = *c.Polys;
+    double pi[3], ni[3];
+    c.Points->Get3(i, pi);
+    c.Normals->Get3(i, ni);
+    Normalize(ni);
+    Fit fp, fn;
+    for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+    {
+      const vtkIdType cell = mesh.Links[l];
+      for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1]; ++k)
+      {
+        const vtkIdType j = mesh.Conn[k];
+        if (j == i)
+        {
+          continue;
+        }
+        const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
+        double v[3];
+        if (wantP)
+        {
+          c.Points->Get3(j, v);
+          v[0] -= pi[0];
+          v[1] -= pi[1];
+          v[2] -= pi[2];
+          fp.Add(ds, dt, v);
+        }
+        if (wantN)
+        {
+          c.Normals->Get3(j, v);
+          Normalize(v);
+          v[0] -= ni[0];
+          v[1] -= ni[1];
+          v[2] -= ni[2];
+          fn.Add(ds, dt, v);
+        }
+      }
+    }
+    if (wantP)
+    {
+      fp.Solve(Ps, Pt);
+    }
+    if (wantN)
+    {
+      fn.Solve(Ns, Nt);
+    }
+  }
+};
+
+// Mesh normals: area-weighted sum of the displaced polygons around each point, each
+// polygon oriented as its points' input normals.
+struct MeshNormalWorker
+{
+  Context& C;
+  const std::vector<double>& Moved;
+
+  void PolygonNormal(vtkIdType cell, double out[3]) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
+    double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
+    double p0[3];
+    const double* m0 = &this->Moved[3 * mesh.Conn[b]];
+    this->C.Points->Get3(mesh.Conn[b], p0);
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      double nk[3];
+      this->C.Normals->Get3(mesh.Conn[k], nk);
+      nsum[0] += nk[0];
+      nsum[1] += nk[1];
+      nsum[2] += nk[2];
+    }
+    for (vtkIdType k = b + 1; k + 1 < e; ++k)
+    {
+      const double* m1 = &this->Moved[3 * mesh.Conn[k]];
+      const double* m2 = &this->Moved[3 * mesh.Conn[k + 1]];
+      const double a[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
+      const double bb[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
+      double x[3];
+      Cross(a, bb, x);
+      moved[0] += x[0];
+      moved[1] += x[1];
+      moved[2] += x[2];
+      double p1[3], p2[3];
+      this->C.Points->Get3(mesh.Conn[k], p1);
+      this->C.Points->Get3(mesh.Conn[k + 1], p2);
+      const double c1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+      const double c2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+      Cross(c1, c2, x);
+      orig[0] += x[0];
+      orig[1] += x[1];
+      orig[2] += x[2];
+    }
+    const double sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = sign * moved[k];
+    }
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double sum[3] = { 0.0, 0.0, 0.0 };
+      for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+      {
+        double x[3];
+        this->PolygonNormal(mesh.Links[l], x);
+        sum[0] += x[0];
+        sum[1] += x[1];
+        sum[2] += x[2];
+      }
+      double* nn = &this->C.NewNormal[3 * i];
+      std::copy(sum, sum + 3, nn);
+    }
+  }
+};
+
+template <typename T>
+vtkIdType CountNonFinite(const Texels<T>& tex)
+{
+  std::atomic<vtkIdType> count(0);
+  vtkSMPTools::For(0, tex.H,
+    [&](vtkIdType j0, vtkIdType j1)
+    {
+      vtkIdType local = 0;
+      for (vtkIdType j = j0; j < j1; ++j)
+      {
+        for (int i = 0; i < tex.W; ++i)
+        {
+          const double v = static_cast<double>(
+            tex.Data[(j * tex.W + i) * static_cast<vtkIdType>(tex.NC) + tex.Comp]);
+          local += std::isfinite(v) ? 0 : 1;
+        }
+      }
+      count += local;
+    });
+  return count;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkDisplacementMapFilter::vtkDisplacementMapFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkDisplacementMapFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkDisplacementMapFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The surface streams piece by piece; every piece needs the whole height map.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
+  vtkInformation* mapInfo = inputVector[1]->GetInformationObject(0);
+  if (mapInfo && mapInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      mapInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkDisplacementMapFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkImageData* image = vtkImageData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Input port 0 needs a vtkPolyData.");
+    return 0;
+  }
+  if (!image)
+  {
+    vtkErrorMacro("Input port 1 needs the height map as a vtkImageData "
+                  "(SetInputConnection(1, ...)).");
+    return 0;
+  }
+  const vtkIdType numPts = input->GetNumberOfPoints();
+  if (numPts == 0)
+  {
+    output->ShallowCopy(input);
+    return 1;
+  }
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The input has no 3-component point normals; displacement moves points "
+                  "along them. Compute them with vtkPolyDataNormals (SplittingOff) or "
+                  "generate the surface with vtkParametricSurfaceSource.");
+    return 0;
+  }
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro("The input has no point texture coordinates (2 or more components); "
+                  "they locate each point in the height map. Generate them, e.g. with "
+                  "vtkParametricSurfaceSource or vtkTextureMapToSphere.");
+    return 0;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() == 0 || !scalars ||
+    scalars->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    vtkErrorMacro("The height map on input port 1 is empty or has no point scalars; give "
+                  "it at least 1x1 texels with scalars.");
+    return 0;
+  }
+  if (dims[2] != 1)
+  {
+    vtkErrorMacro("The height map is a " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                                         << " volume; it must be a 2-D image "
+                                            "(extract a slice with vtkExtractVOI).");
+    return 0;
+  }
+  if (this->Component >= scalars->GetNumberOfComponents())
+  {
+    vtkErrorMacro("Component " << this->Component << " was asked for but the height map has "
+                               << scalars->GetNumberOfComponents() << " component(s).");
+    return 0;
+  }
+  const int type = scalars->GetDataType();
+  if (type != VTK_UNSIGNED_CHAR && type != VTK_UNSIGNED_SHORT && type != VTK_FLOAT &&
+    type != VTK_DOUBLE)
+  {
+    vtkErrorMacro("The height map's scalars are " << scalars->GetDataTypeAsString()
+                                                  << "; use unsigned char, unsigned short, "
+                                                     "float or double (vtkImageCast).");
+    return 0;
+  }
+  const bool analytic = this->NormalMode == Approximate || this->NormalMode == Exact;
+  vtkDataArray* dPdu = input->GetPointData()->GetArray("dPdu");
+  vtkDataArray* dPdv = input->GetPointData()->GetArray("dPdv");
+  const bool haveDerivs =
+    dPdu && dPdv && dPdu->GetNumberOfComponents() == 3 && dPdv->GetNumberOfComponents() == 3;
+  const bool needLinks = this->NormalMode == Exact || this->NormalMode == Mesh ||
+    (this->NormalMode == Approximate && !haveDerivs);
+  if (needLinks && input->GetNumberOfStrips() > 0)
+  {
+    vtkErrorMacro("The input has triangle strips; normal mode " << this->GetNormalModeAsString()
+                                                                << " needs polygons. Run "
+                                                                   "vtkTriangleFilter first.");
+    return 0;
+  }
+
+  const int W = dims[0], H = dims[1];
+  const double norm =
+    type == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : (type == VTK_UNSIGNED_SHORT ? 1.0 / 65535.0 : 1.0);
+  const int nc = scalars->GetNumberOfComponents();
+  void* raw = scalars->GetVoidPointer(0);
+
+  Context ctx;
+  ctx.NumPts = numPts;
+  ArrayReader pts(input->GetPoints()->GetData());
+  ArrayReader nrm(normals);
+  ArrayReader tc(tcoords);
+  std::unique_ptr<ArrayReader> du, dv;
+  if (haveDerivs)
+  {
+    du.reset(new ArrayReader(dPdu));
+    dv.reset(new ArrayReader(dPdv));
+    ctx.DPdu = du.get();
+    ctx.DPdv = dv.get();
+  }
+  ctx.Points = &pts;
+  ctx.Normals = &nrm;
+  ctx.TCoords = &tc;
+  ctx.Wrap = this->Wrap;
+  ctx.Interpolation = this->Interpolation;
+  ctx.NormalMode = this->NormalMode;
+  ctx.Scale = this->Scale;
+  ctx.Midlevel = this->Midlevel;
+  ctx.Offset.resize(3 * numPts);
+  if (this->NormalMode != None)
+  {
+    ctx.NewNormal.resize(3 * numPts);
+    ctx.Unchanged.assign(numPts, 0);
+  }
+  if (analytic && haveDerivs)
+  {
+    ctx.NewDPds.resize(3 * numPts);
+    ctx.NewDPdt.resize(3 * numPts);
+  }
+  PolyLinks mesh;
+  if (needLinks)
+  {
+    mesh.Build(input->GetPolys(), numPts);
+    ctx.Polys = &mesh;
+  }
+
+  vtkIdType nonFinite = 0;
+  auto run = [&](auto* data)
+  {
+    using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
+    const Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel };
+    if (type == VTK_FLOAT || type == VTK_DOUBLE)
+    {
+      nonFinite = CountNonFinite(tex);
+    }
+    DisplaceWorker<T> worker{ ctx, tex };
+    vtkSMPTools::For(0, numPts, worker);
+  };
+  switch (type)
+  {
+    case VTK_UNSIGNED_CHAR:
+      run(static_cast<const unsigned char*>(raw));
+      break;
+    case VTK_UNSIGNED_SHORT:
+      run(static_cast<const unsigned short*>(raw));
+      break;
+    case VTK_FLOAT:
+      run(static_cast<const float*>(raw));
+      break;
+    default:
+      run(static_cast<const double*>(raw));
+      break;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
+                    << " of the height map are NaN or infinite; they are treated as Midlevel ("
+                    << this->Midlevel << ").");
+  }
+
+  // Coincident points (seams, poles) share one displacement and, with the same input
+  // normal, one output normal: groups of ids in increasing order, so sums have one order.
+  std::vector<std::pair<vtkIdType, vtkIdType>> groups; // (representative, member)
+  if (this->MergeSeams)
+  {
+    vtkNew<vtkStaticPointLocator> locator;
+    locator->SetDataSet(input);
+    locator->BuildLocator();
+    std::vector<vtkIdType> map(numPts);
+    const double tol = this->SeamTolerance * input->GetLength();
+    locator->MergePoints(tol, map.data());
+    std::vector<unsigned char> isRep(numPts, 0);
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      if (map[i] != i)
+      {
+        groups.emplace_back(map[i], i);
+        isRep[map[i]] = 1;
+      }
+    }
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      if (isRep[i])
+      {
+        groups.emplace_back(i, i);
+      }
+    }
+    std::sort(groups.begin(), groups.end());
+  }
+  auto forEachGroup = [&](auto&& body)
+  {
+    for (size_t b = 0; b < groups.size();)
+    {
+      size_t e = b;
+      while (e < groups.size() && groups[e].first == groups[b].first)
+      {
+        ++e;
+      }
+      body(b, e);
+      b = e;
+    }
+  };
+  forEachGroup(
+    [&](size_t b, size_t e)
+    {
+      double mean[3] = { 0.0, 0.0, 0.0 };
+      for (size_t g = b; g < e; ++g)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          mean[k] += ctx.Offset[3 * groups[g].second + k];
+        }
+      }
+      for (size_t g = b; g < e; ++g)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          ctx.Offset[3 * groups[g].second + k] = mean[k] / static_cast<double>(e - b);
+        }
+      }
+    });
+
+  // The output points keep the input's precision.
+  vtkPoints* inPoints = input->GetPoints();
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(inPoints->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE);
+  outPoints->SetNumberOfPoints(numPts);
+  {
+    ArrayWriter w(outPoints->GetData());
+    vtkSMPTools::For(0, numPts,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          double p[3];
+          pts.Get3(i, p);
+          for (int k = 0; k < 3; ++k)
+          {
+            w.Set(i, k, Finite(p[k] + ctx.Offset[3 * i + k]));
+          }
+        }
+      });
+  }
+
+  if (this->NormalMode == Mesh)
+  {
+    std::vector<double> moved(3 * numPts);
+    vtkSMPTools::For(0, numPts,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          double p[3];
+          pts.Get3(i, p);
+          for (int k = 0; k < 3; ++k)
+          {
+            moved[3 * i + k] = Finite(p[k] + ctx.Offset[3 * i + k]);
+          }
+        }
+      });
+    MeshNormalWorker worker{ ctx, moved };
+    vtkSMPTools::For(0, numPts, worker);
+  }
+
+  output->CopyStructure(input);
+  output->SetPoints(outPoints);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetCellData()->PassData(input->GetCellData());
+  if (this->NormalMode == None)
+  {
+    return 1;
+  }
+
+  // Seam members with the same input normal share the (summed) output normal.
+  forEachGroup(
+    [&](size_t b, size_t e)
+    {
+      std::vector<double> sums(3 * (e - b), 0.0);
+      for (size_t g = b; g < e; ++g)
+      {
+        double ng[3];
+        nrm.Get3(groups[g].second, ng);
+        Normalize(ng);
+        bool allUnchanged = true;
+        for (size_t h = b; h < e; ++h)
+        {
+          double nh[3];
+          nrm.Get3(groups[h].second, nh);
+          Normalize(nh);
+          if (Dot(ng, nh) > 1.0 - 1e-9)
+          {
+            const double* x = &ctx.NewNormal[3 * groups[h].second];
+            double y[3] = { x[0], x[1], x[2] };
+            if (this->NormalMode != Mesh)
+            {
+              Normalize(y);
+            }
+            for (int k = 0; k < 3; ++k)
+            {
+              sums[3 * (g - b) + k] += y[k];
+            }
+            allUnchanged = allUnchanged && ctx.Unchanged[groups[h].second];
+          }
+        }
+        if (!allUnchanged)
+        {
+          ctx.Unchanged[groups[g].second] = 0;
+        }
+      }
+      for (size_t g = b; g < e; ++g)
+      {
+        const vtkIdType i = groups[g].second;
+        if (!ctx.Unchanged[i])
+        {
+          std::copy(&sums[3 * (g - b)], &sums[3 * (g - b)] + 3, &ctx.NewNormal[3 * i]);
+        }
+      }
+    });
+
+  auto outNormals = NewRealArray(normals, 3, numPts);
+  // VTK 9.1's tangents attribute takes 3 components only, so DESIGN.md's 4-component
+  // frame is found by its name "Tangents".
+  vtkDataArray* inTangents = input->GetPointData()->GetTangents();
+  if (!inTangents)
+  {
+    inTangents = input->GetPointData()->GetArray("Tangents");
+  }
+  const bool tangents = inTangents &&
+    (inTangents->GetNumberOfComponents() == 3 || inTangents->GetNumberOfComponents() == 4);
+  vtkSmartPointer<vtkDataArray> outTangents;
+  std::unique_ptr<ArrayReader> tanReader;
+  if (tangents)
+  {
+    outTangents = NewRealArray(inTangents, inTangents->GetNumberOfComponents(), numPts);
+    tanReader.reset(new ArrayReader(inTangents));
+  }
+  {
+    ArrayWriter wn(outNormals);
+    std::unique_ptr<ArrayWriter> wt(tangents ? new ArrayWriter(outTangents) : nullptr);
+    vtkSMPTools::For(0, numPts,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          double n[3] = { ctx.NewNormal[3 * i], ctx.NewNormal[3 * i + 1],
+            ctx.NewNormal[3 * i + 2] };
+          const bool keep = ctx.Unchanged[i] != 0;
+          if (!keep && (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2])))
+          {
+            nrm.Get3(i, n);
+            if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
+            {
+              n[0] = n[1] = 0.0;
+              n[2] = 1.0;
+            }
+          }
+          for (int k = 0; k < 3; ++k)
+          {
+            wn.Set(i, k, n[k]);
+          }
+          if (!wt)
+          {
+            continue;
+          }
+          const int tnc = wt->NC;
+          double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
+          for (int k = 0; k < tnc; ++k)
+          {
+            tg[k] = tanReader->Get(i, k);
+          }
+          if (!keep)
+          {
+            RemoveNormalPart(n, tg);
+            if (Normalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
+            {
+              const double zero[3] = { 0.0, 0.0, 0.0 };
+              const double w = tg[3];
+              MakeTangentFrame(n, zero, zero, tg);
+              tg[3] = w;
+            }
+          }
+          for (int k = 0; k < tnc; ++k)
+          {
+            wt->Set(i, k, tg[k]);
+          }
+        }
+      });
+  }
+  output->GetPointData()->SetNormals(outNormals);
+  if (tangents && outTangents->GetNumberOfComponents() == 3)
+  {
+    output->GetPointData()->SetTangents(outTangents);
+  }
+  else if (tangents)
+  {
+    output->GetPointData()->AddArray(outTangents);
+  }
+  if (!ctx.NewDPds.empty())
+  {
+    auto outDu = NewRealArray(dPdu, 3, numPts);
+    auto outDv = NewRealArray(dPdv, 3, numPts);
+    ArrayWriter wu(outDu), wv(outDv);
+    vtkSMPTools::For(0, numPts,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            wu.Set(i, k, ctx.NewDPds[3 * i + k]);
+            wv.Set(i, k, ctx.NewDPdt[3 * i + k]);
+          }
+        }
+      });
+    output->GetPointData()->AddArray(outDu);
+    output->GetPointData()->AddArray(outDv);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDisplacementMapFilter::GetWrapAsString()
+{
+  switch (this->Wrap)
+  {
+    case ClampToEdge:
+      return "ClampToEdge";
+    case MirroredRepeat:
+      return "MirroredRepeat";
+    default:
+      return "Repeat";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDisplacementMapFilter::GetInterpolationAsString()
+{
+  switch (this->Interpolation)
+  {
+    case Nearest:
+      return "Nearest";
+    case Cubic:
+      return "Cubic";
+    default:
+      return "Linear";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDisplacementMapFilter::GetNormalModeAsString()
+{
+  switch (this->NormalMode)
+  {
+    case None:
+      return "None";
+    case Approximate:
+      return "Approximate";
+    case Mesh:
+      return "Mesh";
+    default:
+      return "Exact";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "Midlevel: " << this->Midlevel << "\n";
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
+  os << indent << "Interpolation: " << this->GetInterpolationAsString() << "\n";
+  os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";
+  os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
+  os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
+}

@@ -1,0 +1,217 @@
+/**
+ * @class   vtkDisplacementMapFilter
+ * @brief   Displaces a surface along its normals by a height map and recomputes the normals.
+ *
+ * Input port 0 is a vtkPolyData with point normals and texture coordinates (s,t); input
+ * port 1 (`SetInputConnection(1, ...)`) is a 2-D vtkImageData, the height map h. Every point
+ * moves to
+ *
+ *     p' = p + Scale * (h(s,t) - Midlevel) * n
+ *
+ * which is displacement mapping as in seed 000: p*(u,v) = p(u,v) + d(u,v) n(u,v) with
+ * d = Scale * (h - Midlevel).
+ *
+ * Sampling the height map. The image is a texture: its origin and spacing are ignored,
+ * row 0 is t = 0 and texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H), as
+ * vtkSurfaceDetailConventions.h defines for every SurfaceDetail filter and shader.
+ * `Component` selects the channel; unsigned char and unsigned short are normalised to
+ * [0,1], float and double are used as they are (other scalar types are an error: convert
+ * them with vtkImageCast or vtkImageShiftScale). `Wrap` has vtkTexture's values and
+ * OpenGL's meaning; `Interpolation` is
+ * - Nearest: the texel that contains (s,t) (GL_NEAREST). Its derivative is zero, so the
+ *   analytic normal modes see flat terraces; use Mesh normals for a faceted look.
+ * - Linear: GL_LINEAR, the blend of the four nearest texel centres, so that the CPU
+ *   displacement matches what a vtkTexture with the same wrap mode shows on the GPU.
+ * - Cubic: Catmull-Rom (Keys' cubic convolution with a = -1/2) over the 4x4 nearest texel
+ *   centres, the same texel split as Linear, each index wrapped by `Wrap`. It interpolates
+ *   the texels (equal to Linear at texel centres), is C1, and reproduces quadratics, so a
+ *   smooth height map sampled into W texels is reconstructed with O(1/W^3) error in value
+ *   and O(1/W^2) in slope.
+ * A 1x1 height map is valid: it is a constant (a 1x1 texture samples to its only texel in
+ * every mode), so all points move by the same distance. NaN and infinite heights are
+ * treated as Midlevel, with one warning giving their count.
+ *
+ * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt and n the unit input normal.
+ * - Approximate: the seed's formula, which drops the d dn/ds terms:
+ *   m* = P_s x P_t + d_s (n x P_t) - d_t (n x P_s), where d_s, d_t are the analytic
+ *   derivatives of the chosen interpolant (bilinear or bicubic), not a finite difference
+ *   with a fixed epsilon.
+ * - Exact: m* = (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t), the normal of the displaced
+ *   surface itself. The derivatives of the normal, n_s and n_t, are fitted per point by
+ *   least squares to the input normals over the point's polygons in (s,t) (a central
+ *   difference on a regular grid, so second order).
+ * - Mesh: the area-weighted average of the displaced polygons' normals, each polygon
+ *   oriented as the input normals of its points (what vtkPolyDataNormals would give without
+ *   splitting).
+ * - None: the input normals are kept.
+ * In Approximate and Exact the output normal is m* / |m*| times the sign of
+ * n . (P_s x P_t), so Scale 0 gives back the input normal direction whatever the
+ * orientation of the parameterisation; where m* vanishes (a pole, a degenerate
+ * parameterisation) the input normal is kept, so normals are always finite.
+ *
+ * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
+ * (vtkParametricSurfaceSource's GenerateDerivatives), they are used as P_s and P_t, i.e.
+ * as derivatives with respect to the texture coordinates. Otherwise P_s and P_t are fitted
+ * per point by least squares to the position differences over the point's polygons against
+ * their texture-coordinate differences. In Approximate and Exact mode the output "dPdu"
+ * and "dPdv", when present, are the derivatives of the displaced surface.
+ *
+ * Tangents. When the point data has tangents (3 or 4 components, DESIGN.md's frame), the
+ * output tangents are re-orthogonalised to the new normals; the handedness w is kept.
+ * All other point and cell arrays pass through.
+ *
+ * Seams. With `MergeSeams` on (the default), points that coincide within
+ * `SeamTolerance` (relative to the bounding-box diagonal), such as the duplicated points of
+ * a texture seam or a pole, are moved by one shared displacement (the mean of their own),
+ * so no crack can open; those that also share their input normal get one shared output
+ * normal. Points that coincide but have different input normals (a hard edge) keep their
+ * own normals but still move together.
+ *
+ * Pieces: the filter works point by point on whatever piece it gets; the height map is
+ * always requested whole. Threads: vtkSMPTools, with results independent of the number of
+ * threads.
+ *
+ * @sa vtkParametricSurfaceSource vtkHeightMapToNormalMap vtkWarpScalar vtkPolyDataNormals
+ */
+
+#ifndef vtkDisplacementMapFilter_h
+#define vtkDisplacementMapFilter_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class SURFACEDETAILFILTERS_EXPORT vtkDisplacementMapFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkDisplacementMapFilter* New();
+  vtkTypeMacro(vtkDisplacementMapFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum WrapModes
+  {
+    ClampToEdge = 0,
+    Repeat = 1,
+    MirroredRepeat = 2
+  };
+
+  enum InterpolationModes
+  {
+    Nearest = 0,
+    Linear = 1,
+    Cubic = 2
+  };
+
+  enum NormalModes
+  {
+    None = 0,
+    Approximate = 1,
+    Exact = 2,
+    Mesh = 3
+  };
+
+  ///@{
+  /**
+   * Displacement per unit of height above Midlevel, in the input's length units.
+   * Default 1.
+   */
+  vtkSetMacro(Scale, double);
+  vtkGetMacro(Scale, double);
+  ///@}
+
+  ///@{
+  /**
+   * The height (after normalisation of integer maps) that does not move the surface.
+   * Default 0.
+   */
+  vtkSetMacro(Midlevel, double);
+  vtkGetMacro(Midlevel, double);
+  ///@}
+
+  ///@{
+  /**
+   * The component of the height map's scalars that holds the height. Default 0.
+   */
+  vtkSetClampMacro(Component, int, 0, VTK_INT_MAX);
+  vtkGetMacro(Component, int);
+  ///@}
+
+  ///@{
+  /**
+   * How texture coordinates outside [0,1] read the height map, as vtkTexture::Wrap.
+   * Default Repeat.
+   */
+  vtkSetClampMacro(Wrap, int, ClampToEdge, MirroredRepeat);
+  vtkGetMacro(Wrap, int);
+  void SetWrapToClampToEdge() { this->SetWrap(ClampToEdge); }
+  void SetWrapToRepeat() { this->SetWrap(Repeat); }
+  void SetWrapToMirroredRepeat() { this->SetWrap(MirroredRepeat); }
+  const char* GetWrapAsString();
+  ///@}
+
+  ///@{
+  /**
+   * How the height map is reconstructed between texel centres. Default Linear.
+   */
+  vtkSetClampMacro(Interpolation, int, Nearest, Cubic);
+  vtkGetMacro(Interpolation, int);
+  void SetInterpolationToNearest() { this->SetInterpolation(Nearest); }
+  void SetInterpolationToLinear() { this->SetInterpolation(Linear); }
+  void SetInterpolationToCubic() { this->SetInterpolation(Cubic); }
+  const char* GetInterpolationAsString();
+  ///@}
+
+  ///@{
+  /**
+   * How the output normals are computed (see the class description). Default Exact.
+   */
+  vtkSetClampMacro(NormalMode, int, None, Mesh);
+  vtkGetMacro(NormalMode, int);
+  void SetNormalModeToNone() { this->SetNormalMode(None); }
+  void SetNormalModeToApproximate() { this->SetNormalMode(Approximate); }
+  void SetNormalModeToExact() { this->SetNormalMode(Exact); }
+  void SetNormalModeToMesh() { this->SetNormalMode(Mesh); }
+  const char* GetNormalModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Whether coincident points (texture seams, poles) are moved together and share normals.
+   * Default on.
+   */
+  vtkSetMacro(MergeSeams, bool);
+  vtkGetMacro(MergeSeams, bool);
+  vtkBooleanMacro(MergeSeams, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Distance under which points count as coincident, as a fraction of the input's
+   * bounding-box diagonal. Default 1e-6.
+   */
+  vtkSetClampMacro(SeamTolerance, double, 0.0, 1.0);
+  vtkGetMacro(SeamTolerance, double);
+  ///@}
+
+protected:
+  vtkDisplacementMapFilter();
+  ~vtkDisplacementMapFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Scale = 1.0;
+  double Midlevel = 0.0;
+  int Component = 0;
+  int Wrap = Repeat;
+  int Interpolation = Linear;
+  int NormalMode = Exact;
+  bool MergeSeams = true;
+  double SeamTolerance = 1e-6;
+
+private:
+  vtkDisplacementMapFilter(const vtkDisplacementMapFilter&) = delete;
+  void operator=(const vtkDisplacementMapFilter&) = delete;
+};
+
+#endif
