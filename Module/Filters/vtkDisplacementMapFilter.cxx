@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -509,6 +510,7 @@ struct DisplaceWorker
     c.Normals->Get3(i, ni);
     Normalize(ni);
     Fit fp, fn;
+    double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
     for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
     {
       const vtkIdType cell = mesh.Links[l];
@@ -528,6 +530,9 @@ struct DisplaceWorker
           v[1] -= pi[1];
           v[2] -= pi[2];
           fp.Add(ds, dt, v);
+          const double d2 = Dot(v, v);
+          minD2 = std::min(minD2, d2);
+          maxD2 = std::max(maxD2, d2);
         }
         if (wantN)
         {
@@ -540,13 +545,15 @@ struct DisplaceWorker
         }
       }
     }
-    if (wantP)
-    {
-      fp.Solve(Ps, Pt);
-    }
     if (wantN)
     {
       fn.Solve(Ns, Nt);
+    }
+    // A neighbour at the same place with other texture coordinates means that p(s,t) is
+    // singular here (a pole): no derivative describes it, and the caller keeps the normal.
+    if (wantP && (!fp.Solve(Ps, Pt) || minD2 <= 1e-16 * maxD2))
+    {
+      Ps[0] = Ps[1] = Ps[2] = Pt[0] = Pt[1] = Pt[2] = 0.0;
     }
   }
 };
@@ -678,6 +685,9 @@ int vtkDisplacementMapFilter::RequestUpdateExtent(
   vtkInformation* mapInfo = inputVector[1]->GetInformationObject(0);
   if (mapInfo && mapInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
       mapInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
   }
@@ -769,6 +779,13 @@ int vtkDisplacementMapFilter::RequestData(
                                                                 << " needs polygons. Run "
                                                                    "vtkTriangleFilter first.");
     return 0;
+  }
+
+  if (this->Scale == 0.0 && this->NormalMode != Mesh)
+  {
+    // Nothing moves, so nothing changes: the input itself, bit for bit.
+    output->ShallowCopy(input);
+    return 1;
   }
 
   const int W = dims[0], H = dims[1];
@@ -928,7 +945,9 @@ int vtkDisplacementMapFilter::RequestData(
           pts.Get3(i, p);
           for (int k = 0; k < 3; ++k)
           {
-            w.Set(i, k, Finite(p[k] + ctx.Offset[3 * i + k]));
+            // Adding +0 would turn -0 into +0: no displacement leaves the bits alone.
+            const double o = ctx.Offset[3 * i + k];
+            w.Set(i, k, o == 0.0 ? p[k] : Finite(p[k] + o));
           }
         }
       });
@@ -991,7 +1010,9 @@ int vtkDisplacementMapFilter::RequestData(
             {
               sums[3 * (g - b) + k] += y[k];
             }
-            allUnchanged = allUnchanged && ctx.Unchanged[groups[h].second];
+            // Kept normals that differ in their last bits are summed like the others.
+            allUnchanged = allUnchanged && ctx.Unchanged[groups[h].second] &&
+              std::memcmp(x, &ctx.NewNormal[3 * groups[g].second], 3 * sizeof(double)) == 0;
           }
         }
         if (!allUnchanged)

@@ -67,6 +67,9 @@
  * normal. Points that coincide but have different input normals (a hard edge) keep their
  * own normals but still move together.
  *
+ * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
+ * recomputes the normals from the faces).
+ *
  * Pieces: the filter works point by point on whatever piece it gets; the height map is
  * always requested whole. Threads: vtkSMPTools, with results independent of the number of
  * threads.
