@@ -238,6 +238,22 @@ void SampleHeight(
   ht *= H;
 }
 
+std::vector<vtkIdType> Widen(vtkDataArray* a)
+{
+  std::vector<vtkIdType> out(a->GetNumberOfValues());
+  if (a->GetDataType() == VTK_TYPE_INT32)
+  {
+    const auto* p = static_cast<const vtkTypeInt32*>(a->GetVoidPointer(0));
+    std::copy(p, p + out.size(), out.begin());
+  }
+  else
+  {
+    const auto* p = static_cast<const vtkTypeInt64*>(a->GetVoidPointer(0));
+    std::copy(p, p + out.size(), out.begin());
+  }
+  return out;
+}
+
 // Polygons as offsets + connectivity, and the point-to-polygon links in CSR form (each
 // point's polygons in increasing id order, so that every sum over them has one order).
 struct PolyLinks
@@ -260,18 +276,13 @@ struct PolyLinks
     }
     else
     {
-      vtkDataArray* off = polys->GetOffsetsArray();
-      vtkDataArray* conn = polys->GetConnectivityArray();
-      this->OffsetsCopy.resize(off->GetNumberOfTuples());
-      this->ConnCopy.resize(conn->GetNumberOfTuples());
-      for (vtkIdType i = 0; i < off->GetNumberOfTuples(); ++i)
-      {
-        this->OffsetsCopy[i] = static_cast<vtkIdType>(off->GetComponent(i, 0));
-      }
-      for (vtkIdType i = 0; i < conn->GetNumberOfTuples(); ++i)
-      {
-        this->ConnCopy[i] = static_cast<vtkIdType>(conn->GetComponent(i, 0));
-      }
+      // 32-bit storage: widened once, with typed loops rather than virtual calls.
+      this->OffsetsCopy =
+        Widen(polys->IsStorage64Bit() ? static_cast<vtkDataArray*>(polys->GetOffsetsArray64())
+                                      : static_cast<vtkDataArray*>(polys->GetOffsetsArray32()));
+      this->ConnCopy = Widen(polys->IsStorage64Bit()
+          ? static_cast<vtkDataArray*>(polys->GetConnectivityArray64())
+          : static_cast<vtkDataArray*>(polys->GetConnectivityArray32()));
       this->Offsets = this->OffsetsCopy.data();
       this->Conn = this->ConnCopy.data();
     }
@@ -369,30 +380,148 @@ inline void RemoveNormalPart(const double n[3], double v[3])
 // Everything RequestData hands to the threaded passes.
 struct Context
 {
-  vtkIdType NumPts = 0;
   ArrayReader* Points = nullptr;
   ArrayReader* Normals = nullptr;
   ArrayReader* TCoords = nullptr;
   ArrayReader* DPdu = nullptr;
   ArrayReader* DPdv = nullptr;
+  ArrayReader* Tangents = nullptr;
   const PolyLinks* Polys = nullptr;
   int Wrap = Repeat;
   int Interpolation = vtkDisplacementMapFilter::Linear;
   int NormalMode = vtkDisplacementMapFilter::Exact;
   double Scale = 1.0;
   double Midlevel = 0.0;
-  // Outputs of the first pass, 3 per point.
-  std::vector<double> Offset; // displacement vector d n
-  std::vector<double> NewNormal;
-  std::vector<double> NewDPds, NewDPdt; // only when the input has dPdu/dPdv
-  std::vector<unsigned char> Unchanged; // normal kept bit for bit
+  ArrayWriter* OutPoints = nullptr;
+  ArrayWriter* OutNormals = nullptr;  // null in None mode
+  ArrayWriter* OutTangents = nullptr; // null without input tangents or in None mode
+  double* Distance = nullptr;         // d per point, kept for the seam pass
 };
+
+// The unit input normal, or zero when it has no direction.
+inline void InputNormal(const Context& c, vtkIdType i, double n[3])
+{
+  c.Normals->Get3(i, n);
+  if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
+  {
+    n[0] = n[1] = n[2] = 0.0;
+  }
+}
+
+inline void WritePoint(const Context& c, vtkIdType i, const double offset[3])
+{
+  double p[3];
+  c.Points->Get3(i, p);
+  for (int k = 0; k < 3; ++k)
+  {
+    // Adding +0 would turn -0 into +0: no displacement leaves the bits alone.
+    c.OutPoints->Set(i, k, offset[k] == 0.0 ? p[k] : Finite(p[k] + offset[k]));
+  }
+}
+
+// Normalises @a m and writes it (the input normal where @a m has no direction), then the
+// tangent re-orthogonalised to it with its handedness kept.
+inline void WriteNormalAndTangent(const Context& c, vtkIdType i, double m[3])
+{
+  if (Normalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
+  {
+    InputNormal(c, i, m);
+    if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0)
+    {
+      m[2] = 1.0;
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    c.OutNormals->Set(i, k, m[k]);
+  }
+  if (!c.OutTangents)
+  {
+    return;
+  }
+  const int tnc = c.OutTangents->NC;
+  double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
+  for (int k = 0; k < tnc; ++k)
+  {
+    tg[k] = c.Tangents->Get(i, k);
+  }
+  RemoveNormalPart(m, tg);
+  if (Normalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
+  {
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    const double w = tg[3];
+    MakeTangentFrame(m, zero, zero, tg);
+    tg[3] = w;
+  }
+  for (int k = 0; k < tnc; ++k)
+  {
+    c.OutTangents->Set(i, k, tg[k]);
+  }
+}
+
+// Least-squares p_s, p_t (when wanted) and n_s, n_t (when wanted) over the point's
+// polygons. A neighbour at the same place with other texture coordinates means that
+// p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned
+// and the caller keeps the normal.
+void FitDerivatives(const Context& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
+  double Ps[3], double Pt[3], double Ns[3], double Nt[3])
+{
+  const PolyLinks& mesh = *c.Polys;
+  double pi[3], ni[3];
+  c.Points->Get3(i, pi);
+  c.Normals->Get3(i, ni);
+  Normalize(ni);
+  Fit fp, fn;
+  double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
+  for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+  {
+    const vtkIdType cell = mesh.Links[l];
+    for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1]; ++k)
+    {
+      const vtkIdType j = mesh.Conn[k];
+      if (j == i)
+      {
+        continue;
+      }
+      const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
+      double v[3];
+      if (wantP)
+      {
+        c.Points->Get3(j, v);
+        v[0] -= pi[0];
+        v[1] -= pi[1];
+        v[2] -= pi[2];
+        fp.Add(ds, dt, v);
+        const double d2 = Dot(v, v);
+        minD2 = std::min(minD2, d2);
+        maxD2 = std::max(maxD2, d2);
+      }
+      if (wantN)
+      {
+        c.Normals->Get3(j, v);
+        Normalize(v);
+        v[0] -= ni[0];
+        v[1] -= ni[1];
+        v[2] -= ni[2];
+        fn.Add(ds, dt, v);
+      }
+    }
+  }
+  if (wantN)
+  {
+    fn.Solve(Ns, Nt);
+  }
+  if (wantP && (!fp.Solve(Ps, Pt) || minD2 <= 1e-16 * maxD2))
+  {
+    Ps[0] = Ps[1] = Ps[2] = Pt[0] = Pt[1] = Pt[2] = 0.0;
+  }
+}
 
 // Pass 1: displacement, and the analytic normals (Approximate, Exact).
 template <typename T>
 struct DisplaceWorker
 {
-  Context& C;
+  const Context& C;
   const Texels<T>& Tex;
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -404,21 +533,18 @@ struct DisplaceWorker
     for (vtkIdType i = begin; i < end; ++i)
     {
       double n[3];
-      c.Normals->Get3(i, n);
-      if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
-      {
-        n[0] = n[1] = n[2] = 0.0;
-      }
+      InputNormal(c, i, n);
       const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
       double h, hs, ht;
       SampleHeight(this->Tex, c.Wrap, c.Interpolation, s, t, h, hs, ht);
       // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
       const double d = Finite(c.Scale * (h - c.Midlevel));
       const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
-      double* off = &this->C.Offset[3 * i];
-      for (int k = 0; k < 3; ++k)
+      const double offset[3] = { d * n[0], d * n[1], d * n[2] };
+      WritePoint(c, i, offset);
+      if (c.Distance)
       {
-        off[k] = d * n[k];
+        c.Distance[i] = d;
       }
       if (!analytic)
       {
@@ -432,28 +558,27 @@ struct DisplaceWorker
       }
       if (!c.DPdu || exact)
       {
-        this->FitDerivatives(i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+        FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
       }
+      // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
       RemoveNormalPart(n, Ps);
       RemoveNormalPart(n, Pt);
       double base[3];
       Cross(Ps, Pt, base);
       const double area = Dot(n, base);
-      const double scale = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
-      double* nn = &this->C.NewNormal[3 * i];
+      const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
       double m[3];
-      double Qs[3], Qt[3];
       if (exact)
       {
         RemoveNormalPart(n, Ns);
         RemoveNormalPart(n, Nt);
+        double qs[3], qt[3];
         for (int k = 0; k < 3; ++k)
         {
-          Qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
-          Qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
+          qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
+          qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
         }
         // Only the direction matters: scaling first keeps the cross product finite.
-        double qs[3] = { Qs[0], Qs[1], Qs[2] }, qt[3] = { Qt[0], Qt[1], Qt[2] };
         ScaleToUnitMax(qs);
         ScaleToUnitMax(qt);
         Cross(qs, qt, m);
@@ -467,93 +592,20 @@ struct DisplaceWorker
         for (int k = 0; k < 3; ++k)
         {
           m[k] = (area / mx) * n[k] + (ds / mx) * nxPt[k] - (dt / mx) * nxPs[k];
-          Qs[k] = Ps[k] + ds * n[k];
-          Qt[k] = Pt[k] + dt * n[k];
         }
       }
-      const bool flat = ds == 0.0 && dt == 0.0 && (!exact || d == 0.0);
-      const bool degenerate = !(std::abs(area) > 1e-10 * scale) || !std::isfinite(area);
-      if (flat || degenerate)
+      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
+      if (degenerate)
       {
-        c.Normals->Get3(i, nn);
-        this->C.Unchanged[i] = 1;
+        std::copy(n, n + 3, m);
       }
-      else
+      else if (area < 0.0)
       {
-        const double sign = area < 0.0 ? -1.0 : 1.0;
-        const double len = Normalize(m);
-        for (int k = 0; k < 3; ++k)
-        {
-          nn[k] = len > 0.0 && std::isfinite(len) ? sign * m[k] : n[k];
-        }
+        m[0] = -m[0];
+        m[1] = -m[1];
+        m[2] = -m[2];
       }
-      if (!this->C.NewDPds.empty())
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          this->C.NewDPds[3 * i + k] = std::isfinite(Qs[k]) ? Qs[k] : 0.0;
-          this->C.NewDPdt[3 * i + k] = std::isfinite(Qt[k]) ? Qt[k] : 0.0;
-        }
-      }
-    }
-  }
-
-  // Least-squares P_s, P_t (when wanted) and n_s, n_t (when wanted) over the point's
-  // polygons.
-  void FitDerivatives(vtkIdType i, double s, double t, bool wantP, bool wantN, double Ps[3],
-    double Pt[3], double Ns[3], double Nt[3]) const
-  {
-    const Context& c = this->C;
-    const PolyLinks& mesh = *c.Polys;
-    double pi[3], ni[3];
-    c.Points->Get3(i, pi);
-    c.Normals->Get3(i, ni);
-    Normalize(ni);
-    Fit fp, fn;
-    double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
-    for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
-    {
-      const vtkIdType cell = mesh.Links[l];
-      for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1]; ++k)
-      {
-        const vtkIdType j = mesh.Conn[k];
-        if (j == i)
-        {
-          continue;
-        }
-        const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
-        double v[3];
-        if (wantP)
-        {
-          c.Points->Get3(j, v);
-          v[0] -= pi[0];
-          v[1] -= pi[1];
-          v[2] -= pi[2];
-          fp.Add(ds, dt, v);
-          const double d2 = Dot(v, v);
-          minD2 = std::min(minD2, d2);
-          maxD2 = std::max(maxD2, d2);
-        }
-        if (wantN)
-        {
-          c.Normals->Get3(j, v);
-          Normalize(v);
-          v[0] -= ni[0];
-          v[1] -= ni[1];
-          v[2] -= ni[2];
-          fn.Add(ds, dt, v);
-        }
-      }
-    }
-    if (wantN)
-    {
-      fn.Solve(Ns, Nt);
-    }
-    // A neighbour at the same place with other texture coordinates means that p(s,t) is
-    // singular here (a pole): no derivative describes it, and the caller keeps the normal.
-    if (wantP && (!fp.Solve(Ps, Pt) || minD2 <= 1e-16 * maxD2))
-    {
-      Ps[0] = Ps[1] = Ps[2] = Pt[0] = Pt[1] = Pt[2] = 0.0;
+      WriteNormalAndTangent(c, i, m);
     }
   }
 };
@@ -562,16 +614,16 @@ struct DisplaceWorker
 // polygon oriented as its points' input normals.
 struct MeshNormalWorker
 {
-  Context& C;
-  const std::vector<double>& Moved;
+  const Context& C;
+  const ArrayReader& Moved;
 
   void PolygonNormal(vtkIdType cell, double out[3]) const
   {
     const PolyLinks& mesh = *this->C.Polys;
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
     double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
-    double p0[3];
-    const double* m0 = &this->Moved[3 * mesh.Conn[b]];
+    double m0[3], p0[3];
+    this->Moved.Get3(mesh.Conn[b], m0);
     this->C.Points->Get3(mesh.Conn[b], p0);
     for (vtkIdType k = b; k < e; ++k)
     {
@@ -583,16 +635,15 @@ struct MeshNormalWorker
     }
     for (vtkIdType k = b + 1; k + 1 < e; ++k)
     {
-      const double* m1 = &this->Moved[3 * mesh.Conn[k]];
-      const double* m2 = &this->Moved[3 * mesh.Conn[k + 1]];
-      const double a[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
-      const double bb[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
-      double x[3];
-      Cross(a, bb, x);
+      double m1[3], m2[3], p1[3], p2[3], x[3];
+      this->Moved.Get3(mesh.Conn[k], m1);
+      this->Moved.Get3(mesh.Conn[k + 1], m2);
+      const double a1[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
+      const double a2[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
+      Cross(a1, a2, x);
       moved[0] += x[0];
       moved[1] += x[1];
       moved[2] += x[2];
-      double p1[3], p2[3];
       this->C.Points->Get3(mesh.Conn[k], p1);
       this->C.Points->Get3(mesh.Conn[k + 1], p2);
       const double c1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
@@ -623,8 +674,60 @@ struct MeshNormalWorker
         sum[1] += x[1];
         sum[2] += x[2];
       }
-      double* nn = &this->C.NewNormal[3 * i];
-      std::copy(sum, sum + 3, nn);
+      WriteNormalAndTangent(this->C, i, sum);
+    }
+  }
+};
+
+// Seam candidates: a texture seam cuts the mesh, so its duplicated points lie on the
+// mesh's boundary. A point is a candidate unless every edge around it is shared by exactly
+// two of its polygons (or it has no polygon at all).
+struct BoundaryWorker
+{
+  const PolyLinks& Mesh;
+  unsigned char* Flags;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    constexpr int maxEdges = 64;
+    vtkIdType neighbours[maxEdges];
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      int count = 0;
+      bool boundary = this->Mesh.LinkOffsets[i] == this->Mesh.LinkOffsets[i + 1];
+      for (vtkIdType l = this->Mesh.LinkOffsets[i]; !boundary && l < this->Mesh.LinkOffsets[i + 1];
+           ++l)
+      {
+        const vtkIdType cell = this->Mesh.Links[l];
+        const vtkIdType b = this->Mesh.Offsets[cell], e = this->Mesh.Offsets[cell + 1];
+        const vtkIdType size = e - b;
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          if (this->Mesh.Conn[k] != i)
+          {
+            continue;
+          }
+          if (count + 2 > maxEdges)
+          {
+            boundary = true;
+            break;
+          }
+          neighbours[count++] = this->Mesh.Conn[b + (k - b + 1) % size];
+          neighbours[count++] = this->Mesh.Conn[b + (k - b + size - 1) % size];
+          break;
+        }
+      }
+      if (!boundary)
+      {
+        // Interior: every neighbour across an edge appears exactly twice.
+        std::sort(neighbours, neighbours + count);
+        for (int a = 0; a < count && !boundary; a += 2)
+        {
+          boundary = a + 1 >= count || neighbours[a] != neighbours[a + 1] ||
+            (a + 2 < count && neighbours[a + 2] == neighbours[a]);
+        }
+      }
+      this->Flags[i] = boundary ? 1 : 0;
     }
   }
 };
@@ -766,7 +869,6 @@ int vtkDisplacementMapFilter::RequestData(
                                                      "float or double (vtkImageCast).");
     return 0;
   }
-  const bool analytic = this->NormalMode == Approximate || this->NormalMode == Exact;
   vtkDataArray* dPdu = input->GetPointData()->GetArray("dPdu");
   vtkDataArray* dPdv = input->GetPointData()->GetArray("dPdv");
   const bool haveDerivs =
@@ -794,19 +896,36 @@ int vtkDisplacementMapFilter::RequestData(
   const int nc = scalars->GetNumberOfComponents();
   void* raw = scalars->GetVoidPointer(0);
 
-  Context ctx;
-  ctx.NumPts = numPts;
-  ArrayReader pts(input->GetPoints()->GetData());
-  ArrayReader nrm(normals);
-  ArrayReader tc(tcoords);
-  std::unique_ptr<ArrayReader> du, dv;
-  if (haveDerivs)
+  // VTK 9.1's tangents attribute takes 3 components only, so DESIGN.md's 4-component
+  // frame is found by its name "Tangents".
+  vtkDataArray* inTangents = input->GetPointData()->GetTangents();
+  if (!inTangents)
   {
-    du.reset(new ArrayReader(dPdu));
-    dv.reset(new ArrayReader(dPdv));
-    ctx.DPdu = du.get();
-    ctx.DPdv = dv.get();
+    inTangents = input->GetPointData()->GetArray("Tangents");
   }
+  const bool tangents = this->NormalMode != None && inTangents &&
+    (inTangents->GetNumberOfComponents() == 3 || inTangents->GetNumberOfComponents() == 4);
+
+  // Outputs, in the input's precision; nothing is allocated that is not asked for.
+  vtkPoints* inPoints = input->GetPoints();
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(inPoints->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE);
+  outPoints->SetNumberOfPoints(numPts);
+  vtkSmartPointer<vtkDataArray> outNormals, outTangents;
+  if (this->NormalMode != None)
+  {
+    outNormals = NewRealArray(normals, 3, numPts);
+  }
+  if (tangents)
+  {
+    outTangents = NewRealArray(inTangents, inTangents->GetNumberOfComponents(), numPts);
+  }
+
+  ArrayReader pts(inPoints->GetData()), nrm(normals), tc(tcoords);
+  std::unique_ptr<ArrayReader> du, dv, tan;
+  ArrayWriter wPoints(outPoints->GetData());
+  std::unique_ptr<ArrayWriter> wNormals, wTangents;
+  Context ctx;
   ctx.Points = &pts;
   ctx.Normals = &nrm;
   ctx.TCoords = &tc;
@@ -815,24 +934,40 @@ int vtkDisplacementMapFilter::RequestData(
   ctx.NormalMode = this->NormalMode;
   ctx.Scale = this->Scale;
   ctx.Midlevel = this->Midlevel;
-  ctx.Offset.resize(3 * numPts);
-  if (this->NormalMode != None)
+  ctx.OutPoints = &wPoints;
+  if (haveDerivs)
   {
-    ctx.NewNormal.resize(3 * numPts);
-    ctx.Unchanged.assign(numPts, 0);
+    du.reset(new ArrayReader(dPdu));
+    dv.reset(new ArrayReader(dPdv));
+    ctx.DPdu = du.get();
+    ctx.DPdv = dv.get();
   }
-  if (analytic && haveDerivs)
+  if (outNormals)
   {
-    ctx.NewDPds.resize(3 * numPts);
-    ctx.NewDPdt.resize(3 * numPts);
+    wNormals.reset(new ArrayWriter(outNormals));
+    ctx.OutNormals = wNormals.get();
+  }
+  if (tangents)
+  {
+    tan.reset(new ArrayReader(inTangents));
+    wTangents.reset(new ArrayWriter(outTangents));
+    ctx.Tangents = tan.get();
+    ctx.OutTangents = wTangents.get();
   }
   PolyLinks mesh;
-  if (needLinks)
+  if (needLinks || this->MergeSeams)
   {
     mesh.Build(input->GetPolys(), numPts);
     ctx.Polys = &mesh;
   }
+  std::unique_ptr<double[]> distance;
+  if (this->MergeSeams)
+  {
+    distance.reset(new double[numPts]);
+    ctx.Distance = distance.get();
+  }
 
+  // Pass 1: points, and the normals of the analytic modes.
   vtkIdType nonFinite = 0;
   auto run = [&](auto* data)
   {
@@ -867,34 +1002,58 @@ int vtkDisplacementMapFilter::RequestData(
                     << this->Midlevel << ").");
   }
 
-  // Coincident points (seams, poles) share one displacement and, with the same input
-  // normal, one output normal: groups of ids in increasing order, so sums have one order.
-  std::vector<std::pair<vtkIdType, vtkIdType>> groups; // (representative, member)
+  // Coincident points (seams, poles) as groups of (representative, member) in increasing
+  // order, so that every sum over a group has one order whatever the thread count.
+  std::vector<std::pair<vtkIdType, vtkIdType>> groups;
   if (this->MergeSeams)
   {
-    vtkNew<vtkStaticPointLocator> locator;
-    locator->SetDataSet(input);
-    locator->BuildLocator();
-    std::vector<vtkIdType> map(numPts);
-    const double tol = this->SeamTolerance * input->GetLength();
-    locator->MergePoints(tol, map.data());
-    std::vector<unsigned char> isRep(numPts, 0);
+    std::vector<unsigned char> flags(numPts);
+    BoundaryWorker boundary{ mesh, flags.data() };
+    vtkSMPTools::For(0, numPts, boundary);
+    std::vector<vtkIdType> candidates;
     for (vtkIdType i = 0; i < numPts; ++i)
     {
-      if (map[i] != i)
+      if (flags[i])
       {
-        groups.emplace_back(map[i], i);
-        isRep[map[i]] = 1;
+        candidates.push_back(i);
       }
     }
-    for (vtkIdType i = 0; i < numPts; ++i)
+    if (candidates.size() > 1)
     {
-      if (isRep[i])
+      vtkNew<vtkPoints> cp;
+      cp->SetDataTypeToDouble();
+      cp->SetNumberOfPoints(static_cast<vtkIdType>(candidates.size()));
+      for (size_t k = 0; k < candidates.size(); ++k)
       {
-        groups.emplace_back(i, i);
+        double p[3];
+        pts.Get3(candidates[k], p);
+        cp->SetPoint(static_cast<vtkIdType>(k), p);
       }
+      vtkNew<vtkPolyData> cloud;
+      cloud->SetPoints(cp);
+      vtkNew<vtkStaticPointLocator> locator;
+      locator->SetDataSet(cloud);
+      locator->BuildLocator();
+      std::vector<vtkIdType> map(candidates.size());
+      locator->MergePoints(this->SeamTolerance * input->GetLength(), map.data());
+      std::vector<unsigned char> isRep(candidates.size(), 0);
+      for (size_t k = 0; k < candidates.size(); ++k)
+      {
+        if (map[k] != static_cast<vtkIdType>(k))
+        {
+          groups.emplace_back(candidates[map[k]], candidates[k]);
+          isRep[map[k]] = 1;
+        }
+      }
+      for (size_t k = 0; k < candidates.size(); ++k)
+      {
+        if (isRep[k])
+        {
+          groups.emplace_back(candidates[k], candidates[k]);
+        }
+      }
+      std::sort(groups.begin(), groups.end());
     }
-    std::sort(groups.begin(), groups.end());
   }
   auto forEachGroup = [&](auto&& body)
   {
@@ -909,224 +1068,85 @@ int vtkDisplacementMapFilter::RequestData(
       b = e;
     }
   };
+  // One displacement per group: the mean of the members' own.
   forEachGroup(
     [&](size_t b, size_t e)
     {
       double mean[3] = { 0.0, 0.0, 0.0 };
       for (size_t g = b; g < e; ++g)
       {
+        double n[3];
+        InputNormal(ctx, groups[g].second, n);
         for (int k = 0; k < 3; ++k)
         {
-          mean[k] += ctx.Offset[3 * groups[g].second + k];
+          mean[k] += distance[groups[g].second] * n[k];
         }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        mean[k] /= static_cast<double>(e - b);
       }
       for (size_t g = b; g < e; ++g)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          ctx.Offset[3 * groups[g].second + k] = mean[k] / static_cast<double>(e - b);
-        }
+        WritePoint(ctx, groups[g].second, mean);
       }
     });
 
-  // The output points keep the input's precision.
-  vtkPoints* inPoints = input->GetPoints();
-  vtkNew<vtkPoints> outPoints;
-  outPoints->SetDataType(inPoints->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE);
-  outPoints->SetNumberOfPoints(numPts);
-  {
-    ArrayWriter w(outPoints->GetData());
-    vtkSMPTools::For(0, numPts,
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType i = b; i < e; ++i)
-        {
-          double p[3];
-          pts.Get3(i, p);
-          for (int k = 0; k < 3; ++k)
-          {
-            // Adding +0 would turn -0 into +0: no displacement leaves the bits alone.
-            const double o = ctx.Offset[3 * i + k];
-            w.Set(i, k, o == 0.0 ? p[k] : Finite(p[k] + o));
-          }
-        }
-      });
-  }
-
   if (this->NormalMode == Mesh)
   {
-    std::vector<double> moved(3 * numPts);
-    vtkSMPTools::For(0, numPts,
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType i = b; i < e; ++i)
-        {
-          double p[3];
-          pts.Get3(i, p);
-          for (int k = 0; k < 3; ++k)
-          {
-            moved[3 * i + k] = Finite(p[k] + ctx.Offset[3 * i + k]);
-          }
-        }
-      });
+    ArrayReader moved(outPoints->GetData());
     MeshNormalWorker worker{ ctx, moved };
     vtkSMPTools::For(0, numPts, worker);
+  }
+
+  // One normal per group member: the sum of the members' that share its input normal.
+  if (this->NormalMode != None)
+  {
+    ArrayReader computed(outNormals);
+    forEachGroup(
+      [&](size_t b, size_t e)
+      {
+        std::vector<double> sums(3 * (e - b), 0.0);
+        for (size_t g = b; g < e; ++g)
+        {
+          double ng[3];
+          InputNormal(ctx, groups[g].second, ng);
+          for (size_t h = b; h < e; ++h)
+          {
+            double nh[3], x[3];
+            InputNormal(ctx, groups[h].second, nh);
+            if (Dot(ng, nh) > 1.0 - 1e-9)
+            {
+              computed.Get3(groups[h].second, x);
+              for (int k = 0; k < 3; ++k)
+              {
+                sums[3 * (g - b) + k] += x[k];
+              }
+            }
+          }
+        }
+        for (size_t g = b; g < e; ++g)
+        {
+          WriteNormalAndTangent(ctx, groups[g].second, &sums[3 * (g - b)]);
+        }
+      });
   }
 
   output->CopyStructure(input);
   output->SetPoints(outPoints);
   output->GetPointData()->PassData(input->GetPointData());
   output->GetCellData()->PassData(input->GetCellData());
-  if (this->NormalMode == None)
+  if (outNormals)
   {
-    return 1;
+    output->GetPointData()->SetNormals(outNormals);
   }
-
-  // Seam members with the same input normal share the (summed) output normal.
-  forEachGroup(
-    [&](size_t b, size_t e)
-    {
-      std::vector<double> sums(3 * (e - b), 0.0);
-      for (size_t g = b; g < e; ++g)
-      {
-        double ng[3];
-        nrm.Get3(groups[g].second, ng);
-        Normalize(ng);
-        bool allUnchanged = true;
-        for (size_t h = b; h < e; ++h)
-        {
-          double nh[3];
-          nrm.Get3(groups[h].second, nh);
-          Normalize(nh);
-          if (Dot(ng, nh) > 1.0 - 1e-9)
-          {
-            const double* x = &ctx.NewNormal[3 * groups[h].second];
-            double y[3] = { x[0], x[1], x[2] };
-            if (this->NormalMode != Mesh)
-            {
-              Normalize(y);
-            }
-            for (int k = 0; k < 3; ++k)
-            {
-              sums[3 * (g - b) + k] += y[k];
-            }
-            // Kept normals that differ in their last bits are summed like the others.
-            allUnchanged = allUnchanged && ctx.Unchanged[groups[h].second] &&
-              std::memcmp(x, &ctx.NewNormal[3 * groups[g].second], 3 * sizeof(double)) == 0;
-          }
-        }
-        if (!allUnchanged)
-        {
-          ctx.Unchanged[groups[g].second] = 0;
-        }
-      }
-      for (size_t g = b; g < e; ++g)
-      {
-        const vtkIdType i = groups[g].second;
-        if (!ctx.Unchanged[i])
-        {
-          std::copy(&sums[3 * (g - b)], &sums[3 * (g - b)] + 3, &ctx.NewNormal[3 * i]);
-        }
-      }
-    });
-
-  auto outNormals = NewRealArray(normals, 3, numPts);
-  // VTK 9.1's tangents attribute takes 3 components only, so DESIGN.md's 4-component
-  // frame is found by its name "Tangents".
-  vtkDataArray* inTangents = input->GetPointData()->GetTangents();
-  if (!inTangents)
-  {
-    inTangents = input->GetPointData()->GetArray("Tangents");
-  }
-  const bool tangents = inTangents &&
-    (inTangents->GetNumberOfComponents() == 3 || inTangents->GetNumberOfComponents() == 4);
-  vtkSmartPointer<vtkDataArray> outTangents;
-  std::unique_ptr<ArrayReader> tanReader;
-  if (tangents)
-  {
-    outTangents = NewRealArray(inTangents, inTangents->GetNumberOfComponents(), numPts);
-    tanReader.reset(new ArrayReader(inTangents));
-  }
-  {
-    ArrayWriter wn(outNormals);
-    std::unique_ptr<ArrayWriter> wt(tangents ? new ArrayWriter(outTangents) : nullptr);
-    vtkSMPTools::For(0, numPts,
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType i = b; i < e; ++i)
-        {
-          double n[3] = { ctx.NewNormal[3 * i], ctx.NewNormal[3 * i + 1],
-            ctx.NewNormal[3 * i + 2] };
-          const bool keep = ctx.Unchanged[i] != 0;
-          if (!keep && (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2])))
-          {
-            nrm.Get3(i, n);
-            if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
-            {
-              n[0] = n[1] = 0.0;
-              n[2] = 1.0;
-            }
-          }
-          for (int k = 0; k < 3; ++k)
-          {
-            wn.Set(i, k, n[k]);
-          }
-          if (!wt)
-          {
-            continue;
-          }
-          const int tnc = wt->NC;
-          double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
-          for (int k = 0; k < tnc; ++k)
-          {
-            tg[k] = tanReader->Get(i, k);
-          }
-          if (!keep)
-          {
-            RemoveNormalPart(n, tg);
-            if (Normalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
-            {
-              const double zero[3] = { 0.0, 0.0, 0.0 };
-              const double w = tg[3];
-              MakeTangentFrame(n, zero, zero, tg);
-              tg[3] = w;
-            }
-          }
-          for (int k = 0; k < tnc; ++k)
-          {
-            wt->Set(i, k, tg[k]);
-          }
-        }
-      });
-  }
-  output->GetPointData()->SetNormals(outNormals);
-  if (tangents && outTangents->GetNumberOfComponents() == 3)
+  if (outTangents && outTangents->GetNumberOfComponents() == 3)
   {
     output->GetPointData()->SetTangents(outTangents);
   }
-  else if (tangents)
+  else if (outTangents)
   {
     output->GetPointData()->AddArray(outTangents);
-  }
-  if (!ctx.NewDPds.empty())
-  {
-    auto outDu = NewRealArray(dPdu, 3, numPts);
-    auto outDv = NewRealArray(dPdv, 3, numPts);
-    ArrayWriter wu(outDu), wv(outDv);
-    vtkSMPTools::For(0, numPts,
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType i = b; i < e; ++i)
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            wu.Set(i, k, ctx.NewDPds[3 * i + k]);
-            wv.Set(i, k, ctx.NewDPdt[3 * i + k]);
-          }
-        }
-      });
-    output->GetPointData()->AddArray(outDu);
-    output->GetPointData()->AddArray(outDv);
   }
   return 1;
 }

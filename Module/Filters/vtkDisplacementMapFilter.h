@@ -53,8 +53,8 @@
  * (vtkParametricSurfaceSource's GenerateDerivatives), they are used as P_s and P_t, i.e.
  * as derivatives with respect to the texture coordinates. Otherwise P_s and P_t are fitted
  * per point by least squares to the position differences over the point's polygons against
- * their texture-coordinate differences. In Approximate and Exact mode the output "dPdu"
- * and "dPdv", when present, are the derivatives of the displaced surface.
+ * their texture-coordinate differences. "dPdu" and "dPdv" pass through unchanged: they
+ * describe the input surface (nobody asked for them to be recomputed).
  *
  * Tangents. When the point data has tangents (3 or 4 components, DESIGN.md's frame), the
  * output tangents are re-orthogonalised to the new normals; the handedness w is kept.
