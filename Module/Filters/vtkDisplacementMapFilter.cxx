@@ -315,15 +315,15 @@ struct Fit
   double M[3] = { 0.0, 0.0, 0.0 }; // sum ds^2, ds dt, dt^2
   double Bs[3] = { 0.0, 0.0, 0.0 }, Bt[3] = { 0.0, 0.0, 0.0 };
 
-  void Add(double ds, double dt, const double df[3])
+  void Add(double w, double ds, double dt, const double df[3])
   {
-    this->M[0] += ds * ds;
-    this->M[1] += ds * dt;
-    this->M[2] += dt * dt;
+    this->M[0] += w * ds * ds;
+    this->M[1] += w * ds * dt;
+    this->M[2] += w * dt * dt;
     for (int k = 0; k < 3; ++k)
     {
-      this->Bs[k] += ds * df[k];
-      this->Bt[k] += dt * df[k];
+      this->Bs[k] += w * ds * df[k];
+      this->Bt[k] += w * dt * df[k];
     }
   }
 
@@ -460,51 +460,66 @@ inline void WriteNormalAndTangent(const Context& c, vtkIdType i, double m[3])
 }
 
 // Least-squares p_s, p_t (when wanted) and n_s, n_t (when wanted) over the point's
-// polygons. A neighbour at the same place with other texture coordinates means that
-// p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned
-// and the caller keeps the normal.
+// neighbours in its polygons. A neighbour at the same place with other texture coordinates means
+// that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
+// the caller keeps the normal.
 void FitDerivatives(const Context& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
   double Ps[3], double Pt[3], double Ns[3], double Nt[3])
 {
   const PolyLinks& mesh = *c.Polys;
+  // The neighbours over the point's polygons, sorted so that each is read once.
+  constexpr int maxNeighbours = 64;
+  vtkIdType neighbours[maxNeighbours];
+  int count = 0;
+  for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+  {
+    const vtkIdType cell = mesh.Links[l];
+    for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1] && count < maxNeighbours; ++k)
+    {
+      if (mesh.Conn[k] != i)
+      {
+        neighbours[count++] = mesh.Conn[k];
+      }
+    }
+  }
+  std::sort(neighbours, neighbours + count);
+
   double pi[3], ni[3];
   c.Points->Get3(i, pi);
   c.Normals->Get3(i, ni);
   Normalize(ni);
   Fit fp, fn;
   double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
-  for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+  for (int k = 0; k < count;)
   {
-    const vtkIdType cell = mesh.Links[l];
-    for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1]; ++k)
+    // A neighbour weighs as many times as it has polygons in common with the point.
+    const vtkIdType j = neighbours[k];
+    int w = 0;
+    for (; k < count && neighbours[k] == j; ++k)
     {
-      const vtkIdType j = mesh.Conn[k];
-      if (j == i)
-      {
-        continue;
-      }
-      const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
-      double v[3];
-      if (wantP)
-      {
-        c.Points->Get3(j, v);
-        v[0] -= pi[0];
-        v[1] -= pi[1];
-        v[2] -= pi[2];
-        fp.Add(ds, dt, v);
-        const double d2 = Dot(v, v);
-        minD2 = std::min(minD2, d2);
-        maxD2 = std::max(maxD2, d2);
-      }
-      if (wantN)
-      {
-        c.Normals->Get3(j, v);
-        Normalize(v);
-        v[0] -= ni[0];
-        v[1] -= ni[1];
-        v[2] -= ni[2];
-        fn.Add(ds, dt, v);
-      }
+      ++w;
+    }
+    const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
+    double v[3];
+    if (wantP)
+    {
+      c.Points->Get3(j, v);
+      v[0] -= pi[0];
+      v[1] -= pi[1];
+      v[2] -= pi[2];
+      fp.Add(w, ds, dt, v);
+      const double d2 = Dot(v, v);
+      minD2 = std::min(minD2, d2);
+      maxD2 = std::max(maxD2, d2);
+    }
+    if (wantN)
+    {
+      c.Normals->Get3(j, v);
+      Normalize(v);
+      v[0] -= ni[0];
+      v[1] -= ni[1];
+      v[2] -= ni[2];
+      fn.Add(w, ds, dt, v);
     }
   }
   if (wantN)
