@@ -11,6 +11,8 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
   libjpeg-turbo-progs
+  # issue 5: the displacement benchmark's time-vs-error plot
+  python3-matplotlib
 )
 
 missing=()

@@ -35,90 +35,60 @@ namespace
 {
 using namespace vtkSurfaceDetail;
 
-// Reads float, double or any other real array; float and double (what every source makes)
-// take the fast path, the rest goes through the virtual GetComponent.
+// Raw, typed access to a float or double array with the standard memory layout
+// (RequestData converts anything else first): no virtual call and no type test per value.
+template <typename R>
 struct ArrayReader
 {
-  const float* F = nullptr;
-  const double* D = nullptr;
-  vtkDataArray* Generic = nullptr;
-  int NC = 0;
+  const R* P;
+  int NC;
 
   explicit ArrayReader(vtkDataArray* a)
-    : Generic(a)
+    : P(static_cast<const R*>(a->GetVoidPointer(0)))
     , NC(a->GetNumberOfComponents())
   {
-    if (a->GetDataType() == VTK_FLOAT && a->HasStandardMemoryLayout())
-    {
-      this->F = static_cast<const float*>(a->GetVoidPointer(0));
-    }
-    else if (a->GetDataType() == VTK_DOUBLE && a->HasStandardMemoryLayout())
-    {
-      this->D = static_cast<const double*>(a->GetVoidPointer(0));
-    }
   }
 
-  double Get(vtkIdType i, int c) const
-  {
-    if (this->F)
-    {
-      return this->F[i * this->NC + c];
-    }
-    if (this->D)
-    {
-      return this->D[i * this->NC + c];
-    }
-    return this->Generic->GetComponent(i, c);
-  }
+  double Get(vtkIdType i, int c) const { return this->P[i * this->NC + c]; }
 
   void Get3(vtkIdType i, double v[3]) const
   {
-    v[0] = this->Get(i, 0);
-    v[1] = this->Get(i, 1);
-    v[2] = this->Get(i, 2);
+    const R* x = this->P + i * this->NC;
+    v[0] = x[0];
+    v[1] = x[1];
+    v[2] = x[2];
   }
 };
 
-// Writes a float or double array through a raw pointer.
+template <typename R>
 struct ArrayWriter
 {
-  float* F = nullptr;
-  double* D = nullptr;
-  int NC = 0;
+  R* P;
+  int NC;
 
   explicit ArrayWriter(vtkDataArray* a)
-    : NC(a->GetNumberOfComponents())
+    : P(static_cast<R*>(a->GetVoidPointer(0)))
+    , NC(a->GetNumberOfComponents())
   {
-    if (a->GetDataType() == VTK_FLOAT)
-    {
-      this->F = static_cast<float*>(a->GetVoidPointer(0));
-    }
-    else
-    {
-      this->D = static_cast<double*>(a->GetVoidPointer(0));
-    }
   }
 
   void Set(vtkIdType i, int c, double v) const
   {
-    if (this->F)
+    if (std::is_same<R, float>::value)
     {
+      // Beyond float's range, the largest float rather than infinity.
       constexpr double big = std::numeric_limits<float>::max();
-      this->F[i * this->NC + c] = static_cast<float>(std::min(std::max(v, -big), big));
+      v = std::min(std::max(v, -big), big);
     }
-    else
-    {
-      this->D[i * this->NC + c] = v;
-    }
+    this->P[i * this->NC + c] = static_cast<R>(v);
   }
 };
 
-// A new float array when the model is float, else double: the output keeps the input's
-// precision.
-vtkSmartPointer<vtkDataArray> NewRealArray(vtkDataArray* like, int nc, vtkIdType n)
+template <typename R>
+vtkSmartPointer<vtkDataArray> NewRealArray(const char* name, int nc, vtkIdType n)
 {
   vtkSmartPointer<vtkDataArray> a;
-  if (like && like->GetDataType() == VTK_FLOAT)
+  if (std::is_same<R, float>::value)
   {
     a = vtkSmartPointer<vtkFloatArray>::New();
   }
@@ -128,11 +98,22 @@ vtkSmartPointer<vtkDataArray> NewRealArray(vtkDataArray* like, int nc, vtkIdType
   }
   a->SetNumberOfComponents(nc);
   a->SetNumberOfTuples(n);
-  if (like)
-  {
-    a->SetName(like->GetName());
-  }
+  a->SetName(name);
   return a;
+}
+
+// @a a itself when it is already a plain array of R, else a copy converted to R.
+template <typename R>
+vtkSmartPointer<vtkDataArray> AsReal(vtkDataArray* a)
+{
+  const int type = std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE;
+  if (!a || (a->GetDataType() == type && a->HasStandardMemoryLayout()))
+  {
+    return a;
+  }
+  auto copy = NewRealArray<R>(a->GetName(), a->GetNumberOfComponents(), 0);
+  copy->DeepCopy(a);
+  return copy;
 }
 
 // The height map as a texture: texel values of one component, normalised, non-finite
@@ -148,9 +129,33 @@ struct Texels
   {
     const double v =
       this->Norm * this->Data[(static_cast<vtkIdType>(j) * this->W + i) * this->NC + this->Comp];
+    if (std::is_integral<T>::value)
+    {
+      return v;
+    }
     return std::isfinite(v) ? v : this->Mid;
   }
 };
+
+// WrapIndex, with the common case (inside the texture) spared its integer division.
+inline int Wrapped(int i, int n, int mode)
+{
+  return static_cast<unsigned>(i) < static_cast<unsigned>(n) ? i : WrapIndex(i, n, mode);
+}
+
+// Normalize with one division: the passes normalise a few vectors per point.
+inline double FastNormalize(double v[3])
+{
+  const double len = std::sqrt(Dot(v, v));
+  if (len > 0.0 && std::isfinite(len))
+  {
+    const double inv = 1.0 / len;
+    v[0] *= inv;
+    v[1] *= inv;
+    v[2] *= inv;
+  }
+  return len;
+}
 
 // Keeps huge coordinates from overflowing the texel index; 2 is a period of every wrap.
 inline double TameCoordinate(double s, int wrap)
@@ -189,7 +194,7 @@ void SampleHeight(
     const double x = std::floor(s * W), y = std::floor(t * H);
     const int i = std::isfinite(x) ? static_cast<int>(x) : 0;
     const int j = std::isfinite(y) ? static_cast<int>(y) : 0;
-    h = tex.At(WrapIndex(i, W, wrap), WrapIndex(j, H, wrap));
+    h = tex.At(Wrapped(i, W, wrap), Wrapped(j, H, wrap));
     hs = 0.0;
     ht = 0.0;
     return;
@@ -200,8 +205,8 @@ void SampleHeight(
   LinearTexels(t, H, j0, fy);
   if (interp == vtkDisplacementMapFilter::Linear)
   {
-    const int ia = WrapIndex(i0, W, wrap), ib = WrapIndex(i0 + 1, W, wrap);
-    const int ja = WrapIndex(j0, H, wrap), jb = WrapIndex(j0 + 1, H, wrap);
+    const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
+    const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
     const double h00 = tex.At(ia, ja), h10 = tex.At(ib, ja);
     const double h01 = tex.At(ia, jb), h11 = tex.At(ib, jb);
     const double b0 = (1.0 - fx) * h00 + fx * h10;
@@ -217,12 +222,12 @@ void SampleHeight(
   int ii[4];
   for (int k = 0; k < 4; ++k)
   {
-    ii[k] = WrapIndex(i0 - 1 + k, W, wrap);
+    ii[k] = Wrapped(i0 - 1 + k, W, wrap);
   }
   h = hs = ht = 0.0;
   for (int l = 0; l < 4; ++l)
   {
-    const int j = WrapIndex(j0 - 1 + l, H, wrap);
+    const int j = Wrapped(j0 - 1 + l, H, wrap);
     double row = 0.0, drow = 0.0;
     for (int k = 0; k < 4; ++k)
     {
@@ -363,9 +368,10 @@ inline void ScaleToUnitMax(double v[3])
   const double mx = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
   if (mx > 0.0)
   {
-    v[0] /= mx;
-    v[1] /= mx;
-    v[2] /= mx;
+    const double inv = 1.0 / mx;
+    v[0] *= inv;
+    v[1] *= inv;
+    v[2] *= inv;
   }
 }
 
@@ -378,37 +384,40 @@ inline void RemoveNormalPart(const double n[3], double v[3])
 }
 
 // Everything RequestData hands to the threaded passes.
+template <typename R>
 struct Context
 {
-  ArrayReader* Points = nullptr;
-  ArrayReader* Normals = nullptr;
-  ArrayReader* TCoords = nullptr;
-  ArrayReader* DPdu = nullptr;
-  ArrayReader* DPdv = nullptr;
-  ArrayReader* Tangents = nullptr;
+  ArrayReader<R>* Points = nullptr;
+  ArrayReader<R>* Normals = nullptr;
+  ArrayReader<R>* TCoords = nullptr;
+  ArrayReader<R>* DPdu = nullptr;
+  ArrayReader<R>* DPdv = nullptr;
+  ArrayReader<R>* Tangents = nullptr;
   const PolyLinks* Polys = nullptr;
   int Wrap = Repeat;
   int Interpolation = vtkDisplacementMapFilter::Linear;
   int NormalMode = vtkDisplacementMapFilter::Exact;
   double Scale = 1.0;
   double Midlevel = 0.0;
-  ArrayWriter* OutPoints = nullptr;
-  ArrayWriter* OutNormals = nullptr;  // null in None mode
-  ArrayWriter* OutTangents = nullptr; // null without input tangents or in None mode
-  double* Distance = nullptr;         // d per point, kept for the seam pass
+  ArrayWriter<R>* OutPoints = nullptr;
+  ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
+  ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
+  double* Distance = nullptr;            // d per point, kept for the seam pass
 };
 
 // The unit input normal, or zero when it has no direction.
-inline void InputNormal(const Context& c, vtkIdType i, double n[3])
+template <typename R>
+inline void InputNormal(const Context<R>& c, vtkIdType i, double n[3])
 {
   c.Normals->Get3(i, n);
-  if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
+  if (FastNormalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
   {
     n[0] = n[1] = n[2] = 0.0;
   }
 }
 
-inline void WritePoint(const Context& c, vtkIdType i, const double offset[3])
+template <typename R>
+inline void WritePoint(const Context<R>& c, vtkIdType i, const double offset[3])
 {
   double p[3];
   c.Points->Get3(i, p);
@@ -421,9 +430,10 @@ inline void WritePoint(const Context& c, vtkIdType i, const double offset[3])
 
 // Normalises @a m and writes it (the input normal where @a m has no direction), then the
 // tangent re-orthogonalised to it with its handedness kept.
-inline void WriteNormalAndTangent(const Context& c, vtkIdType i, double m[3])
+template <typename R>
+inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
 {
-  if (Normalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
+  if (FastNormalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
   {
     InputNormal(c, i, m);
     if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0)
@@ -446,7 +456,7 @@ inline void WriteNormalAndTangent(const Context& c, vtkIdType i, double m[3])
     tg[k] = c.Tangents->Get(i, k);
   }
   RemoveNormalPart(m, tg);
-  if (Normalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
+  if (FastNormalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
   {
     const double zero[3] = { 0.0, 0.0, 0.0 };
     const double w = tg[3];
@@ -463,7 +473,8 @@ inline void WriteNormalAndTangent(const Context& c, vtkIdType i, double m[3])
 // neighbours in its polygons. A neighbour at the same place with other texture coordinates means
 // that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
 // the caller keeps the normal.
-void FitDerivatives(const Context& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
+template <typename R>
+void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
   double Ps[3], double Pt[3], double Ns[3], double Nt[3])
 {
   const PolyLinks& mesh = *c.Polys;
@@ -487,7 +498,7 @@ void FitDerivatives(const Context& c, vtkIdType i, double s, double t, bool want
   double pi[3], ni[3];
   c.Points->Get3(i, pi);
   c.Normals->Get3(i, ni);
-  Normalize(ni);
+  FastNormalize(ni);
   Fit fp, fn;
   double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
   for (int k = 0; k < count;)
@@ -515,7 +526,7 @@ void FitDerivatives(const Context& c, vtkIdType i, double s, double t, bool want
     if (wantN)
     {
       c.Normals->Get3(j, v);
-      Normalize(v);
+      FastNormalize(v);
       v[0] -= ni[0];
       v[1] -= ni[1];
       v[2] -= ni[2];
@@ -533,15 +544,15 @@ void FitDerivatives(const Context& c, vtkIdType i, double s, double t, bool want
 }
 
 // Pass 1: displacement, and the analytic normals (Approximate, Exact).
-template <typename T>
+template <typename T, typename R>
 struct DisplaceWorker
 {
-  const Context& C;
+  const Context<R>& C;
   const Texels<T>& Tex;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    const Context& c = this->C;
+    const Context<R>& c = this->C;
     const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
@@ -603,10 +614,11 @@ struct DisplaceWorker
         double nxPs[3], nxPt[3];
         Cross(n, Ps, nxPs);
         Cross(n, Pt, nxPt);
-        const double mx = std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
+        const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
+        const double a = area * inv, bs = ds * inv, bt = dt * inv;
         for (int k = 0; k < 3; ++k)
         {
-          m[k] = (area / mx) * n[k] + (ds / mx) * nxPt[k] - (dt / mx) * nxPs[k];
+          m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
         }
       }
       const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
@@ -627,10 +639,11 @@ struct DisplaceWorker
 
 // Mesh normals: area-weighted sum of the displaced polygons around each point, each
 // polygon oriented as its points' input normals.
+template <typename R>
 struct MeshNormalWorker
 {
-  const Context& C;
-  const ArrayReader& Moved;
+  const Context<R>& C;
+  const ArrayReader<R>& Moved;
 
   void PolygonNormal(vtkIdType cell, double out[3]) const
   {
@@ -921,249 +934,285 @@ int vtkDisplacementMapFilter::RequestData(
   const bool tangents = this->NormalMode != None && inTangents &&
     (inTangents->GetNumberOfComponents() == 3 || inTangents->GetNumberOfComponents() == 4);
 
-  // Outputs, in the input's precision; nothing is allocated that is not asked for.
+  // One precision for all: float when every array used is float (what VTK's sources
+  // make), else double; the outputs have it too. Arrays of another type or layout are
+  // converted first, so that the passes read raw memory.
   vtkPoints* inPoints = input->GetPoints();
-  vtkNew<vtkPoints> outPoints;
-  outPoints->SetDataType(inPoints->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE);
-  outPoints->SetNumberOfPoints(numPts);
-  vtkSmartPointer<vtkDataArray> outNormals, outTangents;
-  if (this->NormalMode != None)
+  std::vector<vtkDataArray*> used = { inPoints->GetData(), normals, tcoords };
+  if (haveDerivs && (this->NormalMode == Approximate || this->NormalMode == Exact))
   {
-    outNormals = NewRealArray(normals, 3, numPts);
+    used.push_back(dPdu);
+    used.push_back(dPdv);
   }
   if (tangents)
   {
-    outTangents = NewRealArray(inTangents, inTangents->GetNumberOfComponents(), numPts);
+    used.push_back(inTangents);
   }
+  const bool allFloat = std::all_of(used.begin(), used.end(),
+    [](vtkDataArray* a) { return a->GetDataType() == VTK_FLOAT && a->HasStandardMemoryLayout(); });
+  auto execute = [&](auto precision) -> int
+  {
+    using R = decltype(precision);
+    auto points = AsReal<R>(inPoints->GetData());
+    auto normalsR = AsReal<R>(normals), tcoordsR = AsReal<R>(tcoords);
+    auto dPduR = AsReal<R>(haveDerivs ? dPdu : nullptr);
+    auto dPdvR = AsReal<R>(haveDerivs ? dPdv : nullptr);
+    auto tangentsR = AsReal<R>(tangents ? inTangents : nullptr);
 
-  ArrayReader pts(inPoints->GetData()), nrm(normals), tc(tcoords);
-  std::unique_ptr<ArrayReader> du, dv, tan;
-  ArrayWriter wPoints(outPoints->GetData());
-  std::unique_ptr<ArrayWriter> wNormals, wTangents;
-  Context ctx;
-  ctx.Points = &pts;
-  ctx.Normals = &nrm;
-  ctx.TCoords = &tc;
-  ctx.Wrap = this->Wrap;
-  ctx.Interpolation = this->Interpolation;
-  ctx.NormalMode = this->NormalMode;
-  ctx.Scale = this->Scale;
-  ctx.Midlevel = this->Midlevel;
-  ctx.OutPoints = &wPoints;
-  if (haveDerivs)
-  {
-    du.reset(new ArrayReader(dPdu));
-    dv.reset(new ArrayReader(dPdv));
-    ctx.DPdu = du.get();
-    ctx.DPdv = dv.get();
-  }
-  if (outNormals)
-  {
-    wNormals.reset(new ArrayWriter(outNormals));
-    ctx.OutNormals = wNormals.get();
-  }
-  if (tangents)
-  {
-    tan.reset(new ArrayReader(inTangents));
-    wTangents.reset(new ArrayWriter(outTangents));
-    ctx.Tangents = tan.get();
-    ctx.OutTangents = wTangents.get();
-  }
-  PolyLinks mesh;
-  if (needLinks || this->MergeSeams)
-  {
-    mesh.Build(input->GetPolys(), numPts);
-    ctx.Polys = &mesh;
-  }
-  std::unique_ptr<double[]> distance;
-  if (this->MergeSeams)
-  {
-    distance.reset(new double[numPts]);
-    ctx.Distance = distance.get();
-  }
-
-  // Pass 1: points, and the normals of the analytic modes.
-  vtkIdType nonFinite = 0;
-  auto run = [&](auto* data)
-  {
-    using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
-    const Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel };
-    if (type == VTK_FLOAT || type == VTK_DOUBLE)
+    // Outputs: nothing is allocated that is not asked for.
+    vtkNew<vtkPoints> outPoints;
+    outPoints->SetDataType(std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE);
+    outPoints->SetNumberOfPoints(numPts);
+    vtkSmartPointer<vtkDataArray> outNormals, outTangents;
+    if (this->NormalMode != None)
     {
-      nonFinite = CountNonFinite(tex);
+      outNormals = NewRealArray<R>(normals->GetName(), 3, numPts);
     }
-    DisplaceWorker<T> worker{ ctx, tex };
-    vtkSMPTools::For(0, numPts, worker);
-  };
-  switch (type)
-  {
-    case VTK_UNSIGNED_CHAR:
-      run(static_cast<const unsigned char*>(raw));
-      break;
-    case VTK_UNSIGNED_SHORT:
-      run(static_cast<const unsigned short*>(raw));
-      break;
-    case VTK_FLOAT:
-      run(static_cast<const float*>(raw));
-      break;
-    default:
-      run(static_cast<const double*>(raw));
-      break;
-  }
-  if (nonFinite > 0)
-  {
-    vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
-                    << " of the height map are NaN or infinite; they are treated as Midlevel ("
-                    << this->Midlevel << ").");
-  }
-
-  // Coincident points (seams, poles) as groups of (representative, member) in increasing
-  // order, so that every sum over a group has one order whatever the thread count.
-  std::vector<std::pair<vtkIdType, vtkIdType>> groups;
-  if (this->MergeSeams)
-  {
-    std::vector<unsigned char> flags(numPts);
-    BoundaryWorker boundary{ mesh, flags.data() };
-    vtkSMPTools::For(0, numPts, boundary);
-    std::vector<vtkIdType> candidates;
-    for (vtkIdType i = 0; i < numPts; ++i)
+    if (tangents)
     {
-      if (flags[i])
-      {
-        candidates.push_back(i);
-      }
+      outTangents =
+        NewRealArray<R>(inTangents->GetName(), inTangents->GetNumberOfComponents(), numPts);
     }
-    if (candidates.size() > 1)
+
+    ArrayReader<R> pts(points), nrm(normalsR), tc(tcoordsR);
+    std::unique_ptr<ArrayReader<R>> du, dv, tan;
+    ArrayWriter<R> wPoints(outPoints->GetData());
+    std::unique_ptr<ArrayWriter<R>> wNormals, wTangents;
+    Context<R> ctx;
+    ctx.Points = &pts;
+    ctx.Normals = &nrm;
+    ctx.TCoords = &tc;
+    ctx.Wrap = this->Wrap;
+    ctx.Interpolation = this->Interpolation;
+    ctx.NormalMode = this->NormalMode;
+    ctx.Scale = this->Scale;
+    ctx.Midlevel = this->Midlevel;
+    ctx.OutPoints = &wPoints;
+    if (haveDerivs)
     {
-      vtkNew<vtkPoints> cp;
-      cp->SetDataTypeToDouble();
-      cp->SetNumberOfPoints(static_cast<vtkIdType>(candidates.size()));
-      for (size_t k = 0; k < candidates.size(); ++k)
+      du.reset(new ArrayReader<R>(dPduR));
+      dv.reset(new ArrayReader<R>(dPdvR));
+      ctx.DPdu = du.get();
+      ctx.DPdv = dv.get();
+    }
+    if (outNormals)
+    {
+      wNormals.reset(new ArrayWriter<R>(outNormals));
+      ctx.OutNormals = wNormals.get();
+    }
+    if (tangents)
+    {
+      tan.reset(new ArrayReader<R>(tangentsR));
+      wTangents.reset(new ArrayWriter<R>(outTangents));
+      ctx.Tangents = tan.get();
+      ctx.OutTangents = wTangents.get();
+    }
+    PolyLinks mesh;
+    if (needLinks || this->MergeSeams)
+    {
+      mesh.Build(input->GetPolys(), numPts);
+      ctx.Polys = &mesh;
+    }
+    std::unique_ptr<double[]> distance;
+    if (this->MergeSeams)
+    {
+      distance.reset(new double[numPts]);
+      ctx.Distance = distance.get();
+    }
+
+    // Pass 1: points, and the normals of the analytic modes.
+    vtkIdType nonFinite = 0;
+    auto run = [&](auto* data)
+    {
+      using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
+      const Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel };
+      if (type == VTK_FLOAT || type == VTK_DOUBLE)
       {
-        double p[3];
-        pts.Get3(candidates[k], p);
-        cp->SetPoint(static_cast<vtkIdType>(k), p);
-      }
-      vtkNew<vtkPolyData> cloud;
-      cloud->SetPoints(cp);
-      vtkNew<vtkStaticPointLocator> locator;
-      locator->SetDataSet(cloud);
-      locator->BuildLocator();
-      std::vector<vtkIdType> map(candidates.size());
-      locator->MergePoints(this->SeamTolerance * input->GetLength(), map.data());
-      std::vector<unsigned char> isRep(candidates.size(), 0);
-      for (size_t k = 0; k < candidates.size(); ++k)
-      {
-        if (map[k] != static_cast<vtkIdType>(k))
+        const vtkMTimeType changed = std::max(image->GetMTime(), scalars->GetMTime());
+        if (this->NonFiniteScanArray != scalars || this->NonFiniteScanTime != changed ||
+          this->NonFiniteScanComponent != this->Component)
         {
-          groups.emplace_back(candidates[map[k]], candidates[k]);
-          isRep[map[k]] = 1;
+          this->NonFiniteCount = CountNonFinite(tex);
+          this->NonFiniteScanArray = scalars;
+          this->NonFiniteScanTime = changed;
+          this->NonFiniteScanComponent = this->Component;
+        }
+        nonFinite = this->NonFiniteCount;
+      }
+      DisplaceWorker<T, R> worker{ ctx, tex };
+      vtkSMPTools::For(0, numPts, worker);
+    };
+    switch (type)
+    {
+      case VTK_UNSIGNED_CHAR:
+        run(static_cast<const unsigned char*>(raw));
+        break;
+      case VTK_UNSIGNED_SHORT:
+        run(static_cast<const unsigned short*>(raw));
+        break;
+      case VTK_FLOAT:
+        run(static_cast<const float*>(raw));
+        break;
+      default:
+        run(static_cast<const double*>(raw));
+        break;
+    }
+    if (nonFinite > 0)
+    {
+      vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
+                      << " of the height map are NaN or infinite; they are treated as Midlevel ("
+                      << this->Midlevel << ").");
+    }
+
+    // Coincident points (seams, poles) as groups of (representative, member) in increasing
+    // order, so that every sum over a group has one order whatever the thread count.
+    std::vector<std::pair<vtkIdType, vtkIdType>> groups;
+    if (this->MergeSeams)
+    {
+      std::vector<unsigned char> flags(numPts);
+      BoundaryWorker boundary{ mesh, flags.data() };
+      vtkSMPTools::For(0, numPts, boundary);
+      std::vector<vtkIdType> candidates;
+      for (vtkIdType i = 0; i < numPts; ++i)
+      {
+        if (flags[i])
+        {
+          candidates.push_back(i);
         }
       }
-      for (size_t k = 0; k < candidates.size(); ++k)
+      if (candidates.size() > 1)
       {
-        if (isRep[k])
+        vtkNew<vtkPoints> cp;
+        cp->SetDataTypeToDouble();
+        cp->SetNumberOfPoints(static_cast<vtkIdType>(candidates.size()));
+        for (size_t k = 0; k < candidates.size(); ++k)
         {
-          groups.emplace_back(candidates[k], candidates[k]);
+          double p[3];
+          pts.Get3(candidates[k], p);
+          cp->SetPoint(static_cast<vtkIdType>(k), p);
         }
-      }
-      std::sort(groups.begin(), groups.end());
-    }
-  }
-  auto forEachGroup = [&](auto&& body)
-  {
-    for (size_t b = 0; b < groups.size();)
-    {
-      size_t e = b;
-      while (e < groups.size() && groups[e].first == groups[b].first)
-      {
-        ++e;
-      }
-      body(b, e);
-      b = e;
-    }
-  };
-  // One displacement per group: the mean of the members' own.
-  forEachGroup(
-    [&](size_t b, size_t e)
-    {
-      double mean[3] = { 0.0, 0.0, 0.0 };
-      for (size_t g = b; g < e; ++g)
-      {
-        double n[3];
-        InputNormal(ctx, groups[g].second, n);
-        for (int k = 0; k < 3; ++k)
+        vtkNew<vtkPolyData> cloud;
+        cloud->SetPoints(cp);
+        vtkNew<vtkStaticPointLocator> locator;
+        locator->SetDataSet(cloud);
+        locator->BuildLocator();
+        std::vector<vtkIdType> map(candidates.size());
+        locator->MergePoints(this->SeamTolerance * input->GetLength(), map.data());
+        std::vector<unsigned char> isRep(candidates.size(), 0);
+        for (size_t k = 0; k < candidates.size(); ++k)
         {
-          mean[k] += distance[groups[g].second] * n[k];
+          if (map[k] != static_cast<vtkIdType>(k))
+          {
+            groups.emplace_back(candidates[map[k]], candidates[k]);
+            isRep[map[k]] = 1;
+          }
         }
+        for (size_t k = 0; k < candidates.size(); ++k)
+        {
+          if (isRep[k])
+          {
+            groups.emplace_back(candidates[k], candidates[k]);
+          }
+        }
+        std::sort(groups.begin(), groups.end());
       }
-      for (int k = 0; k < 3; ++k)
+    }
+    auto forEachGroup = [&](auto&& body)
+    {
+      for (size_t b = 0; b < groups.size();)
       {
-        mean[k] /= static_cast<double>(e - b);
+        size_t e = b;
+        while (e < groups.size() && groups[e].first == groups[b].first)
+        {
+          ++e;
+        }
+        body(b, e);
+        b = e;
       }
-      for (size_t g = b; g < e; ++g)
-      {
-        WritePoint(ctx, groups[g].second, mean);
-      }
-    });
-
-  if (this->NormalMode == Mesh)
-  {
-    ArrayReader moved(outPoints->GetData());
-    MeshNormalWorker worker{ ctx, moved };
-    vtkSMPTools::For(0, numPts, worker);
-  }
-
-  // One normal per group member: the sum of the members' that share its input normal.
-  if (this->NormalMode != None)
-  {
-    ArrayReader computed(outNormals);
+    };
+    // One displacement per group: the mean of the members' own.
     forEachGroup(
       [&](size_t b, size_t e)
       {
-        std::vector<double> sums(3 * (e - b), 0.0);
+        double mean[3] = { 0.0, 0.0, 0.0 };
         for (size_t g = b; g < e; ++g)
         {
-          double ng[3];
-          InputNormal(ctx, groups[g].second, ng);
-          for (size_t h = b; h < e; ++h)
+          double n[3];
+          InputNormal(ctx, groups[g].second, n);
+          for (int k = 0; k < 3; ++k)
           {
-            double nh[3], x[3];
-            InputNormal(ctx, groups[h].second, nh);
-            if (Dot(ng, nh) > 1.0 - 1e-9)
+            mean[k] += distance[groups[g].second] * n[k];
+          }
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          mean[k] /= static_cast<double>(e - b);
+        }
+        for (size_t g = b; g < e; ++g)
+        {
+          WritePoint(ctx, groups[g].second, mean);
+        }
+      });
+
+    if (this->NormalMode == Mesh)
+    {
+      ArrayReader<R> moved(outPoints->GetData());
+      MeshNormalWorker<R> worker{ ctx, moved };
+      vtkSMPTools::For(0, numPts, worker);
+    }
+
+    // One normal per group member: the sum of the members' that share its input normal.
+    if (this->NormalMode != None)
+    {
+      ArrayReader<R> computed(outNormals);
+      forEachGroup(
+        [&](size_t b, size_t e)
+        {
+          std::vector<double> sums(3 * (e - b), 0.0);
+          for (size_t g = b; g < e; ++g)
+          {
+            double ng[3];
+            InputNormal(ctx, groups[g].second, ng);
+            for (size_t h = b; h < e; ++h)
             {
-              computed.Get3(groups[h].second, x);
-              for (int k = 0; k < 3; ++k)
+              double nh[3], x[3];
+              InputNormal(ctx, groups[h].second, nh);
+              if (Dot(ng, nh) > 1.0 - 1e-9)
               {
-                sums[3 * (g - b) + k] += x[k];
+                computed.Get3(groups[h].second, x);
+                for (int k = 0; k < 3; ++k)
+                {
+                  sums[3 * (g - b) + k] += x[k];
+                }
               }
             }
           }
-        }
-        for (size_t g = b; g < e; ++g)
-        {
-          WriteNormalAndTangent(ctx, groups[g].second, &sums[3 * (g - b)]);
-        }
-      });
-  }
+          for (size_t g = b; g < e; ++g)
+          {
+            WriteNormalAndTangent(ctx, groups[g].second, &sums[3 * (g - b)]);
+          }
+        });
+    }
 
-  output->CopyStructure(input);
-  output->SetPoints(outPoints);
-  output->GetPointData()->PassData(input->GetPointData());
-  output->GetCellData()->PassData(input->GetCellData());
-  if (outNormals)
-  {
-    output->GetPointData()->SetNormals(outNormals);
-  }
-  if (outTangents && outTangents->GetNumberOfComponents() == 3)
-  {
-    output->GetPointData()->SetTangents(outTangents);
-  }
-  else if (outTangents)
-  {
-    output->GetPointData()->AddArray(outTangents);
-  }
-  return 1;
+    output->CopyStructure(input);
+    output->SetPoints(outPoints);
+    output->GetPointData()->PassData(input->GetPointData());
+    output->GetCellData()->PassData(input->GetCellData());
+    if (outNormals)
+    {
+      output->GetPointData()->SetNormals(outNormals);
+    }
+    if (outTangents && outTangents->GetNumberOfComponents() == 3)
+    {
+      output->GetPointData()->SetTangents(outTangents);
+    }
+    else if (outTangents)
+    {
+      output->GetPointData()->AddArray(outTangents);
+    }
+    return 1;
+  };
+  return allFloat ? execute(float()) : execute(double());
 }
 
 //------------------------------------------------------------------------------
@@ -1222,4 +1271,5 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";
   os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
+  os << indent << "NonFiniteCount (last scan of the height map): " << this->NonFiniteCount << "\n";
 }

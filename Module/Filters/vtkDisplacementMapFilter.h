@@ -83,6 +83,8 @@
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkDataArray;
+
 class SURFACEDETAILFILTERS_EXPORT vtkDisplacementMapFilter : public vtkPolyDataAlgorithm
 {
 public:
@@ -211,6 +213,13 @@ protected:
   int NormalMode = Exact;
   bool MergeSeams = true;
   double SeamTolerance = 1e-6;
+
+  // The count of non-finite heights, kept while the height map's scalars do not change, so
+  // that re-executing for a new surface does not scan a large map again.
+  vtkMTimeType NonFiniteScanTime = 0;
+  vtkDataArray* NonFiniteScanArray = nullptr; // compared, never dereferenced
+  int NonFiniteScanComponent = -1;
+  vtkIdType NonFiniteCount = 0;
 
 private:
   vtkDisplacementMapFilter(const vtkDisplacementMapFilter&) = delete;

@@ -183,7 +183,7 @@ inline Surface Rectangle(double scale = 0.1)
 
 // A (U+1) x (V+1) grid of points with the seam and pole points duplicated (as a
 // parametric source makes them), two triangles per quad, tcoords (u,v), unit normals,
-// DESIGN.md tangents (4 components), optionally dPdu/dPdv.
+// DESIGN.md tangents (4 components), optionally dPdu/dPdv; all in double, or all in float.
 inline vtkSmartPointer<vtkPolyData> MakeMesh(
   const Surface& s, int U, int V, bool derivatives, bool floatPoints = false)
 {
@@ -192,7 +192,15 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(
   points->SetDataType(floatPoints ? VTK_FLOAT : VTK_DOUBLE);
   const vtkIdType n = static_cast<vtkIdType>(U + 1) * (V + 1);
   points->SetNumberOfPoints(n);
-  vtkNew<vtkDoubleArray> normals, tcoords, du, dv, tangents;
+  // Float points come with float arrays, as most VTK sources make them.
+  auto array = [&]() -> vtkSmartPointer<vtkDataArray> {
+    if (floatPoints)
+    {
+      return vtkSmartPointer<vtkFloatArray>::New();
+    }
+    return vtkSmartPointer<vtkDoubleArray>::New();
+  };
+  auto normals = array(), tcoords = array(), du = array(), dv = array(), tangents = array();
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(n);

@@ -617,6 +617,16 @@ TEST(DisplacementMapFilter, NaNHeightsAreMidlevelWithOneWarning)
   EXPECT_EQ(obs->Warnings, 1);
   EXPECT_EQ(obs->Errors, 0);
   EXPECT_NE(obs->Message.find("3 height value(s)"), std::string::npos) << obs->Message;
+  // Again (the count is cached): one more warning; and after an edit, the new count.
+  f->Modified();
+  f->Update();
+  EXPECT_EQ(obs->Warnings, 2);
+  data[20] = std::numeric_limits<float>::quiet_NaN();
+  image->Modified();
+  obs->Message.clear();
+  f->Update();
+  EXPECT_EQ(obs->Warnings, 3);
+  EXPECT_NE(obs->Message.find("4 height value(s)"), std::string::npos) << obs->Message;
   for (vtkIdType i = 0; i < 3; ++i)
   {
     double p[3];
