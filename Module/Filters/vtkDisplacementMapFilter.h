@@ -67,6 +67,10 @@
  * normal. Points that coincide but have different input normals (a hard edge) keep their
  * own normals but still move together.
  *
+ * Precision: when the points and every array the filter reads are float (as VTK's sources
+ * make them), the work reads them in place and the output points, normals and tangents are
+ * float; otherwise the inputs are converted and the outputs are double.
+ *
  * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
  * recomputes the normals from the faces).
  *
