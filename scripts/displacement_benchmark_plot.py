@@ -26,11 +26,13 @@ def load(path):
     for b in data["benchmarks"]:
         if b.get("aggregate_name") != "median":
             continue
-        m = re.match(r"BM_(\w+)/U:(\d+)/mode:(\d+)", b["run_name"])
+        m = re.match(r"BM_(\w+)/U:(\d+)/mode:(\d+)/threads:(\d+)", b["run_name"])
         if not m:
             continue
-        kind, u, mode = m.group(1), int(m.group(2)), m.group(3)
+        kind, u, mode, threads = m.group(1), int(m.group(2)), m.group(3), m.group(4)
         label = "VTK chain" if kind == "VTKChain" else MODES[mode]
+        if kind != "VTKChain" and threads == "1":
+            label += " (1 thread)"
         rows[(label, u)] = {
             "ms": b["real_time"],
             "points": int(b["points"]),
@@ -43,18 +45,19 @@ def load(path):
 def main():
     context, rows = load(sys.argv[1])
     sizes = sorted({u for (_, u) in rows})
-    labels = ["Approximate", "Exact", "Mesh", "VTK chain"]
+    labels = ["Approximate", "Exact", "Mesh", "Approximate (1 thread)", "Exact (1 thread)",
+              "Mesh (1 thread)", "VTK chain"]
 
     print("Machine: %s cores, %s; load average at start %s\n" % (
         context.get("num_cpus"), context.get("mhz_per_cpu"), context.get("load_avg")))
-    print("| points | VTK chain (ms) | Approximate (ms) | x | Exact (ms) | x | Mesh (ms) | x |")
-    print("|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("| points | VTK chain (ms) | " + " | ".join("%s (ms) | x" % l for l in labels[:6]) + " |")
+    print("|---:|---:|" + "---:|---:|" * 6)
     for u in sizes:
         chain = rows.get(("VTK chain", u))
         if not chain:
             continue
         cells = ["%d" % chain["points"], "%.1f" % chain["ms"]]
-        for label in labels[:3]:
+        for label in labels[:6]:
             r = rows.get((label, u))
             cells += ["%.1f" % r["ms"], "%.1f" % (chain["ms"] / r["ms"])] if r else ["", ""]
         print("| " + " | ".join(cells) + " |")
@@ -73,7 +76,7 @@ def main():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(7, 4.5), dpi=120)
-        for label, marker in zip(labels, "osd^"):
+        for label, marker in zip(labels, "osdOSD^"):
             pts = [rows[(label, u)] for u in sizes if (label, u) in rows]
             ax.loglog([p["ms"] for p in pts], [p["angle"] for p in pts], marker=marker,
                       label=label)

@@ -14,18 +14,20 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkStaticPointLocator.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkTypeInt64Array.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -760,6 +762,78 @@ struct BoundaryWorker
   }
 };
 
+// Groups the points @a ids that lie within @a tol of one another (transitively): returns,
+// per entry of @a ids, the index of its group's first entry. Serial and in id order, so
+// the groups never depend on the thread count; candidates are few (boundary points only).
+template <typename R>
+std::vector<vtkIdType> CoincidentGroups(
+  const ArrayReader<R>& points, const std::vector<vtkIdType>& ids, double tol)
+{
+  struct KeyHash
+  {
+    size_t operator()(const std::array<double, 3>& k) const
+    {
+      const std::hash<double> h;
+      return h(k[0]) ^ (h(k[1]) * 0x9E3779B97F4A7C15ULL) ^ (h(k[2]) * 0xC2B2AE3D27D4EB4FULL);
+    }
+  };
+  const double cell = tol > 0.0 ? tol : 1.0;
+  std::unordered_map<std::array<double, 3>, std::vector<vtkIdType>, KeyHash> buckets;
+  std::vector<vtkIdType> parent(ids.size());
+  std::function<vtkIdType(vtkIdType)> find = [&](vtkIdType k)
+  {
+    while (parent[k] != k)
+    {
+      k = parent[k] = parent[parent[k]];
+    }
+    return k;
+  };
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    parent[k] = static_cast<vtkIdType>(k);
+    double p[3];
+    points.Get3(ids[k], p);
+    const std::array<double, 3> key = { std::floor(p[0] / cell), std::floor(p[1] / cell),
+      std::floor(p[2] / cell) };
+    for (int dx = -1; dx <= 1; ++dx)
+    {
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dz = -1; dz <= 1; ++dz)
+        {
+          auto it = buckets.find({ key[0] + dx, key[1] + dy, key[2] + dz });
+          if (it == buckets.end())
+          {
+            continue;
+          }
+          for (vtkIdType j : it->second)
+          {
+            double q[3];
+            points.Get3(ids[j], q);
+            const double d[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+            if (Dot(d, d) <= tol * tol)
+            {
+              const vtkIdType a = find(static_cast<vtkIdType>(k)), b = find(j);
+              parent[std::max(a, b)] = std::min(a, b);
+            }
+          }
+        }
+      }
+    }
+    buckets[key].push_back(static_cast<vtkIdType>(k));
+  }
+  std::vector<vtkIdType> rep(ids.size());
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    rep[k] = find(static_cast<vtkIdType>(k));
+  }
+  return rep;
+}
+
+// Points per task: small inputs run in the calling thread (no hand-over to a busy worker),
+// large ones in chunks big enough to amortise the scheduling.
+constexpr vtkIdType Grain = 16384;
+
 template <typename T>
 vtkIdType CountNonFinite(const Texels<T>& tex)
 {
@@ -1040,7 +1114,7 @@ int vtkDisplacementMapFilter::RequestData(
         nonFinite = this->NonFiniteCount;
       }
       DisplaceWorker<T, R> worker{ ctx, tex };
-      vtkSMPTools::For(0, numPts, worker);
+      vtkSMPTools::For(0, numPts, Grain, worker);
     };
     switch (type)
     {
@@ -1071,7 +1145,7 @@ int vtkDisplacementMapFilter::RequestData(
     {
       std::vector<unsigned char> flags(numPts);
       BoundaryWorker boundary{ mesh, flags.data() };
-      vtkSMPTools::For(0, numPts, boundary);
+      vtkSMPTools::For(0, numPts, Grain, boundary);
       std::vector<vtkIdType> candidates;
       for (vtkIdType i = 0; i < numPts; ++i)
       {
@@ -1082,29 +1156,15 @@ int vtkDisplacementMapFilter::RequestData(
       }
       if (candidates.size() > 1)
       {
-        vtkNew<vtkPoints> cp;
-        cp->SetDataTypeToDouble();
-        cp->SetNumberOfPoints(static_cast<vtkIdType>(candidates.size()));
-        for (size_t k = 0; k < candidates.size(); ++k)
-        {
-          double p[3];
-          pts.Get3(candidates[k], p);
-          cp->SetPoint(static_cast<vtkIdType>(k), p);
-        }
-        vtkNew<vtkPolyData> cloud;
-        cloud->SetPoints(cp);
-        vtkNew<vtkStaticPointLocator> locator;
-        locator->SetDataSet(cloud);
-        locator->BuildLocator();
-        std::vector<vtkIdType> map(candidates.size());
-        locator->MergePoints(this->SeamTolerance * input->GetLength(), map.data());
+        const std::vector<vtkIdType> rep =
+          CoincidentGroups(pts, candidates, this->SeamTolerance * input->GetLength());
         std::vector<unsigned char> isRep(candidates.size(), 0);
         for (size_t k = 0; k < candidates.size(); ++k)
         {
-          if (map[k] != static_cast<vtkIdType>(k))
+          if (rep[k] != static_cast<vtkIdType>(k))
           {
-            groups.emplace_back(candidates[map[k]], candidates[k]);
-            isRep[map[k]] = 1;
+            groups.emplace_back(candidates[rep[k]], candidates[k]);
+            isRep[rep[k]] = 1;
           }
         }
         for (size_t k = 0; k < candidates.size(); ++k)
@@ -1158,7 +1218,7 @@ int vtkDisplacementMapFilter::RequestData(
     {
       ArrayReader<R> moved(outPoints->GetData());
       MeshNormalWorker<R> worker{ ctx, moved };
-      vtkSMPTools::For(0, numPts, worker);
+      vtkSMPTools::For(0, numPts, Grain, worker);
     }
 
     // One normal per group member: the sum of the members' that share its input normal.

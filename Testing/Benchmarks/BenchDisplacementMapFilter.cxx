@@ -25,6 +25,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkPolyDataTangents.h>
+#include <vtkSMPTools.h>
 #include <vtkWarpScalar.h>
 
 #include <benchmark/benchmark.h>
@@ -104,6 +105,8 @@ void Report(benchmark::State& state, const Case& c, vtkPolyData* out, vtkDataArr
 void BM_DisplacementMapFilter(benchmark::State& state)
 {
   const Case& c = GetCase(static_cast<int>(state.range(0)));
+  // threads 0: vtkSMPTools' default (all cores); 1: one thread, like the VTK chain.
+  vtkSMPTools::Initialize(static_cast<int>(state.range(2)));
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, c.Mesh);
   filter->SetInputData(1, HeightImage());
@@ -117,6 +120,7 @@ void BM_DisplacementMapFilter(benchmark::State& state)
     filter->Update();
   }
   Report(state, c, filter->GetOutput(), filter->GetOutput()->GetPointData()->GetNormals());
+  vtkSMPTools::Initialize(0);
 }
 
 // The VTK chain: vtkImageInterpolator (linear, on the image wrap-padded by one texel so
@@ -188,15 +192,18 @@ void Sizes(benchmark::internal::Benchmark* b, bool modes)
       for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
              vtkDisplacementMapFilter::Mesh })
       {
-        b->Args({ U, mode });
+        for (int threads : { 0, 1 })
+        {
+          b->Args({ U, mode, threads });
+        }
       }
     }
     else
     {
-      b->Args({ U, 0 });
+      b->Args({ U, 0, 1 });
     }
   }
-  b->ArgNames({ "U", "mode" })->Unit(benchmark::kMillisecond)->UseRealTime();
+  b->ArgNames({ "U", "mode", "threads" })->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 } // namespace
 
