@@ -31,23 +31,31 @@
  * every mode), so all points move by the same distance. NaN and infinite heights are
  * treated as Midlevel, with one warning giving their count.
  *
- * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt and n the unit input normal.
- * - Approximate: the seed's formula, which drops the d dn/ds terms:
- *   m* = P_s x P_t + d_s (n x P_t) - d_t (n x P_s), where d_s, d_t are the analytic
- *   derivatives of the chosen interpolant (bilinear or bicubic), not a finite difference
- *   with a fixed epsilon.
- * - Exact: m* = (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t), the normal of the displaced
- *   surface itself. The derivatives of the normal, n_s and n_t, are fitted per point by
- *   least squares to the input normals over the point's polygons in (s,t) (a central
- *   difference on a regular grid, so second order).
+ * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt, n the unit input normal and
+ * d = Scale (h - Midlevel). Differentiating p* = p + d n by the product rule gives
+ *     p*_s = P_s + d_s n + d n_s,   p*_t = P_t + d_t n + d n_t,   n* ~ p*_s x p*_t.
+ * - Exact: exactly that, m* = (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t). The
+ *   derivatives of the unit normal, n_s and n_t, are fitted per point by least squares to
+ *   the input normals of the point's neighbours (n_j - n_i ~ n_s ds + n_t dt over the
+ *   polygons around it, each neighbour weighted by the polygons it shares with the point);
+ *   on a regular grid this is a central difference, so the normal converges at second
+ *   order in the mesh spacing (TestDisplacementMapFilterAccuracy measures it).
+ * - Approximate: the seed's formula, which drops the d n_s and d n_t terms:
+ *   m* = P_s x P_t + d_s (n x P_t) - d_t (n x P_s), where P_s x P_t is taken as its part
+ *   along n, (n . (P_s x P_t)) n, so that a map without slope gives back n itself. d_s and
+ *   d_t are the analytic derivatives of the chosen interpolant (bilinear or bicubic), not
+ *   a finite difference with a fixed epsilon. Its error is a bias of order d times the
+ *   curvature, which no resolution removes.
  * - Mesh: the area-weighted average of the displaced polygons' normals, each polygon
- *   oriented as the input normals of its points (what vtkPolyDataNormals would give without
- *   splitting).
+ *   oriented as the input normals of its points (vtkPolyDataNormals without splitting).
  * - None: the input normals are kept.
- * In Approximate and Exact the output normal is m* / |m*| times the sign of
- * n . (P_s x P_t), so Scale 0 gives back the input normal direction whatever the
- * orientation of the parameterisation; where m* vanishes (a pole, a degenerate
- * parameterisation) the input normal is kept, so normals are always finite.
+ * In Approximate and Exact, P_s and P_t first lose their parts along n (the input normal
+ * defines the tangent plane), and the output normal is m* / |m*| times the sign of
+ * n . (P_s x P_t), so the result never depends on the orientation of the
+ * parameterisation. Where P_s x P_t vanishes, at a singular point of the parameterisation
+ * such as a sphere's pole (a neighbour at the same place with other texture coordinates,
+ * or zero dPdu/dPdv), no (s,t) derivative describes the surface and the input normal is
+ * kept. Normals are always finite: where m* has no direction, the input normal is used.
  *
  * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
  * (vtkParametricSurfaceSource's GenerateDerivatives), they are used as P_s and P_t, i.e.
@@ -64,8 +72,11 @@
  * `SeamTolerance` (relative to the bounding-box diagonal), such as the duplicated points of
  * a texture seam or a pole, are moved by one shared displacement (the mean of their own),
  * so no crack can open; those that also share their input normal get one shared output
- * normal. Points that coincide but have different input normals (a hard edge) keep their
- * own normals but still move together.
+ * normal (the normalised sum of theirs). Points that coincide but have different input
+ * normals (a hard edge) keep their own normals but still move together. A seam cuts the
+ * mesh, so its duplicated points are boundary points: only points on an edge that is not
+ * shared by exactly two polygons (or in no polygon) are compared, which keeps the cost to
+ * the boundary.
  *
  * Precision: when the points and every array the filter reads are float (as VTK's sources
  * make them), the work reads them in place and the output points, normals and tangents are
