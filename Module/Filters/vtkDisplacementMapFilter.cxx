@@ -271,7 +271,7 @@ struct PolyLinks
   vtkIdType NumCells = 0;
   std::vector<vtkIdType> LinkOffsets, Links;
 
-  void Build(vtkCellArray* polys, vtkIdType numPts)
+  void Build(vtkCellArray* polys, vtkIdType numPts, bool withLinks)
   {
     this->NumCells = polys->GetNumberOfCells();
     static_assert(sizeof(vtkIdType) == 8 || sizeof(vtkIdType) == 4, "id size");
@@ -292,6 +292,10 @@ struct PolyLinks
           : static_cast<vtkDataArray*>(polys->GetConnectivityArray32()));
       this->Offsets = this->OffsetsCopy.data();
       this->Conn = this->ConnCopy.data();
+    }
+    if (!withLinks)
+    {
+      return;
     }
     this->LinkOffsets.assign(numPts + 1, 0);
     const vtkIdType nConn = this->Offsets[this->NumCells];
@@ -401,6 +405,7 @@ struct Context
   int NormalMode = vtkDisplacementMapFilter::Exact;
   double Scale = 1.0;
   double Midlevel = 0.0;
+  double DerivativeScale[2] = { 1.0, 1.0 }; // dP/ds = dPdu * [0], dP/dt = dPdv * [1]
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
@@ -583,6 +588,11 @@ struct DisplaceWorker
       {
         c.DPdu->Get3(i, Ps);
         c.DPdv->Get3(i, Pt);
+        for (int k = 0; k < 3; ++k)
+        {
+          Ps[k] *= c.DerivativeScale[0];
+          Pt[k] *= c.DerivativeScale[1];
+        }
       }
       if (!c.DPdu || exact)
       {
@@ -830,6 +840,54 @@ std::vector<vtkIdType> CoincidentGroups(
   return rep;
 }
 
+// dPdu and dPdv may be derivatives with respect to parameters (u,v) of which the texture
+// coordinates are an axis-aligned affine function, s = o_s + r_s u, t = o_t + r_t v
+// (vtkParametricSurfaceSource's TextureRepeat and TextureOffset). Estimates r_s and r_t by
+// least squares over up to 4096 edges spread over the polygons: each edge's (du, dv) solves
+// dP ~ dPdu du + dPdv dv, against its (ds, dt). Returns 1/r (so dP/ds = dPdu / r_s); exactly
+// 1 when the fit is within 1e-6 of it or cannot be made.
+template <typename R>
+void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double scale[2])
+{
+  scale[0] = scale[1] = 1.0;
+  double su = 0.0, uu = 0.0, tv = 0.0, vv = 0.0;
+  const vtkIdType stride = std::max<vtkIdType>(1, mesh.NumCells / 4096);
+  for (vtkIdType cell = 0; cell < mesh.NumCells; cell += stride)
+  {
+    if (mesh.Offsets[cell + 1] - mesh.Offsets[cell] < 2)
+    {
+      continue;
+    }
+    const vtkIdType i = mesh.Conn[mesh.Offsets[cell]], j = mesh.Conn[mesh.Offsets[cell] + 1];
+    double pi[3], pj[3], a[3], b[3];
+    c.Points->Get3(i, pi);
+    c.Points->Get3(j, pj);
+    c.DPdu->Get3(i, a);
+    c.DPdv->Get3(i, b);
+    const double dp[3] = { pj[0] - pi[0], pj[1] - pi[1], pj[2] - pi[2] };
+    const double aa = Dot(a, a), ab = Dot(a, b), bb = Dot(b, b);
+    const double det = aa * bb - ab * ab;
+    if (!(det > 1e-12 * (aa + bb) * (aa + bb)))
+    {
+      continue;
+    }
+    const double du = (bb * Dot(a, dp) - ab * Dot(b, dp)) / det;
+    const double dv = (aa * Dot(b, dp) - ab * Dot(a, dp)) / det;
+    su += (c.TCoords->Get(j, 0) - c.TCoords->Get(i, 0)) * du;
+    uu += du * du;
+    tv += (c.TCoords->Get(j, 1) - c.TCoords->Get(i, 1)) * dv;
+    vv += dv * dv;
+  }
+  const double r[2] = { uu > 0.0 ? su / uu : 1.0, vv > 0.0 ? tv / vv : 1.0 };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (std::isfinite(r[k]) && std::abs(r[k]) > 1e-12 && std::abs(r[k] - 1.0) > 1e-6)
+    {
+      scale[k] = 1.0 / r[k];
+    }
+  }
+}
+
 // Points per task: small inputs run in the calling thread (no hand-over to a busy worker),
 // large ones in chunks big enough to amortise the scheduling.
 constexpr vtkIdType Grain = 16384;
@@ -1029,8 +1087,10 @@ int vtkDisplacementMapFilter::RequestData(
     using R = decltype(precision);
     auto points = AsReal<R>(inPoints->GetData());
     auto normalsR = AsReal<R>(normals), tcoordsR = AsReal<R>(tcoords);
-    auto dPduR = AsReal<R>(haveDerivs ? dPdu : nullptr);
-    auto dPdvR = AsReal<R>(haveDerivs ? dPdv : nullptr);
+    const bool useDerivs =
+      haveDerivs && (this->NormalMode == Approximate || this->NormalMode == Exact);
+    auto dPduR = AsReal<R>(useDerivs ? dPdu : nullptr);
+    auto dPdvR = AsReal<R>(useDerivs ? dPdv : nullptr);
     auto tangentsR = AsReal<R>(tangents ? inTangents : nullptr);
 
     // Outputs: nothing is allocated that is not asked for.
@@ -1062,7 +1122,7 @@ int vtkDisplacementMapFilter::RequestData(
     ctx.Scale = this->Scale;
     ctx.Midlevel = this->Midlevel;
     ctx.OutPoints = &wPoints;
-    if (haveDerivs)
+    if (useDerivs)
     {
       du.reset(new ArrayReader<R>(dPduR));
       dv.reset(new ArrayReader<R>(dPdvR));
@@ -1082,10 +1142,14 @@ int vtkDisplacementMapFilter::RequestData(
       ctx.OutTangents = wTangents.get();
     }
     PolyLinks mesh;
-    if (needLinks || this->MergeSeams)
+    if (needLinks || this->MergeSeams || useDerivs)
     {
-      mesh.Build(input->GetPolys(), numPts);
+      mesh.Build(input->GetPolys(), numPts, needLinks || this->MergeSeams);
       ctx.Polys = &mesh;
+    }
+    if (useDerivs)
+    {
+      EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
     }
     std::unique_ptr<double[]> distance;
     if (this->MergeSeams)

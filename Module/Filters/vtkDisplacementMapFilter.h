@@ -58,8 +58,11 @@
  * kept. Normals are always finite: where m* has no direction, the input normal is used.
  *
  * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
- * (vtkParametricSurfaceSource's GenerateDerivatives), they are used as P_s and P_t, i.e.
- * as derivatives with respect to the texture coordinates. Otherwise P_s and P_t are fitted
+ * (vtkParametricSurfaceSource's GenerateDerivatives), they give P_s and P_t. They may be
+ * taken with respect to parameters (u,v) of which the texture coordinates are an
+ * axis-aligned affine function (the source's TextureRepeat and TextureOffset): the filter
+ * fits s = o_s + r_s u, t = o_t + r_t v by least squares over a sample of edges and uses
+ * P_s = dPdu / r_s, P_t = dPdv / r_t. Otherwise P_s and P_t are fitted
  * per point by least squares to the position differences over the point's polygons against
  * their texture-coordinate differences. "dPdu" and "dPdv" pass through unchanged: they
  * describe the input surface (nobody asked for them to be recomputed).
