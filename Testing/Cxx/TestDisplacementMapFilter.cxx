@@ -603,6 +603,33 @@ TEST(DisplacementMapFilter, TinyAndConstantHeightMaps)
   }
 }
 
+// Component selects the channel: an RGB map with different values per channel.
+TEST(DisplacementMapFilter, ComponentSelectsTheChannel)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 4, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* v = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < 16; ++k)
+  {
+    v[3 * k] = 10;
+    v[3 * k + 1] = 100;
+    v[3 * k + 2] = 200;
+  }
+  auto probes = Probes({ { 0.3, 0.6 } });
+  for (int component : { 0, 1, 2 })
+  {
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputData(0, probes);
+    f->SetInputData(1, image);
+    f->SetComponent(component);
+    f->Update();
+    double p[3];
+    f->GetOutput()->GetPoint(0, p);
+    EXPECT_NEAR(p[2], (component == 0 ? 10 : component == 1 ? 100 : 200) / 255.0, 1e-12);
+  }
+}
+
 // 8192 x 8192 texels (64 MB of unsigned char): sampled where expected, in a few seconds.
 TEST(DisplacementMapFilter, HugeHeightMap)
 {
