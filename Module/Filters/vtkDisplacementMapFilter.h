@@ -88,8 +88,11 @@
  * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
  * recomputes the normals from the faces).
  *
- * Pieces: the filter works point by point on whatever piece it gets; the height map is
- * always requested whole. Threads: vtkSMPTools, with results independent of the number of
+ * Pieces: the filter works on whatever piece it gets, with as many points out as in; the
+ * height map is always requested whole. Positions and Approximate normals from dPdu/dPdv
+ * are the same as for the whole surface; Exact, Mesh and fitted normals at a piece's
+ * border see only that piece's polygons (as vtkPolyDataNormals does), unless ghost levels
+ * are requested downstream. Threads: vtkSMPTools, with results independent of the number of
  * threads.
  *
  * @sa vtkParametricSurfaceSource vtkHeightMapToNormalMap vtkWarpScalar vtkPolyDataNormals
