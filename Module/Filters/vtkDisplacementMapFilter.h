@@ -90,7 +90,8 @@
  *
  * Pieces: the filter works on whatever piece it gets, with as many points out as in; the
  * height map is always requested whole. Positions and Approximate normals from dPdu/dPdv
- * are the same as for the whole surface; Exact, Mesh and fitted normals at a piece's
+ * are those of the whole surface, except at seam points whose partners are in another
+ * piece (they are only merged within a piece); Exact, Mesh and fitted normals at a piece's
  * border see only that piece's polygons (as vtkPolyDataNormals does), unless ghost levels
  * are requested downstream. Threads: vtkSMPTools, with results independent of the number of
  * threads.
