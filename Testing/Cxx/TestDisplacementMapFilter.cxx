@@ -495,8 +495,8 @@ TEST(DisplacementMapFilter, TangentsFollowNormals)
   EXPECT_LT(worst, 1e-12);
 }
 
-// Pieces pass through in count, and each piece matches the whole run (the height map is
-// requested whole whatever the piece).
+// Pieces pass through in count, and every piece gets the whole height map (the wavelet
+// source would otherwise make only the piece's share of it).
 TEST(DisplacementMapFilter, PiecesPassThrough)
 {
   vtkNew<vtkSphereSource> sphere;
