@@ -34,6 +34,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace DisplacementTest;
@@ -401,6 +402,7 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
     vtkSMPTools::Initialize(1);
     auto one = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
     vtkSMPTools::Initialize(2);
+    ASSERT_EQ(vtkSMPTools::GetEstimatedNumberOfThreads(), 2);
     auto two = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
     EXPECT_TRUE(SameBits(one->GetPoints()->GetData(), two->GetPoints()->GetData())) << mode;
     EXPECT_TRUE(SameBits(one->GetPointData()->GetNormals(), two->GetPointData()->GetNormals()))
@@ -409,7 +411,8 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
       one->GetPointData()->GetArray("Tangents"), two->GetPointData()->GetArray("Tangents")))
       << mode;
   }
-  vtkSMPTools::Initialize(0);
+  // Back to every core (VTK 9.1 keeps 1 thread on Initialize(0) after Initialize(1)).
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 // Scale 0 changes nothing, to the bit (points in every mode; normals and tangents in the
