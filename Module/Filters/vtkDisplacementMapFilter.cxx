@@ -861,7 +861,8 @@ std::vector<vtkIdType> CoincidentGroups(
 // (vtkParametricSurfaceSource's TextureRepeat and TextureOffset). Estimates r_s and r_t by
 // least squares over up to 4096 edges spread over the polygons: each edge's (du, dv) solves
 // dP ~ dPdu du + dPdv dv, against its (ds, dt). Returns 1/r (so dP/ds = dPdu / r_s); exactly
-// 1 when the fit is within 1e-6 of it or cannot be made.
+// 1 when the fit is within 0.1% of it (float positions and the O(h^2) error of the fit
+// would otherwise perturb the untransformed case) or cannot be made.
 template <typename R>
 void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double scale[2])
 {
@@ -875,11 +876,20 @@ void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double 
       continue;
     }
     const vtkIdType i = mesh.Conn[mesh.Offsets[cell]], j = mesh.Conn[mesh.Offsets[cell] + 1];
-    double pi[3], pj[3], a[3], b[3];
+    // The mean of the two ends' derivatives: exact for quadratic p, so the fit has no
+    // first-order bias from the surface's curvature.
+    double pi[3], pj[3], a[3], b[3], aj[3], bj[3];
     c.Points->Get3(i, pi);
     c.Points->Get3(j, pj);
     c.DPdu->Get3(i, a);
     c.DPdv->Get3(i, b);
+    c.DPdu->Get3(j, aj);
+    c.DPdv->Get3(j, bj);
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = 0.5 * (a[k] + aj[k]);
+      b[k] = 0.5 * (b[k] + bj[k]);
+    }
     const double dp[3] = { pj[0] - pi[0], pj[1] - pi[1], pj[2] - pi[2] };
     const double aa = Dot(a, a), ab = Dot(a, b), bb = Dot(b, b);
     const double det = aa * bb - ab * ab;
@@ -897,7 +907,7 @@ void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double 
   const double r[2] = { uu > 0.0 ? su / uu : 1.0, vv > 0.0 ? tv / vv : 1.0 };
   for (int k = 0; k < 2; ++k)
   {
-    if (std::isfinite(r[k]) && std::abs(r[k]) > 1e-12 && std::abs(r[k] - 1.0) > 1e-6)
+    if (std::isfinite(r[k]) && std::abs(r[k]) > 1e-12 && std::abs(r[k] - 1.0) > 1e-3)
     {
       scale[k] = 1.0 / r[k];
     }
