@@ -193,7 +193,8 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(
   const vtkIdType n = static_cast<vtkIdType>(U + 1) * (V + 1);
   points->SetNumberOfPoints(n);
   // Float points come with float arrays, as most VTK sources make them.
-  auto array = [&]() -> vtkSmartPointer<vtkDataArray> {
+  auto array = [&]() -> vtkSmartPointer<vtkDataArray>
+  {
     if (floatPoints)
     {
       return vtkSmartPointer<vtkFloatArray>::New();
