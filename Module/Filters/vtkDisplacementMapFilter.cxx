@@ -22,7 +22,6 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
