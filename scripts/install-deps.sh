@@ -12,6 +12,9 @@ packages=(
   xvfb xauth mesa-utils libgl1-mesa-dri
   libjpeg-turbo-progs
   xplanet-images
+
+  # issue 5: the displacement benchmark's time-vs-error plot
+  python3-matplotlib
 )
 
 missing=()

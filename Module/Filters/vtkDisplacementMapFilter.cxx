@@ -1,0 +1,1424 @@
+#include "vtkDisplacementMapFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSurfaceDetailConventions.h"
+#include "vtkTypeInt64Array.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkDisplacementMapFilter);
+
+namespace
+{
+using namespace vtkSurfaceDetail;
+
+// Raw, typed access to a float or double array with the standard memory layout
+// (RequestData converts anything else first): no virtual call and no type test per value.
+template <typename R>
+struct ArrayReader
+{
+  const R* P;
+  int NC;
+
+  explicit ArrayReader(vtkDataArray* a)
+    : P(static_cast<const R*>(a->GetVoidPointer(0)))
+    , NC(a->GetNumberOfComponents())
+  {
+  }
+
+  double Get(vtkIdType i, int c) const { return this->P[i * this->NC + c]; }
+
+  void Get3(vtkIdType i, double v[3]) const
+  {
+    const R* x = this->P + i * this->NC;
+    v[0] = x[0];
+    v[1] = x[1];
+    v[2] = x[2];
+  }
+};
+
+template <typename R>
+struct ArrayWriter
+{
+  R* P;
+  int NC;
+
+  explicit ArrayWriter(vtkDataArray* a)
+    : P(static_cast<R*>(a->GetVoidPointer(0)))
+    , NC(a->GetNumberOfComponents())
+  {
+  }
+
+  // For unit vectors: no range to check.
+  void Set(vtkIdType i, int c, double v) const { this->P[i * this->NC + c] = static_cast<R>(v); }
+
+  // For positions: beyond float's range, the largest float rather than infinity.
+  void SetClamped(vtkIdType i, int c, double v) const
+  {
+    if (std::is_same<R, float>::value)
+    {
+      constexpr double big = std::numeric_limits<float>::max();
+      v = std::min(std::max(v, -big), big);
+    }
+    this->P[i * this->NC + c] = static_cast<R>(v);
+  }
+};
+
+template <typename R>
+vtkSmartPointer<vtkDataArray> NewRealArray(const char* name, int nc, vtkIdType n)
+{
+  vtkSmartPointer<vtkDataArray> a;
+  if (std::is_same<R, float>::value)
+  {
+    a = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  else
+  {
+    a = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  a->SetNumberOfComponents(nc);
+  a->SetNumberOfTuples(n);
+  a->SetName(name);
+  return a;
+}
+
+// @a a itself when it is already a plain array of R, else a copy converted to R.
+template <typename R>
+vtkSmartPointer<vtkDataArray> AsReal(vtkDataArray* a)
+{
+  const int type = std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE;
+  if (!a || (a->GetDataType() == type && a->HasStandardMemoryLayout()))
+  {
+    return a;
+  }
+  auto copy = NewRealArray<R>(a->GetName(), a->GetNumberOfComponents(), 0);
+  copy->DeepCopy(a);
+  return copy;
+}
+
+// The height map as a texture: texel values of one component, normalised, non-finite
+// values replaced by the midlevel.
+template <typename T>
+struct Texels
+{
+  const T* Data;
+  int W, H, NC, Comp;
+  double Norm, Mid;
+
+  // The height at a raw texel, non-finite values replaced (integer maps have none).
+  double Value(T raw) const
+  {
+    const double v = this->Norm * raw;
+    if (std::is_integral<T>::value)
+    {
+      return v;
+    }
+    return std::isfinite(v) ? v : this->Mid;
+  }
+
+  double At(int i, int j) const
+  {
+    const double v =
+      this->Norm * this->Data[(static_cast<vtkIdType>(j) * this->W + i) * this->NC + this->Comp];
+    if (std::is_integral<T>::value)
+    {
+      return v;
+    }
+    return std::isfinite(v) ? v : this->Mid;
+  }
+};
+
+// WrapIndex, with the common case (inside the texture) spared its integer division.
+inline int Wrapped(int i, int n, int mode)
+{
+  return static_cast<unsigned>(i) < static_cast<unsigned>(n) ? i : WrapIndex(i, n, mode);
+}
+
+// Normalize with one division: the passes normalise a few vectors per point.
+inline double FastNormalize(double v[3])
+{
+  const double len = std::sqrt(Dot(v, v));
+  if (len > 0.0 && std::isfinite(len))
+  {
+    const double inv = 1.0 / len;
+    v[0] *= inv;
+    v[1] *= inv;
+    v[2] *= inv;
+  }
+  return len;
+}
+
+// Keeps huge coordinates from overflowing the texel index; 2 is a period of every wrap.
+inline double TameCoordinate(double s, int wrap)
+{
+  if (std::abs(s) < 1e6)
+  {
+    return s;
+  }
+  return wrap == ClampToEdge ? std::min(std::max(s, -1.0), 2.0) : std::fmod(s, 2.0);
+}
+
+// Catmull-Rom weights and their derivatives for the fraction f in [0,1).
+inline void CatmullRom(double f, double w[4], double dw[4])
+{
+  const double f2 = f * f, f3 = f2 * f;
+  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
+  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
+  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
+  w[3] = 0.5 * (f3 - f2);
+  dw[0] = 0.5 * (-3.0 * f2 + 4.0 * f - 1.0);
+  dw[1] = 0.5 * (9.0 * f2 - 10.0 * f);
+  dw[2] = 0.5 * (-9.0 * f2 + 8.0 * f + 1.0);
+  dw[3] = 0.5 * (3.0 * f2 - 2.0 * f);
+}
+
+// Height h(s,t) of the interpolant and its derivatives with respect to s and t.
+template <typename T>
+void SampleHeight(
+  const Texels<T>& tex, int wrap, int interp, double s, double t, double& h, double& hs, double& ht)
+{
+  s = TameCoordinate(s, wrap);
+  t = TameCoordinate(t, wrap);
+  const int W = tex.W, H = tex.H;
+  if (interp == vtkDisplacementMapFilter::Nearest)
+  {
+    const double x = std::floor(s * W), y = std::floor(t * H);
+    const int i = std::isfinite(x) ? static_cast<int>(x) : 0;
+    const int j = std::isfinite(y) ? static_cast<int>(y) : 0;
+    h = tex.At(Wrapped(i, W, wrap), Wrapped(j, H, wrap));
+    hs = 0.0;
+    ht = 0.0;
+    return;
+  }
+  int i0, j0;
+  double fx, fy;
+  LinearTexels(s, W, i0, fx);
+  LinearTexels(t, H, j0, fy);
+  if (interp == vtkDisplacementMapFilter::Linear)
+  {
+    const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
+    const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
+    const double h00 = tex.At(ia, ja), h10 = tex.At(ib, ja);
+    const double h01 = tex.At(ia, jb), h11 = tex.At(ib, jb);
+    const double b0 = (1.0 - fx) * h00 + fx * h10;
+    const double b1 = (1.0 - fx) * h01 + fx * h11;
+    h = (1.0 - fy) * b0 + fy * b1;
+    hs = W * ((1.0 - fy) * (h10 - h00) + fy * (h11 - h01));
+    ht = H * (b1 - b0);
+    return;
+  }
+  double wx[4], dwx[4], wy[4], dwy[4];
+  CatmullRom(fx, wx, dwx);
+  CatmullRom(fy, wy, dwy);
+  // Offsets of the 4 columns and a pointer per row: 16 reads, no index arithmetic each.
+  vtkIdType column[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    column[k] = static_cast<vtkIdType>(Wrapped(i0 - 1 + k, W, wrap)) * tex.NC + tex.Comp;
+  }
+  const vtkIdType rowStride = static_cast<vtkIdType>(W) * tex.NC;
+  h = hs = ht = 0.0;
+  for (int l = 0; l < 4; ++l)
+  {
+    const T* rowData = tex.Data + Wrapped(j0 - 1 + l, H, wrap) * rowStride;
+    double row = 0.0, drow = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      const double v = tex.Value(rowData[column[k]]);
+      row += wx[k] * v;
+      drow += dwx[k] * v;
+    }
+    h += wy[l] * row;
+    hs += wy[l] * drow;
+    ht += dwy[l] * row;
+  }
+  hs *= W;
+  ht *= H;
+}
+
+std::vector<vtkIdType> Widen(vtkDataArray* a)
+{
+  std::vector<vtkIdType> out(a->GetNumberOfValues());
+  if (a->GetDataType() == VTK_TYPE_INT32)
+  {
+    const auto* p = static_cast<const vtkTypeInt32*>(a->GetVoidPointer(0));
+    std::copy(p, p + out.size(), out.begin());
+  }
+  else
+  {
+    const auto* p = static_cast<const vtkTypeInt64*>(a->GetVoidPointer(0));
+    std::copy(p, p + out.size(), out.begin());
+  }
+  return out;
+}
+
+// Polygons as offsets + connectivity, and the point-to-polygon links in CSR form (each
+// point's polygons in increasing id order, so that every sum over them has one order).
+struct PolyLinks
+{
+  std::vector<vtkIdType> OffsetsCopy, ConnCopy;
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Conn = nullptr;
+  vtkIdType NumCells = 0;
+  std::vector<vtkIdType> LinkOffsets, Links;
+
+  void Build(vtkCellArray* polys, vtkIdType numPts, bool withLinks)
+  {
+    this->NumCells = polys->GetNumberOfCells();
+    static_assert(sizeof(vtkIdType) == 8 || sizeof(vtkIdType) == 4, "id size");
+    if (polys->IsStorage64Bit() && sizeof(vtkIdType) == 8)
+    {
+      this->Offsets = reinterpret_cast<const vtkIdType*>(polys->GetOffsetsArray64()->GetPointer(0));
+      this->Conn =
+        reinterpret_cast<const vtkIdType*>(polys->GetConnectivityArray64()->GetPointer(0));
+    }
+    else
+    {
+      // 32-bit storage: widened once, with typed loops rather than virtual calls.
+      this->OffsetsCopy =
+        Widen(polys->IsStorage64Bit() ? static_cast<vtkDataArray*>(polys->GetOffsetsArray64())
+                                      : static_cast<vtkDataArray*>(polys->GetOffsetsArray32()));
+      this->ConnCopy = Widen(polys->IsStorage64Bit()
+          ? static_cast<vtkDataArray*>(polys->GetConnectivityArray64())
+          : static_cast<vtkDataArray*>(polys->GetConnectivityArray32()));
+      this->Offsets = this->OffsetsCopy.data();
+      this->Conn = this->ConnCopy.data();
+    }
+    if (!withLinks)
+    {
+      return;
+    }
+    this->LinkOffsets.assign(numPts + 1, 0);
+    const vtkIdType nConn = this->Offsets[this->NumCells];
+    for (vtkIdType k = 0; k < nConn; ++k)
+    {
+      ++this->LinkOffsets[this->Conn[k] + 1];
+    }
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      this->LinkOffsets[i + 1] += this->LinkOffsets[i];
+    }
+    this->Links.resize(nConn);
+    std::vector<vtkIdType> cursor(this->LinkOffsets.begin(), this->LinkOffsets.end() - 1);
+    for (vtkIdType c = 0; c < this->NumCells; ++c)
+    {
+      for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
+      {
+        this->Links[cursor[this->Conn[k]]++] = c;
+      }
+    }
+  }
+};
+
+// Per-point least-squares fit of the derivatives of a vector field f with respect to
+// (s,t) over the point's polygons: minimise sum |f_j - f_i - fs ds - ft dt|^2.
+struct Fit
+{
+  double M[3] = { 0.0, 0.0, 0.0 }; // sum ds^2, ds dt, dt^2
+  double Bs[3] = { 0.0, 0.0, 0.0 }, Bt[3] = { 0.0, 0.0, 0.0 };
+
+  void Add(double w, double ds, double dt, const double df[3])
+  {
+    this->M[0] += w * ds * ds;
+    this->M[1] += w * ds * dt;
+    this->M[2] += w * dt * dt;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Bs[k] += w * ds * df[k];
+      this->Bt[k] += w * dt * df[k];
+    }
+  }
+
+  // False (and zero derivatives) when the texture coordinates around the point do not
+  // span two directions.
+  bool Solve(double fs[3], double ft[3]) const
+  {
+    const double det = this->M[0] * this->M[2] - this->M[1] * this->M[1];
+    const double tr = this->M[0] + this->M[2];
+    if (!(det > 1e-12 * tr * tr))
+    {
+      fs[0] = fs[1] = fs[2] = ft[0] = ft[1] = ft[2] = 0.0;
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      fs[k] = (this->M[2] * this->Bs[k] - this->M[1] * this->Bt[k]) / det;
+      ft[k] = (this->M[0] * this->Bt[k] - this->M[1] * this->Bs[k]) / det;
+    }
+    return true;
+  }
+};
+
+// NaN becomes 0 and infinity the largest double.
+inline double Finite(double x)
+{
+  if (std::isnan(x))
+  {
+    return 0.0;
+  }
+  return std::min(
+    std::max(x, -std::numeric_limits<double>::max()), std::numeric_limits<double>::max());
+}
+
+inline void ScaleToUnitMax(double v[3])
+{
+  const double mx = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
+  if (mx > 0.0)
+  {
+    const double inv = 1.0 / mx;
+    v[0] *= inv;
+    v[1] *= inv;
+    v[2] *= inv;
+  }
+}
+
+inline void RemoveNormalPart(const double n[3], double v[3])
+{
+  const double d = Dot(n, v);
+  v[0] -= d * n[0];
+  v[1] -= d * n[1];
+  v[2] -= d * n[2];
+}
+
+// Everything RequestData hands to the threaded passes.
+template <typename R>
+struct Context
+{
+  ArrayReader<R>* Points = nullptr;
+  ArrayReader<R>* Normals = nullptr;
+  ArrayReader<R>* TCoords = nullptr;
+  ArrayReader<R>* DPdu = nullptr;
+  ArrayReader<R>* DPdv = nullptr;
+  ArrayReader<R>* Tangents = nullptr;
+  const PolyLinks* Polys = nullptr;
+  int Wrap = Repeat;
+  int Interpolation = vtkDisplacementMapFilter::Linear;
+  int NormalMode = vtkDisplacementMapFilter::Exact;
+  double Scale = 1.0;
+  double Midlevel = 0.0;
+  double DerivativeScale[2] = { 1.0, 1.0 }; // dP/ds = dPdu * [0], dP/dt = dPdv * [1]
+  ArrayWriter<R>* OutPoints = nullptr;
+  ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
+  ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
+  double* Distance = nullptr;            // d per point, kept for the seam pass
+};
+
+// The unit input normal, or zero when it has no direction.
+template <typename R>
+inline void InputNormal(const Context<R>& c, vtkIdType i, double n[3])
+{
+  c.Normals->Get3(i, n);
+  if (FastNormalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
+  {
+    n[0] = n[1] = n[2] = 0.0;
+  }
+}
+
+template <typename R>
+inline void WritePoint(const Context<R>& c, vtkIdType i, const double offset[3])
+{
+  double p[3];
+  c.Points->Get3(i, p);
+  for (int k = 0; k < 3; ++k)
+  {
+    // Adding +0 would turn -0 into +0: no displacement leaves the bits alone.
+    c.OutPoints->SetClamped(i, k, offset[k] == 0.0 ? p[k] : Finite(p[k] + offset[k]));
+  }
+}
+
+// Normalises @a m and writes it (the input normal where @a m has no direction), then the
+// tangent re-orthogonalised to it with its handedness kept.
+template <typename R>
+inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+{
+  if (FastNormalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
+  {
+    InputNormal(c, i, m);
+    if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0)
+    {
+      m[2] = 1.0;
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    c.OutNormals->Set(i, k, m[k]);
+  }
+  if (!c.OutTangents)
+  {
+    return;
+  }
+  const int tnc = c.OutTangents->NC;
+  double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
+  for (int k = 0; k < tnc; ++k)
+  {
+    tg[k] = c.Tangents->Get(i, k);
+  }
+  RemoveNormalPart(m, tg);
+  if (FastNormalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
+  {
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    const double w = tg[3];
+    MakeTangentFrame(m, zero, zero, tg);
+    tg[3] = w;
+  }
+  for (int k = 0; k < tnc; ++k)
+  {
+    c.OutTangents->Set(i, k, tg[k]);
+  }
+}
+
+// Least-squares p_s, p_t (when wanted) and n_s, n_t (when wanted) over the point's
+// neighbours in its polygons. A neighbour at the same place with other texture coordinates means
+// that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
+// the caller keeps the normal.
+template <typename R>
+void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
+  double Ps[3], double Pt[3], double Ns[3], double Nt[3])
+{
+  const PolyLinks& mesh = *c.Polys;
+  // The neighbours over the point's polygons, sorted so that each is read once.
+  constexpr int maxNeighbours = 64;
+  vtkIdType neighbours[maxNeighbours];
+  int count = 0;
+  for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+  {
+    const vtkIdType cell = mesh.Links[l];
+    for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1] && count < maxNeighbours; ++k)
+    {
+      if (mesh.Conn[k] != i)
+      {
+        neighbours[count++] = mesh.Conn[k];
+      }
+    }
+  }
+  std::sort(neighbours, neighbours + count);
+
+  double pi[3], ni[3];
+  c.Points->Get3(i, pi);
+  c.Normals->Get3(i, ni);
+  FastNormalize(ni);
+  Fit fp, fn;
+  double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
+  for (int k = 0; k < count;)
+  {
+    // A neighbour weighs as many times as it has polygons in common with the point.
+    const vtkIdType j = neighbours[k];
+    int w = 0;
+    for (; k < count && neighbours[k] == j; ++k)
+    {
+      ++w;
+    }
+    const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
+    double v[3];
+    if (wantP)
+    {
+      c.Points->Get3(j, v);
+      v[0] -= pi[0];
+      v[1] -= pi[1];
+      v[2] -= pi[2];
+      fp.Add(w, ds, dt, v);
+      const double d2 = Dot(v, v);
+      minD2 = std::min(minD2, d2);
+      maxD2 = std::max(maxD2, d2);
+    }
+    if (wantN)
+    {
+      c.Normals->Get3(j, v);
+      FastNormalize(v);
+      v[0] -= ni[0];
+      v[1] -= ni[1];
+      v[2] -= ni[2];
+      fn.Add(w, ds, dt, v);
+    }
+  }
+  if (wantN)
+  {
+    fn.Solve(Ns, Nt);
+  }
+  if (wantP && (!fp.Solve(Ps, Pt) || minD2 <= 1e-16 * maxD2))
+  {
+    Ps[0] = Ps[1] = Ps[2] = Pt[0] = Pt[1] = Pt[2] = 0.0;
+  }
+}
+
+// Pass 1: displacement, and the analytic normals (Approximate, Exact).
+template <typename T, typename R>
+struct DisplaceWorker
+{
+  const Context<R>& C;
+  const Texels<T>& Tex;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    const Context<R>& c = this->C;
+    const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
+      c.NormalMode == vtkDisplacementMapFilter::Exact;
+    const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double n[3];
+      InputNormal(c, i, n);
+      const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
+      double h, hs, ht;
+      SampleHeight(this->Tex, c.Wrap, c.Interpolation, s, t, h, hs, ht);
+      // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
+      const double d = Finite(c.Scale * (h - c.Midlevel));
+      const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
+      const double offset[3] = { d * n[0], d * n[1], d * n[2] };
+      WritePoint(c, i, offset);
+      if (c.Distance)
+      {
+        c.Distance[i] = d;
+      }
+      if (!analytic)
+      {
+        continue;
+      }
+      double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
+      if (c.DPdu)
+      {
+        c.DPdu->Get3(i, Ps);
+        c.DPdv->Get3(i, Pt);
+        for (int k = 0; k < 3; ++k)
+        {
+          Ps[k] *= c.DerivativeScale[0];
+          Pt[k] *= c.DerivativeScale[1];
+        }
+      }
+      if (!c.DPdu || exact)
+      {
+        FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      }
+      // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
+      RemoveNormalPart(n, Ps);
+      RemoveNormalPart(n, Pt);
+      double base[3];
+      Cross(Ps, Pt, base);
+      const double area = Dot(n, base);
+      const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
+      double m[3];
+      if (exact)
+      {
+        RemoveNormalPart(n, Ns);
+        RemoveNormalPart(n, Nt);
+        double qs[3], qt[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
+          qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
+        }
+        // Only the direction matters: scaling first keeps the cross product finite.
+        ScaleToUnitMax(qs);
+        ScaleToUnitMax(qt);
+        Cross(qs, qt, m);
+      }
+      else
+      {
+        double nxPs[3], nxPt[3];
+        Cross(n, Ps, nxPs);
+        Cross(n, Pt, nxPt);
+        const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
+        const double a = area * inv, bs = ds * inv, bt = dt * inv;
+        for (int k = 0; k < 3; ++k)
+        {
+          m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
+        }
+      }
+      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
+      if (degenerate)
+      {
+        std::copy(n, n + 3, m);
+      }
+      else if (area < 0.0)
+      {
+        m[0] = -m[0];
+        m[1] = -m[1];
+        m[2] = -m[2];
+      }
+      WriteNormalAndTangent(c, i, m);
+    }
+  }
+};
+
+// Mesh normals: area-weighted sum of the displaced polygons around each point, each
+// polygon oriented as its points' input normals.
+template <typename R>
+struct MeshNormalWorker
+{
+  const Context<R>& C;
+  const ArrayReader<R>& Moved;
+
+  void PolygonNormal(vtkIdType cell, double out[3]) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
+    double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
+    double m0[3], p0[3];
+    this->Moved.Get3(mesh.Conn[b], m0);
+    this->C.Points->Get3(mesh.Conn[b], p0);
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      double nk[3];
+      this->C.Normals->Get3(mesh.Conn[k], nk);
+      nsum[0] += nk[0];
+      nsum[1] += nk[1];
+      nsum[2] += nk[2];
+    }
+    for (vtkIdType k = b + 1; k + 1 < e; ++k)
+    {
+      double m1[3], m2[3], p1[3], p2[3], x[3];
+      this->Moved.Get3(mesh.Conn[k], m1);
+      this->Moved.Get3(mesh.Conn[k + 1], m2);
+      const double a1[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
+      const double a2[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
+      Cross(a1, a2, x);
+      moved[0] += x[0];
+      moved[1] += x[1];
+      moved[2] += x[2];
+      this->C.Points->Get3(mesh.Conn[k], p1);
+      this->C.Points->Get3(mesh.Conn[k + 1], p2);
+      const double c1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+      const double c2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+      Cross(c1, c2, x);
+      orig[0] += x[0];
+      orig[1] += x[1];
+      orig[2] += x[2];
+    }
+    const double sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = sign * moved[k];
+    }
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double sum[3] = { 0.0, 0.0, 0.0 };
+      for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+      {
+        double x[3];
+        this->PolygonNormal(mesh.Links[l], x);
+        sum[0] += x[0];
+        sum[1] += x[1];
+        sum[2] += x[2];
+      }
+      WriteNormalAndTangent(this->C, i, sum);
+    }
+  }
+};
+
+// Seam candidates: a texture seam cuts the mesh, so its duplicated points lie on the
+// mesh's boundary. A point is a candidate unless every edge around it is shared by exactly
+// two of its polygons (or it has no polygon at all).
+struct BoundaryWorker
+{
+  const PolyLinks& Mesh;
+  unsigned char* Flags;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    constexpr int maxEdges = 64;
+    vtkIdType neighbours[maxEdges];
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      int count = 0;
+      bool boundary = this->Mesh.LinkOffsets[i] == this->Mesh.LinkOffsets[i + 1];
+      for (vtkIdType l = this->Mesh.LinkOffsets[i]; !boundary && l < this->Mesh.LinkOffsets[i + 1];
+           ++l)
+      {
+        const vtkIdType cell = this->Mesh.Links[l];
+        const vtkIdType b = this->Mesh.Offsets[cell], e = this->Mesh.Offsets[cell + 1];
+        const vtkIdType size = e - b;
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          if (this->Mesh.Conn[k] != i)
+          {
+            continue;
+          }
+          if (count + 2 > maxEdges)
+          {
+            boundary = true;
+            break;
+          }
+          neighbours[count++] = this->Mesh.Conn[b + (k - b + 1) % size];
+          neighbours[count++] = this->Mesh.Conn[b + (k - b + size - 1) % size];
+          break;
+        }
+      }
+      if (!boundary)
+      {
+        // Interior: every neighbour across an edge appears exactly twice.
+        std::sort(neighbours, neighbours + count);
+        for (int a = 0; a < count && !boundary; a += 2)
+        {
+          boundary = a + 1 >= count || neighbours[a] != neighbours[a + 1] ||
+            (a + 2 < count && neighbours[a + 2] == neighbours[a]);
+        }
+      }
+      this->Flags[i] = boundary ? 1 : 0;
+    }
+  }
+};
+
+// Groups the points @a ids that lie within @a tol of one another (transitively): returns,
+// per entry of @a ids, the index of its group's first entry. Serial and in id order, so
+// the groups never depend on the thread count; candidates are few (boundary points only).
+template <typename R>
+std::vector<vtkIdType> CoincidentGroups(
+  const ArrayReader<R>& points, const std::vector<vtkIdType>& ids, double tol)
+{
+  struct KeyHash
+  {
+    size_t operator()(const std::array<double, 3>& k) const
+    {
+      const std::hash<double> h;
+      return h(k[0]) ^ (h(k[1]) * 0x9E3779B97F4A7C15ULL) ^ (h(k[2]) * 0xC2B2AE3D27D4EB4FULL);
+    }
+  };
+  const double cell = tol > 0.0 ? tol : 1.0;
+  std::unordered_map<std::array<double, 3>, std::vector<vtkIdType>, KeyHash> buckets;
+  std::vector<vtkIdType> parent(ids.size());
+  std::function<vtkIdType(vtkIdType)> find = [&](vtkIdType k)
+  {
+    while (parent[k] != k)
+    {
+      k = parent[k] = parent[parent[k]];
+    }
+    return k;
+  };
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    parent[k] = static_cast<vtkIdType>(k);
+    double p[3];
+    points.Get3(ids[k], p);
+    const std::array<double, 3> key = { std::floor(p[0] / cell), std::floor(p[1] / cell),
+      std::floor(p[2] / cell) };
+    for (int dx = -1; dx <= 1; ++dx)
+    {
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dz = -1; dz <= 1; ++dz)
+        {
+          auto it = buckets.find({ key[0] + dx, key[1] + dy, key[2] + dz });
+          if (it == buckets.end())
+          {
+            continue;
+          }
+          for (vtkIdType j : it->second)
+          {
+            double q[3];
+            points.Get3(ids[j], q);
+            const double d[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+            if (Dot(d, d) <= tol * tol)
+            {
+              const vtkIdType a = find(static_cast<vtkIdType>(k)), b = find(j);
+              parent[std::max(a, b)] = std::min(a, b);
+            }
+          }
+        }
+      }
+    }
+    buckets[key].push_back(static_cast<vtkIdType>(k));
+  }
+  std::vector<vtkIdType> rep(ids.size());
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    rep[k] = find(static_cast<vtkIdType>(k));
+  }
+  return rep;
+}
+
+// dPdu and dPdv may be derivatives with respect to parameters (u,v) of which the texture
+// coordinates are an axis-aligned affine function, s = o_s + r_s u, t = o_t + r_t v
+// (vtkParametricSurfaceSource's TextureRepeat and TextureOffset). Estimates r_s and r_t by
+// least squares over up to 4096 edges spread over the polygons: each edge's (du, dv) solves
+// dP ~ dPdu du + dPdv dv, against its (ds, dt). Returns 1/r (so dP/ds = dPdu / r_s); exactly
+// 1 when the fit is within 0.1% of it (float positions and the O(h^2) error of the fit
+// would otherwise perturb the untransformed case) or cannot be made.
+template <typename R>
+void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double scale[2])
+{
+  scale[0] = scale[1] = 1.0;
+  double su = 0.0, uu = 0.0, tv = 0.0, vv = 0.0;
+  const vtkIdType stride = std::max<vtkIdType>(1, mesh.NumCells / 4096);
+  for (vtkIdType cell = 0; cell < mesh.NumCells; cell += stride)
+  {
+    if (mesh.Offsets[cell + 1] - mesh.Offsets[cell] < 2)
+    {
+      continue;
+    }
+    const vtkIdType i = mesh.Conn[mesh.Offsets[cell]], j = mesh.Conn[mesh.Offsets[cell] + 1];
+    // The mean of the two ends' derivatives: exact for quadratic p, so the fit has no
+    // first-order bias from the surface's curvature.
+    double pi[3], pj[3], a[3], b[3], aj[3], bj[3];
+    c.Points->Get3(i, pi);
+    c.Points->Get3(j, pj);
+    c.DPdu->Get3(i, a);
+    c.DPdv->Get3(i, b);
+    c.DPdu->Get3(j, aj);
+    c.DPdv->Get3(j, bj);
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = 0.5 * (a[k] + aj[k]);
+      b[k] = 0.5 * (b[k] + bj[k]);
+    }
+    const double dp[3] = { pj[0] - pi[0], pj[1] - pi[1], pj[2] - pi[2] };
+    const double aa = Dot(a, a), ab = Dot(a, b), bb = Dot(b, b);
+    const double det = aa * bb - ab * ab;
+    if (!(det > 1e-12 * (aa + bb) * (aa + bb)))
+    {
+      continue;
+    }
+    const double du = (bb * Dot(a, dp) - ab * Dot(b, dp)) / det;
+    const double dv = (aa * Dot(b, dp) - ab * Dot(a, dp)) / det;
+    su += (c.TCoords->Get(j, 0) - c.TCoords->Get(i, 0)) * du;
+    uu += du * du;
+    tv += (c.TCoords->Get(j, 1) - c.TCoords->Get(i, 1)) * dv;
+    vv += dv * dv;
+  }
+  const double r[2] = { uu > 0.0 ? su / uu : 1.0, vv > 0.0 ? tv / vv : 1.0 };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (std::isfinite(r[k]) && std::abs(r[k]) > 1e-12 && std::abs(r[k] - 1.0) > 1e-3)
+    {
+      scale[k] = 1.0 / r[k];
+    }
+  }
+}
+
+// Points per task: small inputs run in the calling thread (no hand-over to a busy worker),
+// large ones in chunks big enough to amortise the scheduling.
+constexpr vtkIdType Grain = 16384;
+
+template <typename T>
+vtkIdType CountNonFinite(const Texels<T>& tex)
+{
+  std::atomic<vtkIdType> count(0);
+  vtkSMPTools::For(0, tex.H,
+    [&](vtkIdType j0, vtkIdType j1)
+    {
+      vtkIdType local = 0;
+      for (vtkIdType j = j0; j < j1; ++j)
+      {
+        for (int i = 0; i < tex.W; ++i)
+        {
+          const double v = static_cast<double>(
+            tex.Data[(j * tex.W + i) * static_cast<vtkIdType>(tex.NC) + tex.Comp]);
+          local += std::isfinite(v) ? 0 : 1;
+        }
+      }
+      count += local;
+    });
+  return count;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkDisplacementMapFilter::vtkDisplacementMapFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkDisplacementMapFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkDisplacementMapFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The surface streams piece by piece; every piece needs the whole height map.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
+  vtkInformation* mapInfo = inputVector[1]->GetInformationObject(0);
+  if (mapInfo && mapInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    mapInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      mapInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkDisplacementMapFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkImageData* image = vtkImageData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Input port 0 needs a vtkPolyData.");
+    return 0;
+  }
+  if (!image)
+  {
+    vtkErrorMacro("Input port 1 needs the height map as a vtkImageData "
+                  "(SetInputConnection(1, ...)).");
+    return 0;
+  }
+  const vtkIdType numPts = input->GetNumberOfPoints();
+  if (numPts == 0)
+  {
+    output->ShallowCopy(input);
+    return 1;
+  }
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The input has no 3-component point normals; displacement moves points "
+                  "along them. Compute them with vtkPolyDataNormals (SplittingOff) or "
+                  "generate the surface with vtkParametricSurfaceSource.");
+    return 0;
+  }
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro("The input has no point texture coordinates (2 or more components); "
+                  "they locate each point in the height map. Generate them, e.g. with "
+                  "vtkParametricSurfaceSource or vtkTextureMapToSphere.");
+    return 0;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() == 0 || !scalars ||
+    scalars->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    vtkErrorMacro("The height map on input port 1 is empty or has no point scalars; give "
+                  "it at least 1x1 texels with scalars.");
+    return 0;
+  }
+  if (dims[2] != 1)
+  {
+    vtkErrorMacro("The height map is a " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                                         << " volume; it must be a 2-D image "
+                                            "(extract a slice with vtkExtractVOI).");
+    return 0;
+  }
+  if (this->Component >= scalars->GetNumberOfComponents())
+  {
+    vtkErrorMacro("Component " << this->Component << " was asked for but the height map has "
+                               << scalars->GetNumberOfComponents() << " component(s).");
+    return 0;
+  }
+  const int type = scalars->GetDataType();
+  if (type != VTK_UNSIGNED_CHAR && type != VTK_UNSIGNED_SHORT && type != VTK_FLOAT &&
+    type != VTK_DOUBLE)
+  {
+    vtkErrorMacro("The height map's scalars are " << scalars->GetDataTypeAsString()
+                                                  << "; use unsigned char, unsigned short, "
+                                                     "float or double (vtkImageCast).");
+    return 0;
+  }
+  vtkDataArray* dPdu = input->GetPointData()->GetArray("dPdu");
+  vtkDataArray* dPdv = input->GetPointData()->GetArray("dPdv");
+  const bool haveDerivs =
+    dPdu && dPdv && dPdu->GetNumberOfComponents() == 3 && dPdv->GetNumberOfComponents() == 3;
+  const bool needLinks = this->NormalMode == Exact || this->NormalMode == Mesh ||
+    (this->NormalMode == Approximate && !haveDerivs);
+  if (needLinks && input->GetNumberOfStrips() > 0)
+  {
+    vtkErrorMacro("The input has triangle strips; normal mode " << this->GetNormalModeAsString()
+                                                                << " needs polygons. Run "
+                                                                   "vtkTriangleFilter first.");
+    return 0;
+  }
+
+  if (this->Scale == 0.0 && this->NormalMode != Mesh)
+  {
+    // Nothing moves, so nothing changes: the input itself, bit for bit.
+    output->ShallowCopy(input);
+    return 1;
+  }
+
+  const int W = dims[0], H = dims[1];
+  const double norm =
+    type == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : (type == VTK_UNSIGNED_SHORT ? 1.0 / 65535.0 : 1.0);
+  const int nc = scalars->GetNumberOfComponents();
+  void* raw = scalars->GetVoidPointer(0);
+
+  // VTK 9.1's tangents attribute takes 3 components only, so DESIGN.md's 4-component
+  // frame is found by its name "Tangents".
+  vtkDataArray* inTangents = input->GetPointData()->GetTangents();
+  if (!inTangents)
+  {
+    inTangents = input->GetPointData()->GetArray("Tangents");
+  }
+  const bool tangents = this->NormalMode != None && inTangents &&
+    (inTangents->GetNumberOfComponents() == 3 || inTangents->GetNumberOfComponents() == 4);
+
+  // One precision for all: float when every array used is float (what VTK's sources
+  // make), else double; the outputs have it too. Arrays of another type or layout are
+  // converted first, so that the passes read raw memory.
+  vtkPoints* inPoints = input->GetPoints();
+  std::vector<vtkDataArray*> used = { inPoints->GetData(), normals, tcoords };
+  if (haveDerivs && (this->NormalMode == Approximate || this->NormalMode == Exact))
+  {
+    used.push_back(dPdu);
+    used.push_back(dPdv);
+  }
+  if (tangents)
+  {
+    used.push_back(inTangents);
+  }
+  const bool allFloat = std::all_of(used.begin(), used.end(),
+    [](vtkDataArray* a) { return a->GetDataType() == VTK_FLOAT && a->HasStandardMemoryLayout(); });
+  auto execute = [&](auto precision) -> int
+  {
+    using R = decltype(precision);
+    auto points = AsReal<R>(inPoints->GetData());
+    auto normalsR = AsReal<R>(normals), tcoordsR = AsReal<R>(tcoords);
+    const bool useDerivs =
+      haveDerivs && (this->NormalMode == Approximate || this->NormalMode == Exact);
+    auto dPduR = AsReal<R>(useDerivs ? dPdu : nullptr);
+    auto dPdvR = AsReal<R>(useDerivs ? dPdv : nullptr);
+    auto tangentsR = AsReal<R>(tangents ? inTangents : nullptr);
+
+    // Outputs: nothing is allocated that is not asked for.
+    vtkNew<vtkPoints> outPoints;
+    outPoints->SetDataType(std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE);
+    outPoints->SetNumberOfPoints(numPts);
+    vtkSmartPointer<vtkDataArray> outNormals, outTangents;
+    if (this->NormalMode != None)
+    {
+      outNormals = NewRealArray<R>(normals->GetName(), 3, numPts);
+    }
+    if (tangents)
+    {
+      outTangents =
+        NewRealArray<R>(inTangents->GetName(), inTangents->GetNumberOfComponents(), numPts);
+    }
+
+    ArrayReader<R> pts(points), nrm(normalsR), tc(tcoordsR);
+    std::unique_ptr<ArrayReader<R>> du, dv, tan;
+    ArrayWriter<R> wPoints(outPoints->GetData());
+    std::unique_ptr<ArrayWriter<R>> wNormals, wTangents;
+    Context<R> ctx;
+    ctx.Points = &pts;
+    ctx.Normals = &nrm;
+    ctx.TCoords = &tc;
+    ctx.Wrap = this->Wrap;
+    ctx.Interpolation = this->Interpolation;
+    ctx.NormalMode = this->NormalMode;
+    ctx.Scale = this->Scale;
+    ctx.Midlevel = this->Midlevel;
+    ctx.OutPoints = &wPoints;
+    if (useDerivs)
+    {
+      du.reset(new ArrayReader<R>(dPduR));
+      dv.reset(new ArrayReader<R>(dPdvR));
+      ctx.DPdu = du.get();
+      ctx.DPdv = dv.get();
+    }
+    if (outNormals)
+    {
+      wNormals.reset(new ArrayWriter<R>(outNormals));
+      ctx.OutNormals = wNormals.get();
+    }
+    if (tangents)
+    {
+      tan.reset(new ArrayReader<R>(tangentsR));
+      wTangents.reset(new ArrayWriter<R>(outTangents));
+      ctx.Tangents = tan.get();
+      ctx.OutTangents = wTangents.get();
+    }
+    PolyLinks mesh;
+    if (needLinks || this->MergeSeams || useDerivs)
+    {
+      mesh.Build(input->GetPolys(), numPts, needLinks || this->MergeSeams);
+      ctx.Polys = &mesh;
+    }
+    if (useDerivs)
+    {
+      EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
+    }
+    std::unique_ptr<double[]> distance;
+    if (this->MergeSeams)
+    {
+      distance.reset(new double[numPts]);
+      ctx.Distance = distance.get();
+    }
+
+    // Pass 1: points, and the normals of the analytic modes.
+    vtkIdType nonFinite = 0;
+    auto run = [&](auto* data)
+    {
+      using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
+      const Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel };
+      if (type == VTK_FLOAT || type == VTK_DOUBLE)
+      {
+        const vtkMTimeType changed = std::max(image->GetMTime(), scalars->GetMTime());
+        if (this->NonFiniteScanArray != scalars || this->NonFiniteScanTime != changed ||
+          this->NonFiniteScanComponent != this->Component)
+        {
+          this->NonFiniteCount = CountNonFinite(tex);
+          this->NonFiniteScanArray = scalars;
+          this->NonFiniteScanTime = changed;
+          this->NonFiniteScanComponent = this->Component;
+        }
+        nonFinite = this->NonFiniteCount;
+      }
+      DisplaceWorker<T, R> worker{ ctx, tex };
+      vtkSMPTools::For(0, numPts, Grain, worker);
+    };
+    switch (type)
+    {
+      case VTK_UNSIGNED_CHAR:
+        run(static_cast<const unsigned char*>(raw));
+        break;
+      case VTK_UNSIGNED_SHORT:
+        run(static_cast<const unsigned short*>(raw));
+        break;
+      case VTK_FLOAT:
+        run(static_cast<const float*>(raw));
+        break;
+      default:
+        run(static_cast<const double*>(raw));
+        break;
+    }
+    if (nonFinite > 0)
+    {
+      vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
+                      << " of the height map are NaN or infinite; they are treated as Midlevel ("
+                      << this->Midlevel << ").");
+    }
+
+    // Coincident points (seams, poles) as groups of (representative, member) in increasing
+    // order, so that every sum over a group has one order whatever the thread count.
+    std::vector<std::pair<vtkIdType, vtkIdType>> groups;
+    if (this->MergeSeams)
+    {
+      std::vector<unsigned char> flags(numPts);
+      BoundaryWorker boundary{ mesh, flags.data() };
+      vtkSMPTools::For(0, numPts, Grain, boundary);
+      std::vector<vtkIdType> candidates;
+      for (vtkIdType i = 0; i < numPts; ++i)
+      {
+        if (flags[i])
+        {
+          candidates.push_back(i);
+        }
+      }
+      if (candidates.size() > 1)
+      {
+        const std::vector<vtkIdType> rep =
+          CoincidentGroups(pts, candidates, this->SeamTolerance * input->GetLength());
+        std::vector<unsigned char> isRep(candidates.size(), 0);
+        for (size_t k = 0; k < candidates.size(); ++k)
+        {
+          if (rep[k] != static_cast<vtkIdType>(k))
+          {
+            groups.emplace_back(candidates[rep[k]], candidates[k]);
+            isRep[rep[k]] = 1;
+          }
+        }
+        for (size_t k = 0; k < candidates.size(); ++k)
+        {
+          if (isRep[k])
+          {
+            groups.emplace_back(candidates[k], candidates[k]);
+          }
+        }
+        std::sort(groups.begin(), groups.end());
+      }
+    }
+    auto forEachGroup = [&](auto&& body)
+    {
+      for (size_t b = 0; b < groups.size();)
+      {
+        size_t e = b;
+        while (e < groups.size() && groups[e].first == groups[b].first)
+        {
+          ++e;
+        }
+        body(b, e);
+        b = e;
+      }
+    };
+    // One displacement per group: the mean of the members' own.
+    forEachGroup(
+      [&](size_t b, size_t e)
+      {
+        double mean[3] = { 0.0, 0.0, 0.0 };
+        for (size_t g = b; g < e; ++g)
+        {
+          double n[3];
+          InputNormal(ctx, groups[g].second, n);
+          for (int k = 0; k < 3; ++k)
+          {
+            mean[k] += distance[groups[g].second] * n[k];
+          }
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          mean[k] /= static_cast<double>(e - b);
+        }
+        for (size_t g = b; g < e; ++g)
+        {
+          WritePoint(ctx, groups[g].second, mean);
+        }
+      });
+
+    if (this->NormalMode == Mesh)
+    {
+      ArrayReader<R> moved(outPoints->GetData());
+      MeshNormalWorker<R> worker{ ctx, moved };
+      vtkSMPTools::For(0, numPts, Grain, worker);
+    }
+
+    // One normal per group member: the sum of the members' that share its input normal.
+    if (this->NormalMode != None)
+    {
+      ArrayReader<R> computed(outNormals);
+      forEachGroup(
+        [&](size_t b, size_t e)
+        {
+          std::vector<double> sums(3 * (e - b), 0.0);
+          for (size_t g = b; g < e; ++g)
+          {
+            double ng[3];
+            InputNormal(ctx, groups[g].second, ng);
+            for (size_t h = b; h < e; ++h)
+            {
+              double nh[3], x[3];
+              InputNormal(ctx, groups[h].second, nh);
+              if (Dot(ng, nh) > 1.0 - 1e-9)
+              {
+                computed.Get3(groups[h].second, x);
+                for (int k = 0; k < 3; ++k)
+                {
+                  sums[3 * (g - b) + k] += x[k];
+                }
+              }
+            }
+          }
+          for (size_t g = b; g < e; ++g)
+          {
+            WriteNormalAndTangent(ctx, groups[g].second, &sums[3 * (g - b)]);
+          }
+        });
+    }
+
+    output->CopyStructure(input);
+    output->SetPoints(outPoints);
+    output->GetPointData()->PassData(input->GetPointData());
+    output->GetCellData()->PassData(input->GetCellData());
+    if (outNormals)
+    {
+      output->GetPointData()->SetNormals(outNormals);
+    }
+    if (outTangents && outTangents->GetNumberOfComponents() == 3)
+    {
+      output->GetPointData()->SetTangents(outTangents);
+    }
+    else if (outTangents)
+    {
+      output->GetPointData()->AddArray(outTangents);
+    }
+    return 1;
+  };
+  return allFloat ? execute(float()) : execute(double());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDisplacementMapFilter::GetWrapAsString()
+{
+  switch (this->Wrap)
+  {
+    case ClampToEdge:
+      return "ClampToEdge";
+    case MirroredRepeat:
+      return "MirroredRepeat";
+    default:
+      return "Repeat";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDisplacementMapFilter::GetInterpolationAsString()
+{
+  switch (this->Interpolation)
+  {
+    case Nearest:
+      return "Nearest";
+    case Cubic:
+      return "Cubic";
+    default:
+      return "Linear";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDisplacementMapFilter::GetNormalModeAsString()
+{
+  switch (this->NormalMode)
+  {
+    case None:
+      return "None";
+    case Approximate:
+      return "Approximate";
+    case Mesh:
+      return "Mesh";
+    default:
+      return "Exact";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "Midlevel: " << this->Midlevel << "\n";
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
+  os << indent << "Interpolation: " << this->GetInterpolationAsString() << "\n";
+  os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";
+  os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
+  os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
+  os << indent << "NonFiniteCount (last scan of the height map): " << this->NonFiniteCount << "\n";
+}

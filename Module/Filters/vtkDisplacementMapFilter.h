@@ -1,0 +1,251 @@
+/**
+ * @class   vtkDisplacementMapFilter
+ * @brief   Displaces a surface along its normals by a height map and recomputes the normals.
+ *
+ * Input port 0 is a vtkPolyData with point normals and texture coordinates (s,t); input
+ * port 1 (`SetInputConnection(1, ...)`) is a 2-D vtkImageData, the height map h. Every point
+ * moves to
+ *
+ *     p' = p + Scale * (h(s,t) - Midlevel) * n
+ *
+ * which is displacement mapping as in seed 000: p*(u,v) = p(u,v) + d(u,v) n(u,v) with
+ * d = Scale * (h - Midlevel).
+ *
+ * Sampling the height map. The image is a texture: its origin and spacing are ignored,
+ * row 0 is t = 0 and texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H), as
+ * vtkSurfaceDetailConventions.h defines for every SurfaceDetail filter and shader.
+ * `Component` selects the channel; unsigned char and unsigned short are normalised to
+ * [0,1], float and double are used as they are (other scalar types are an error: convert
+ * them with vtkImageCast or vtkImageShiftScale). `Wrap` has vtkTexture's values and
+ * OpenGL's meaning; `Interpolation` is
+ * - Nearest: the texel that contains (s,t) (GL_NEAREST). Its derivative is zero, so the
+ *   analytic normal modes see flat terraces; use Mesh normals for a faceted look.
+ * - Linear: GL_LINEAR, the blend of the four nearest texel centres, so that the CPU
+ *   displacement matches what a vtkTexture with the same wrap mode shows on the GPU.
+ * - Cubic: Catmull-Rom (Keys' cubic convolution with a = -1/2) over the 4x4 nearest texel
+ *   centres, the same texel split as Linear, each index wrapped by `Wrap`. It interpolates
+ *   the texels (equal to Linear at texel centres), is C1, and reproduces quadratics, so a
+ *   smooth height map sampled into W texels is reconstructed with O(1/W^3) error in value
+ *   and O(1/W^2) in slope.
+ * A 1x1 height map is valid: it is a constant (a 1x1 texture samples to its only texel in
+ * every mode), so all points move by the same distance. NaN and infinite heights are
+ * treated as Midlevel, with one warning giving their count.
+ *
+ * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt, n the unit input normal and
+ * d = Scale (h - Midlevel). Differentiating p* = p + d n by the product rule gives
+ *     p*_s = P_s + d_s n + d n_s,   p*_t = P_t + d_t n + d n_t,   n* ~ p*_s x p*_t.
+ * - Exact: exactly that, m* = (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t). The
+ *   derivatives of the unit normal, n_s and n_t, are fitted per point by least squares to
+ *   the input normals of the point's neighbours (n_j - n_i ~ n_s ds + n_t dt over the
+ *   polygons around it, each neighbour weighted by the polygons it shares with the point);
+ *   on a regular grid this is a central difference, so the normal converges at second
+ *   order in the mesh spacing (TestDisplacementMapFilterAccuracy measures it).
+ * - Approximate: the seed's formula, which drops the d n_s and d n_t terms:
+ *   m* = P_s x P_t + d_s (n x P_t) - d_t (n x P_s), where P_s x P_t is taken as its part
+ *   along n, (n . (P_s x P_t)) n, so that a map without slope gives back n itself. d_s and
+ *   d_t are the analytic derivatives of the chosen interpolant (bilinear or bicubic), not
+ *   a finite difference with a fixed epsilon. Its error is a bias of order d times the
+ *   curvature, which no resolution removes.
+ * - Mesh: the area-weighted average of the displaced polygons' normals, each polygon
+ *   oriented as the input normals of its points (vtkPolyDataNormals without splitting).
+ * - None: the input normals are kept.
+ * In Approximate and Exact, P_s and P_t first lose their parts along n (the input normal
+ * defines the tangent plane), and the output normal is m* / |m*| times the sign of
+ * n . (P_s x P_t), so the result never depends on the orientation of the
+ * parameterisation. Where P_s x P_t vanishes, at a singular point of the parameterisation
+ * such as a sphere's pole (a neighbour at the same place with other texture coordinates,
+ * or zero dPdu/dPdv), no (s,t) derivative describes the surface and the input normal is
+ * kept. Normals are always finite: where m* has no direction, the input normal is used.
+ *
+ * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
+ * (vtkParametricSurfaceSource's GenerateDerivatives), they give P_s and P_t. They may be
+ * taken with respect to parameters (u,v) of which the texture coordinates are an
+ * axis-aligned affine function (the source's TextureRepeat and TextureOffset): the filter
+ * fits s = o_s + r_s u, t = o_t + r_t v by least squares over a sample of edges and uses
+ * P_s = dPdu / r_s, P_t = dPdv / r_t. Otherwise P_s and P_t are fitted
+ * per point by least squares to the position differences over the point's polygons against
+ * their texture-coordinate differences. "dPdu" and "dPdv" pass through unchanged: they
+ * describe the input surface (nobody asked for them to be recomputed).
+ *
+ * Tangents. When the point data has tangents (3 or 4 components, DESIGN.md's frame), the
+ * output tangents are re-orthogonalised to the new normals; the handedness w is kept.
+ * All other point and cell arrays pass through.
+ *
+ * Seams. With `MergeSeams` on (the default), points that coincide within
+ * `SeamTolerance` (relative to the bounding-box diagonal), such as the duplicated points of
+ * a texture seam or a pole, are moved by one shared displacement (the mean of their own),
+ * so no crack can open; those that also share their input normal get one shared output
+ * normal (the normalised sum of theirs). Points that coincide but have different input
+ * normals (a hard edge) keep their own normals but still move together. A seam cuts the
+ * mesh, so its duplicated points are boundary points: only points on an edge that is not
+ * shared by exactly two polygons (or in no polygon) are compared, which keeps the cost to
+ * the boundary.
+ *
+ * Precision: when the points and every array the filter reads are float (as VTK's sources
+ * make them), the work reads them in place and the output points, normals and tangents are
+ * float; otherwise the inputs are converted and the outputs are double.
+ *
+ * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
+ * recomputes the normals from the faces).
+ *
+ * Pieces: the filter works on whatever piece it gets, with as many points out as in; the
+ * height map is always requested whole. Positions and Approximate normals from dPdu/dPdv
+ * are those of the whole surface, except at seam points whose partners are in another
+ * piece (they are only merged within a piece); Exact, Mesh and fitted normals at a piece's
+ * border see only that piece's polygons (as vtkPolyDataNormals does), unless ghost levels
+ * are requested downstream. Threads: vtkSMPTools, with results independent of the number of
+ * threads.
+ *
+ * @sa vtkParametricSurfaceSource vtkHeightMapToNormalMap vtkWarpScalar vtkPolyDataNormals
+ */
+
+#ifndef vtkDisplacementMapFilter_h
+#define vtkDisplacementMapFilter_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkDataArray;
+
+class SURFACEDETAILFILTERS_EXPORT vtkDisplacementMapFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkDisplacementMapFilter* New();
+  vtkTypeMacro(vtkDisplacementMapFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum WrapModes
+  {
+    ClampToEdge = 0,
+    Repeat = 1,
+    MirroredRepeat = 2
+  };
+
+  enum InterpolationModes
+  {
+    Nearest = 0,
+    Linear = 1,
+    Cubic = 2
+  };
+
+  enum NormalModes
+  {
+    None = 0,
+    Approximate = 1,
+    Exact = 2,
+    Mesh = 3
+  };
+
+  ///@{
+  /**
+   * Displacement per unit of height above Midlevel, in the input's length units.
+   * Default 1.
+   */
+  vtkSetMacro(Scale, double);
+  vtkGetMacro(Scale, double);
+  ///@}
+
+  ///@{
+  /**
+   * The height (after normalisation of integer maps) that does not move the surface.
+   * Default 0.
+   */
+  vtkSetMacro(Midlevel, double);
+  vtkGetMacro(Midlevel, double);
+  ///@}
+
+  ///@{
+  /**
+   * The component of the height map's scalars that holds the height. Default 0.
+   */
+  vtkSetClampMacro(Component, int, 0, VTK_INT_MAX);
+  vtkGetMacro(Component, int);
+  ///@}
+
+  ///@{
+  /**
+   * How texture coordinates outside [0,1] read the height map, as vtkTexture::Wrap.
+   * Default Repeat.
+   */
+  vtkSetClampMacro(Wrap, int, ClampToEdge, MirroredRepeat);
+  vtkGetMacro(Wrap, int);
+  void SetWrapToClampToEdge() { this->SetWrap(ClampToEdge); }
+  void SetWrapToRepeat() { this->SetWrap(Repeat); }
+  void SetWrapToMirroredRepeat() { this->SetWrap(MirroredRepeat); }
+  const char* GetWrapAsString();
+  ///@}
+
+  ///@{
+  /**
+   * How the height map is reconstructed between texel centres. Default Linear.
+   */
+  vtkSetClampMacro(Interpolation, int, Nearest, Cubic);
+  vtkGetMacro(Interpolation, int);
+  void SetInterpolationToNearest() { this->SetInterpolation(Nearest); }
+  void SetInterpolationToLinear() { this->SetInterpolation(Linear); }
+  void SetInterpolationToCubic() { this->SetInterpolation(Cubic); }
+  const char* GetInterpolationAsString();
+  ///@}
+
+  ///@{
+  /**
+   * How the output normals are computed (see the class description). Default Exact.
+   */
+  vtkSetClampMacro(NormalMode, int, None, Mesh);
+  vtkGetMacro(NormalMode, int);
+  void SetNormalModeToNone() { this->SetNormalMode(None); }
+  void SetNormalModeToApproximate() { this->SetNormalMode(Approximate); }
+  void SetNormalModeToExact() { this->SetNormalMode(Exact); }
+  void SetNormalModeToMesh() { this->SetNormalMode(Mesh); }
+  const char* GetNormalModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Whether coincident points (texture seams, poles) are moved together and share normals.
+   * Default on.
+   */
+  vtkSetMacro(MergeSeams, bool);
+  vtkGetMacro(MergeSeams, bool);
+  vtkBooleanMacro(MergeSeams, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Distance under which points count as coincident, as a fraction of the input's
+   * bounding-box diagonal. Default 1e-6.
+   */
+  vtkSetClampMacro(SeamTolerance, double, 0.0, 1.0);
+  vtkGetMacro(SeamTolerance, double);
+  ///@}
+
+protected:
+  vtkDisplacementMapFilter();
+  ~vtkDisplacementMapFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Scale = 1.0;
+  double Midlevel = 0.0;
+  int Component = 0;
+  int Wrap = Repeat;
+  int Interpolation = Linear;
+  int NormalMode = Exact;
+  bool MergeSeams = true;
+  double SeamTolerance = 1e-6;
+
+  // The count of non-finite heights, kept while the height map's scalars do not change, so
+  // that re-executing for a new surface does not scan a large map again.
+  vtkMTimeType NonFiniteScanTime = 0;
+  vtkDataArray* NonFiniteScanArray = nullptr; // compared, never dereferenced
+  int NonFiniteScanComponent = -1;
+  vtkIdType NonFiniteCount = 0;
+
+private:
+  vtkDisplacementMapFilter(const vtkDisplacementMapFilter&) = delete;
+  void operator=(const vtkDisplacementMapFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,844 @@
+// vtkDisplacementMapFilter: sampling against an independent OpenGL-spec reference, seams,
+// poles, threads, pieces, Scale 0, stress (huge Scale, 1x1 / 2x2 / 8192x8192 / constant /
+// NaN height maps) and bad input.
+
+#include "DisplacementTestSurfaces.h"
+
+#include "vtkDisplacementMapFilter.h"
+
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkMath.h>
+#include <vtkMinimalStandardRandomSequence.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkRTAnalyticSource.h>
+#include <vtkSMPTools.h>
+#include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnsignedShortArray.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace DisplacementTest;
+
+namespace
+{
+// Counts error and warning events and keeps the last message.
+class Observer : public vtkCommand
+{
+public:
+  static Observer* New() { return new Observer; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)++;
+    this->Message += data ? static_cast<const char*>(data) : "";
+  }
+  int Errors = 0;
+  int Warnings = 0;
+  std::string Message; // all messages, in order
+};
+
+vtkSmartPointer<Observer> Watch(vtkAlgorithm* algorithm)
+{
+  auto obs = vtkSmartPointer<Observer>::New();
+  algorithm->AddObserver(vtkCommand::ErrorEvent, obs);
+  algorithm->AddObserver(vtkCommand::WarningEvent, obs);
+  algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, obs);
+  return obs;
+}
+
+vtkSmartPointer<vtkImageData> RandomImage(int W, int H, int seed)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(seed);
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(W, H, 1);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* data = static_cast<float*>(image->GetScalarPointer());
+  for (int k = 0; k < W * H; ++k)
+  {
+    data[k] = static_cast<float>(random->GetNextValue());
+  }
+  return image;
+}
+
+// A flat patch z = 0 with one point per (s,t) sample, normal +z, dPdu = +x, dPdv = +y, so
+// that the output z is the sampled height and the output normal the height's gradient.
+vtkSmartPointer<vtkPolyData> Probes(const std::vector<std::array<double, 2>>& st)
+{
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> normals, tcoords, du, dv;
+  normals->SetNumberOfComponents(3);
+  tcoords->SetNumberOfComponents(2);
+  du->SetName("dPdu");
+  du->SetNumberOfComponents(3);
+  dv->SetName("dPdv");
+  dv->SetNumberOfComponents(3);
+  for (const auto& x : st)
+  {
+    points->InsertNextPoint(x[0], x[1], 0.0);
+    normals->InsertNextTuple3(0, 0, 1);
+    tcoords->InsertNextTuple2(x[0], x[1]);
+    du->InsertNextTuple3(1, 0, 0);
+    dv->InsertNextTuple3(0, 1, 0);
+  }
+  poly->SetPoints(points);
+  poly->GetPointData()->SetNormals(normals);
+  poly->GetPointData()->SetTCoords(tcoords);
+  poly->GetPointData()->AddArray(du);
+  poly->GetPointData()->AddArray(dv);
+  return poly;
+}
+
+// OpenGL 4.5 spec, 8.14.2 and table 8.20, written out again independently of the
+// conventions header: the texel a wrap mode reads for integer coordinate i of size n.
+int GLWrap(int i, int n, int mode)
+{
+  if (mode == vtkDisplacementMapFilter::Repeat)
+  {
+    return ((i % n) + n) % n;
+  }
+  if (mode == vtkDisplacementMapFilter::MirroredRepeat)
+  {
+    // mirror(a) = a for a >= 0, -(1 + a) otherwise; (n - 1) - mirror((i mod 2n) - n)
+    const int a = (((i % (2 * n)) + 2 * n) % (2 * n)) - n;
+    const int mirror = a >= 0 ? a : -(1 + a);
+    return (n - 1) - mirror;
+  }
+  return i < 0 ? 0 : (i >= n ? n - 1 : i);
+}
+
+double GLLinear(const float* img, int W, int H, int mode, double s, double t)
+{
+  const double u = s * W, v = t * H;
+  const int i0 = static_cast<int>(std::floor(u - 0.5)), j0 = static_cast<int>(std::floor(v - 0.5));
+  const double a = (u - 0.5) - std::floor(u - 0.5), b = (v - 0.5) - std::floor(v - 0.5);
+  auto T = [&](int i, int j) { return img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)]; };
+  return (1 - a) * (1 - b) * T(i0, j0) + a * (1 - b) * T(i0 + 1, j0) + (1 - a) * b * T(i0, j0 + 1) +
+    a * b * T(i0 + 1, j0 + 1);
+}
+
+double GLNearest(const float* img, int W, int H, int mode, double s, double t)
+{
+  const int i = static_cast<int>(std::floor(s * W)), j = static_cast<int>(std::floor(t * H));
+  return img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)];
+}
+
+vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, int mode,
+  double scale = 0.1, double mid = 0.5, int interp = vtkDisplacementMapFilter::Linear,
+  int wrap = vtkDisplacementMapFilter::Repeat)
+{
+  vtkNew<vtkDisplacementMapFilter> f;
+  f->SetInputData(0, mesh);
+  f->SetInputData(1, image);
+  f->SetNormalMode(mode);
+  f->SetScale(scale);
+  f->SetMidlevel(mid);
+  f->SetInterpolation(interp);
+  f->SetWrap(wrap);
+  f->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(f->GetOutput());
+  return out;
+}
+
+bool AllFinite(vtkPolyData* out)
+{
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3], n[3];
+    out->GetPoint(i, p);
+    out->GetPointData()->GetNormals()->GetTuple(i, n);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (!std::isfinite(p[k]) || !std::isfinite(n[k]))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool SameBits(vtkDataArray* a, vtkDataArray* b)
+{
+  if (a->GetDataType() != b->GetDataType() || a->GetNumberOfValues() != b->GetNumberOfValues())
+  {
+    return false;
+  }
+  return std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+           a->GetNumberOfValues() * a->GetDataTypeSize()) == 0;
+}
+
+const int AllModes[4] = { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+  vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh };
+
+// Adds spherical texture coordinates to vtkSphereSource's output, piece by piece.
+class SphereTCoords : public vtkPolyDataAlgorithm
+{
+public:
+  static SphereTCoords* New();
+  vtkTypeMacro(SphereTCoords, vtkPolyDataAlgorithm);
+
+protected:
+  int RequestData(vtkInformation*, vtkInformationVector** in, vtkInformationVector* out) override
+  {
+    vtkPolyData* input = vtkPolyData::GetData(in[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(out, 0);
+    output->ShallowCopy(input);
+    vtkNew<vtkDoubleArray> tc;
+    tc->SetNumberOfComponents(2);
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      input->GetPoint(i, p);
+      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      tc->InsertNextTuple2(std::atan2(p[1], p[0]) / (2 * Pi) + 0.5, std::acos(p[2] / r) / Pi);
+    }
+    output->GetPointData()->SetTCoords(tc);
+    return 1;
+  }
+};
+vtkStandardNewMacro(SphereTCoords);
+} // namespace
+
+// The Linear and Nearest samples equal an independent transcription of OpenGL's sampling
+// rules for every wrap mode, inside and outside [0,1] (so the CPU displacement matches
+// what a vtkTexture shows).
+TEST(DisplacementMapFilter, SamplingMatchesOpenGLRules)
+{
+  const int W = 7, H = 5;
+  auto image = RandomImage(W, H, 3);
+  const float* img = static_cast<float*>(image->GetScalarPointer());
+  std::vector<std::array<double, 2>> st;
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(11);
+  for (int k = 0; k < 400; ++k)
+  {
+    const double s = random->GetNextRangeValue(-2.3, 3.1);
+    const double t = random->GetNextRangeValue(-2.3, 3.1);
+    st.push_back({ s, t });
+  }
+  st.push_back({ 0.0, 0.0 });
+  st.push_back({ 1.0, 1.0 });
+  st.push_back({ 0.5 / W, 0.5 / H });
+  auto probes = Probes(st);
+  for (int wrap : { vtkDisplacementMapFilter::ClampToEdge, vtkDisplacementMapFilter::Repeat,
+         vtkDisplacementMapFilter::MirroredRepeat })
+  {
+    for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear })
+    {
+      auto out = Displace(probes, image, vtkDisplacementMapFilter::None, 1.0, 0.0, interp, wrap);
+      for (size_t k = 0; k < st.size(); ++k)
+      {
+        const double expected = interp == vtkDisplacementMapFilter::Linear
+          ? GLLinear(img, W, H, wrap, st[k][0], st[k][1])
+          : GLNearest(img, W, H, wrap, st[k][0], st[k][1]);
+        double p[3];
+        out->GetPoint(static_cast<vtkIdType>(k), p);
+        ASSERT_NEAR(p[2], expected, 1e-12) << "wrap " << wrap << " interp " << interp << " at ("
+                                           << st[k][0] << ", " << st[k][1] << ")";
+      }
+    }
+  }
+}
+
+// Cubic is Catmull-Rom: it reproduces a quadratic exactly (away from clamped edges), so
+// height and slope, hence the normal of z = Scale h, are exact; Linear is exact for a
+// bilinear ramp.
+TEST(DisplacementMapFilter, CubicAndLinearReproducePolynomials)
+{
+  const int W = 16, H = 12;
+  auto quad = [](double s, double t)
+  { return 0.2 + 0.3 * s - 0.1 * t + 0.4 * s * s + 0.25 * s * t - 0.3 * t * t; };
+  auto grad = [](double s, double t) {
+    return std::array<double, 2>{ 0.3 + 0.8 * s + 0.25 * t, -0.1 + 0.25 * s - 0.6 * t };
+  };
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(W, H, 1);
+  image->AllocateScalars(VTK_DOUBLE, 1);
+  for (int j = 0; j < H; ++j)
+  {
+    for (int i = 0; i < W; ++i)
+    {
+      image->SetScalarComponentFromDouble(i, j, 0, 0, quad((i + 0.5) / W, (j + 0.5) / H));
+    }
+  }
+  std::vector<std::array<double, 2>> st;
+  for (int k = 0; k < 50; ++k)
+  {
+    st.push_back(
+      { 0.2 + 0.6 * std::fmod(k * 0.618034, 1.0), 0.2 + 0.6 * std::fmod(k * 0.41421, 1.0) });
+  }
+  auto probes = Probes(st);
+  const double scale = 0.7;
+  for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
+  {
+    auto out = Displace(probes, image, mode, scale, 0.0, vtkDisplacementMapFilter::Cubic,
+      vtkDisplacementMapFilter::ClampToEdge);
+    for (size_t k = 0; k < st.size(); ++k)
+    {
+      double p[3], n[3];
+      out->GetPoint(static_cast<vtkIdType>(k), p);
+      out->GetPointData()->GetNormals()->GetTuple(static_cast<vtkIdType>(k), n);
+      EXPECT_NEAR(p[2], scale * quad(st[k][0], st[k][1]), 1e-12);
+      const auto g = grad(st[k][0], st[k][1]);
+      const Vec truth = Unit({ -scale * g[0], -scale * g[1], 1.0 });
+      EXPECT_LT(AngleDeg({ n[0], n[1], n[2] }, truth), 1e-9);
+    }
+  }
+}
+
+// Texture seams and poles: coincident points move identically and (same input normal)
+// get identical normals, in every mode, even where the height map itself disagrees across
+// the seam (ClampToEdge, random texels). Without MergeSeams they would not.
+TEST(DisplacementMapFilter, SeamsAndPolesAreWatertight)
+{
+  const Surface s = Sphere(0.2);
+  auto mesh = MakeMesh(s, 24, 16, false);
+  auto image = RandomImage(32, 16, 5);
+  const int U = 24, V = 16;
+  // Coincident points move by one displacement: outputs as far apart as the inputs were
+  // (the closed form puts seam and pole duplicates up to 1e-16 apart), exactly equal when
+  // the inputs were; and exactly one normal (None keeps the input normals).
+  auto check = [&](vtkPolyData* out, bool normalsToo, bool expectIdentical)
+  {
+    int differing = 0;
+    for (int j = 0; j <= V; ++j)
+    {
+      const vtkIdType a = static_cast<vtkIdType>(j) * (U + 1), b = a + U; // u = 0 and u = 1
+      std::vector<vtkIdType> group = { b };
+      if (j == 0 || j == V)
+      {
+        for (int i = 1; i < U; ++i)
+        {
+          group.push_back(a + i); // the whole pole row
+        }
+      }
+      double pa[3], na[3], ia[3];
+      out->GetPoint(a, pa);
+      mesh->GetPoint(a, ia);
+      out->GetPointData()->GetNormals()->GetTuple(a, na);
+      for (vtkIdType g : group)
+      {
+        double pb[3], nb[3], ib[3];
+        out->GetPoint(g, pb);
+        mesh->GetPoint(g, ib);
+        out->GetPointData()->GetNormals()->GetTuple(g, nb);
+        const double din = std::sqrt(vtkMath::Distance2BetweenPoints(ia, ib));
+        const double dout = std::sqrt(vtkMath::Distance2BetweenPoints(pa, pb));
+        // Exactly equal values (+0 and -0 are the same place).
+        const bool samePoint = din == 0.0 ? dout == 0.0 : dout <= din + 1e-15;
+        const bool sameNormal = !normalsToo || (na[0] == nb[0] && na[1] == nb[1] && na[2] == nb[2]);
+        differing += samePoint && sameNormal ? 0 : 1;
+        if (expectIdentical)
+        {
+          EXPECT_TRUE(samePoint) << "row " << j << " point " << g << ": " << dout << " vs " << din;
+          EXPECT_TRUE(sameNormal) << "row " << j << " point " << g;
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_TRUE(std::isfinite(na[k]));
+      }
+    }
+    return differing;
+  };
+  for (int wrap : { vtkDisplacementMapFilter::Repeat, vtkDisplacementMapFilter::ClampToEdge })
+  {
+    for (int mode : AllModes)
+    {
+      SCOPED_TRACE(std::string("mode ") + std::to_string(mode) + " wrap " + std::to_string(wrap));
+      auto out = Displace(mesh, image, mode, 0.2, 0.5, vtkDisplacementMapFilter::Cubic, wrap);
+      check(out, mode != vtkDisplacementMapFilter::None, true);
+      EXPECT_TRUE(AllFinite(out));
+    }
+  }
+  // The same with MergeSeams off shows cracks: the test can fail.
+  vtkNew<vtkDisplacementMapFilter> f;
+  f->SetInputData(0, mesh);
+  f->SetInputData(1, image);
+  f->SetWrapToClampToEdge();
+  f->SetScale(0.2);
+  f->MergeSeamsOff();
+  f->Update();
+  EXPECT_GT(check(f->GetOutput(), true, false), 0);
+  // Pole normals are finite and point along the axis (the height is radial there).
+  auto out = Displace(MakeMesh(s, 24, 16, false), MakeHeightImage(s.Height, 256, 128),
+    vtkDisplacementMapFilter::Exact, 0.2, 0.5, vtkDisplacementMapFilter::Cubic);
+  double n[3];
+  out->GetPointData()->GetNormals()->GetTuple(0, n);
+  EXPECT_LT(AngleDeg({ n[0], n[1], n[2] }, { 0, -1, 0 }), 1.0);
+}
+
+// Results do not depend on the number of threads, bit for bit.
+TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
+{
+  const Surface s = Torus();
+  auto mesh = MakeMesh(s, 96, 48, false);
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  for (int mode : AllModes)
+  {
+    vtkSMPTools::Initialize(1);
+    auto one = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+    vtkSMPTools::Initialize(2);
+    ASSERT_EQ(vtkSMPTools::GetEstimatedNumberOfThreads(), 2);
+    auto two = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+    EXPECT_TRUE(SameBits(one->GetPoints()->GetData(), two->GetPoints()->GetData())) << mode;
+    EXPECT_TRUE(SameBits(one->GetPointData()->GetNormals(), two->GetPointData()->GetNormals()))
+      << mode;
+    EXPECT_TRUE(SameBits(
+      one->GetPointData()->GetArray("Tangents"), two->GetPointData()->GetArray("Tangents")))
+      << mode;
+  }
+  // Back to every core (VTK 9.1 keeps 1 thread on Initialize(0) after Initialize(1)).
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// Scale 0 changes nothing, to the bit (points in every mode; normals and tangents in the
+// modes that derive them from the height map).
+TEST(DisplacementMapFilter, ScaleZeroIsIdentity)
+{
+  const Surface s = Sphere();
+  for (bool floatPoints : { false, true })
+  {
+    auto mesh = MakeMesh(s, 32, 16, true, floatPoints);
+    auto image = MakeHeightImage(s.Height, 64, 32);
+    for (int mode : AllModes)
+    {
+      auto out = Displace(mesh, image, mode, 0.0, 0.5, vtkDisplacementMapFilter::Cubic);
+      EXPECT_TRUE(SameBits(mesh->GetPoints()->GetData(), out->GetPoints()->GetData())) << mode;
+      if (mode != vtkDisplacementMapFilter::Mesh)
+      {
+        EXPECT_TRUE(SameBits(mesh->GetPointData()->GetNormals(), out->GetPointData()->GetNormals()))
+          << mode;
+        EXPECT_TRUE(SameBits(
+          mesh->GetPointData()->GetArray("Tangents"), out->GetPointData()->GetArray("Tangents")))
+          << mode;
+      }
+      EXPECT_TRUE(SameBits(mesh->GetPointData()->GetTCoords(), out->GetPointData()->GetTCoords()));
+    }
+  }
+}
+
+// dPdu/dPdv with respect to (u,v) while the texture coordinates are s = 0.25 + 3u,
+// t = 2v (a parametric source's TextureRepeat/TextureOffset): the filter finds the scale,
+// so the normals equal those from derivatives it fits itself (exact on a flat patch).
+TEST(DisplacementMapFilter, DerivativesWithTextureRepeat)
+{
+  const Surface s = Rectangle();
+  auto mesh = MakeMesh(s, 40, 30, true);
+  vtkDataArray* tc = mesh->GetPointData()->GetTCoords();
+  for (vtkIdType i = 0; i < tc->GetNumberOfTuples(); ++i)
+  {
+    tc->SetTuple2(i, 0.25 + 3.0 * tc->GetComponent(i, 0), 2.0 * tc->GetComponent(i, 1));
+  }
+  auto fitted = vtkSmartPointer<vtkPolyData>::New();
+  fitted->DeepCopy(mesh);
+  fitted->GetPointData()->RemoveArray("dPdu");
+  fitted->GetPointData()->RemoveArray("dPdv");
+  auto image = MakeHeightImage(s.Height, 128, 128);
+  for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
+  {
+    auto a = Displace(mesh, image, mode, 0.2, 0.5, vtkDisplacementMapFilter::Cubic);
+    auto b = Displace(fitted, image, mode, 0.2, 0.5, vtkDisplacementMapFilter::Cubic);
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      Vec na, nb;
+      a->GetPointData()->GetNormals()->GetTuple(i, na.data());
+      b->GetPointData()->GetNormals()->GetTuple(i, nb.data());
+      worst = std::max(worst, AngleDeg(na, nb));
+    }
+    EXPECT_LT(worst, 1e-6) << mode;
+  }
+}
+
+// Tangents come out orthogonal to the new normals, unit length, with the input's w.
+TEST(DisplacementMapFilter, TangentsFollowNormals)
+{
+  const Surface s = Torus(0.15);
+  auto mesh = MakeMesh(s, 48, 24, false);
+  auto out =
+    Displace(mesh, MakeHeightImage(s.Height, 128, 64), vtkDisplacementMapFilter::Exact, 0.15);
+  vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
+  vtkDataArray* tin = mesh->GetPointData()->GetArray("Tangents");
+  ASSERT_EQ(t->GetNumberOfComponents(), 4);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double n[3], tg[4], t0[4];
+    out->GetPointData()->GetNormals()->GetTuple(i, n);
+    t->GetTuple(i, tg);
+    tin->GetTuple(i, t0);
+    worst = std::max(worst, std::abs(n[0] * tg[0] + n[1] * tg[1] + n[2] * tg[2]));
+    EXPECT_NEAR(tg[0] * tg[0] + tg[1] * tg[1] + tg[2] * tg[2], 1.0, 1e-12);
+    EXPECT_EQ(tg[3], t0[3]);
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+// Pieces pass through in count, and every piece gets the whole height map (the wavelet
+// source would otherwise make only the piece's share of it).
+TEST(DisplacementMapFilter, PiecesPassThrough)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(20);
+  vtkNew<SphereTCoords> tcoords;
+  tcoords->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkRTAnalyticSource> wavelet; // float scalars, streams by extent
+  wavelet->SetWholeExtent(0, 63, 0, 31, 0, 0);
+  vtkNew<vtkDisplacementMapFilter> f;
+  f->SetInputConnection(0, tcoords->GetOutputPort());
+  f->SetInputConnection(1, wavelet->GetOutputPort());
+  f->SetScale(0.001);
+  f->SetNormalModeToApproximate();
+  tcoords->Update();
+  const vtkIdType whole = tcoords->GetOutput()->GetNumberOfPoints();
+  const int pieces = 3;
+  vtkIdType total = 0;
+  for (int p = 0; p < pieces; ++p)
+  {
+    f->UpdatePiece(p, pieces, 0);
+    tcoords->UpdatePiece(p, pieces, 0);
+    EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), tcoords->GetOutput()->GetNumberOfPoints());
+    EXPECT_GT(f->GetOutput()->GetNumberOfPoints(), 0);
+    int ext[6];
+    wavelet->GetOutput()->GetExtent(ext);
+    EXPECT_EQ(ext[1], 63);
+    EXPECT_EQ(ext[3], 31);
+    total += f->GetOutput()->GetNumberOfPoints();
+  }
+  EXPECT_GE(total, whole); // pieces share their boundary points
+}
+
+// Huge Scale: self-intersecting, but finite; float points clamp to the float range.
+TEST(DisplacementMapFilter, HugeScaleStaysFinite)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  for (bool floatPoints : { false, true })
+  {
+    auto mesh = MakeMesh(s, 32, 16, true, floatPoints);
+    for (double scale : { 1e6, 1e30, 1e300, std::numeric_limits<double>::infinity() })
+    {
+      for (int mode : AllModes)
+      {
+        auto out = Displace(mesh, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
+        EXPECT_TRUE(AllFinite(out)) << scale << " mode " << mode;
+      }
+    }
+  }
+}
+
+// 1x1 is a constant; a constant map moves every point by the same distance along its
+// normal and, in Approximate/Exact, keeps the normal; 2x2 works too.
+TEST(DisplacementMapFilter, TinyAndConstantHeightMaps)
+{
+  const Surface s = Sphere();
+  auto mesh = MakeMesh(s, 16, 8, false);
+  for (int size : { 1, 2 })
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(size, size, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    std::memset(image->GetScalarPointer(), 255, static_cast<size_t>(size * size));
+    for (int mode : AllModes)
+    {
+      for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
+             vtkDisplacementMapFilter::Cubic })
+      {
+        auto out = Displace(mesh, image, mode, 0.25, 0.5, interp);
+        ASSERT_EQ(out->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+        for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+        {
+          double p[3], n[3];
+          out->GetPoint(i, p);
+          out->GetPointData()->GetNormals()->GetTuple(i, n);
+          // unit sphere: h = 1 (255 normalised), d = 0.25 (1 - 0.5)
+          EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.125, 1e-12);
+          if (mode != vtkDisplacementMapFilter::Mesh)
+          {
+            EXPECT_LT(AngleDeg({ n[0], n[1], n[2] }, { p[0], p[1], p[2] }), 1e-6);
+          }
+        }
+      }
+    }
+  }
+  // 2x2 with different texels: Linear at the texel centres gives the texels exactly.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(2, 2, 1);
+  image->AllocateScalars(VTK_UNSIGNED_SHORT, 1);
+  auto* v = static_cast<unsigned short*>(image->GetScalarPointer());
+  v[0] = 0;
+  v[1] = 65535;
+  v[2] = 13107; // 0.2
+  v[3] = 32767;
+  auto probes = Probes({ { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.25, 0.75 }, { 0.75, 0.75 } });
+  auto out = Displace(probes, image, vtkDisplacementMapFilter::Approximate, 1.0, 0.0);
+  const double expected[4] = { 0.0, 1.0, 0.2, 32767.0 / 65535.0 };
+  for (int k = 0; k < 4; ++k)
+  {
+    double p[3];
+    out->GetPoint(k, p);
+    EXPECT_NEAR(p[2], expected[k], 1e-12);
+  }
+}
+
+// Component selects the channel: an RGB map with different values per channel.
+TEST(DisplacementMapFilter, ComponentSelectsTheChannel)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 4, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* v = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < 16; ++k)
+  {
+    v[3 * k] = 10;
+    v[3 * k + 1] = 100;
+    v[3 * k + 2] = 200;
+  }
+  auto probes = Probes({ { 0.3, 0.6 } });
+  for (int component : { 0, 1, 2 })
+  {
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputData(0, probes);
+    f->SetInputData(1, image);
+    f->SetComponent(component);
+    f->Update();
+    double p[3];
+    f->GetOutput()->GetPoint(0, p);
+    EXPECT_NEAR(p[2], (component == 0 ? 10 : component == 1 ? 100 : 200) / 255.0, 1e-12);
+  }
+}
+
+// 8192 x 8192 texels (64 MB of unsigned char): sampled where expected, in a few seconds.
+TEST(DisplacementMapFilter, HugeHeightMap)
+{
+  const int N = 8192;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(N, N, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* data = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (size_t j = 0; j < static_cast<size_t>(N); ++j)
+  {
+    std::memset(data + j * N, static_cast<int>((j * 256) / N), N);
+  }
+  std::vector<std::array<double, 2>> st;
+  for (int k = 0; k < 256; ++k)
+  {
+    st.push_back({ 0.3, (k * 32 + 16.5) / N }); // row k*32+16, a texel centre
+  }
+  auto out = Displace(Probes(st), image, vtkDisplacementMapFilter::Exact, 1.0, 0.0);
+  for (int k = 0; k < 256; ++k)
+  {
+    double p[3];
+    out->GetPoint(k, p);
+    EXPECT_NEAR(p[2], static_cast<double>(((k * 32 + 16) * 256) / N) / 255.0, 1e-12);
+  }
+}
+
+// NaN and infinite heights count as Midlevel, with one warning naming the count.
+TEST(DisplacementMapFilter, NaNHeightsAreMidlevelWithOneWarning)
+{
+  const int W = 8, H = 8;
+  auto image = RandomImage(W, H, 9);
+  auto* data = static_cast<float*>(image->GetScalarPointer());
+  data[0] = std::numeric_limits<float>::quiet_NaN();
+  data[9] = std::numeric_limits<float>::infinity();
+  data[10] = -std::numeric_limits<float>::infinity();
+  auto probes = Probes({ { 0.5 / W, 0.5 / H }, { 1.5 / W, 1.5 / H }, { 2.5 / W, 1.5 / H } });
+  vtkNew<vtkDisplacementMapFilter> f;
+  auto obs = Watch(f);
+  f->SetInputData(0, probes);
+  f->SetInputData(1, image);
+  f->SetMidlevel(0.5);
+  f->SetScale(1.0);
+  f->SetInterpolationToNearest();
+  f->Update();
+  EXPECT_EQ(obs->Warnings, 1);
+  EXPECT_EQ(obs->Errors, 0);
+  EXPECT_NE(obs->Message.find("3 height value(s)"), std::string::npos) << obs->Message;
+  // Again (the count is cached): one more warning; and after an edit, the new count.
+  f->Modified();
+  f->Update();
+  EXPECT_EQ(obs->Warnings, 2);
+  data[20] = std::numeric_limits<float>::quiet_NaN();
+  image->Modified();
+  obs->Message.clear();
+  f->Update();
+  EXPECT_EQ(obs->Warnings, 3);
+  EXPECT_NE(obs->Message.find("4 height value(s)"), std::string::npos) << obs->Message;
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    double p[3];
+    f->GetOutput()->GetPoint(i, p);
+    EXPECT_EQ(p[2], 0.0);
+  }
+  // Linear and Cubic next to the NaN stay finite in every normal mode.
+  const Surface s = Rectangle();
+  auto mesh = MakeMesh(s, 16, 16, false);
+  for (int mode : AllModes)
+  {
+    auto out = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+    EXPECT_TRUE(AllFinite(out));
+  }
+}
+
+// Every bad input: an error naming the problem, empty output, no crash, input untouched.
+TEST(DisplacementMapFilter, BadInputIsAnError)
+{
+  const Surface s = Rectangle();
+  auto good = MakeMesh(s, 4, 4, false);
+  auto image = RandomImage(4, 4, 1);
+  struct Case
+  {
+    std::string Name, Expect;
+    std::function<void(vtkDisplacementMapFilter*)> Setup;
+  };
+  auto noTCoords = vtkSmartPointer<vtkPolyData>::New();
+  noTCoords->DeepCopy(good);
+  noTCoords->GetPointData()->SetTCoords(nullptr);
+  auto noNormals = vtkSmartPointer<vtkPolyData>::New();
+  noNormals->DeepCopy(good);
+  noNormals->GetPointData()->SetNormals(nullptr);
+  vtkNew<vtkImageData> empty;
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(4, 4, 2);
+  volume->AllocateScalars(VTK_FLOAT, 1);
+  vtkNew<vtkImageData> ints;
+  ints->SetDimensions(4, 4, 1);
+  ints->AllocateScalars(VTK_INT, 1);
+  const unsigned long before = good->GetMTime();
+  std::vector<Case> cases = {
+    { "no tcoords", "texture coordinates",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, noTCoords);
+        f->SetInputData(1, image);
+      } },
+    { "no normals", "normals",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, noNormals);
+        f->SetInputData(1, image);
+      } },
+    { "empty image", "empty",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, good);
+        f->SetInputData(1, empty);
+      } },
+    { "volume", "2-D image",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, good);
+        f->SetInputData(1, volume);
+      } },
+    { "int scalars", "unsigned char",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, good);
+        f->SetInputData(1, ints);
+      } },
+    { "component", "Component 3",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, good);
+        f->SetInputData(1, image);
+        f->SetComponent(3);
+      } },
+    { "no height map", "port 1", [&](vtkDisplacementMapFilter* f) { f->SetInputData(0, good); } },
+    { "polydata on port 1", "vtkImageData",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, good);
+        f->SetInputData(1, good);
+      } },
+    { "image on port 0", "vtkPolyData",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, image);
+        f->SetInputData(1, image);
+      } },
+  };
+  for (const Case& c : cases)
+  {
+    SCOPED_TRACE(c.Name);
+    vtkNew<vtkDisplacementMapFilter> f;
+    auto obs = Watch(f);
+    c.Setup(f);
+    f->Update();
+    EXPECT_GE(obs->Errors, 1);
+    EXPECT_NE(obs->Message.find(c.Expect), std::string::npos) << obs->Message;
+    EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  EXPECT_EQ(good->GetMTime(), before);
+  EXPECT_EQ(good->GetNumberOfPoints(), 25);
+  // An empty surface is not an error: empty in, empty out.
+  vtkNew<vtkPolyData> nothing;
+  vtkNew<vtkDisplacementMapFilter> f;
+  auto obs = Watch(f);
+  f->SetInputData(0, nothing);
+  f->SetInputData(1, image);
+  f->Update();
+  EXPECT_EQ(obs->Errors, 0);
+  EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// Other arrays pass through; None keeps normals; PrintSelf names every setting.
+TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
+{
+  const Surface s = Torus();
+  auto mesh = MakeMesh(s, 8, 4, true);
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("Ids");
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    ids->InsertNextValue(static_cast<int>(i));
+  }
+  mesh->GetPointData()->AddArray(ids);
+  auto out = Displace(mesh, MakeHeightImage(s.Height, 32, 16), vtkDisplacementMapFilter::None);
+  EXPECT_TRUE(SameBits(out->GetPointData()->GetArray("Ids"), ids));
+  EXPECT_TRUE(SameBits(out->GetPointData()->GetNormals(), mesh->GetPointData()->GetNormals()));
+  EXPECT_EQ(out->GetNumberOfCells(), mesh->GetNumberOfCells());
+
+  vtkNew<vtkDisplacementMapFilter> f;
+  EXPECT_EQ(f->GetNormalMode(), vtkDisplacementMapFilter::Exact);
+  f->SetNormalModeToMesh();
+  EXPECT_EQ(f->GetNormalMode(), vtkDisplacementMapFilter::Mesh);
+  f->SetNormalModeToApproximate();
+  f->SetWrapToMirroredRepeat();
+  EXPECT_EQ(f->GetWrap(), vtkDisplacementMapFilter::MirroredRepeat);
+  f->SetInterpolationToCubic();
+  f->SetMidlevel(0.25);
+  std::ostringstream os;
+  f->Print(os);
+  for (const char* key :
+    { "Scale: 1", "Midlevel: 0.25", "Component: 0", "Wrap: MirroredRepeat", "Interpolation: Cubic",
+      "NormalMode: Approximate", "MergeSeams: On", "SeamTolerance: 1e-06" })
+  {
+    EXPECT_NE(os.str().find(key), std::string::npos) << key;
+  }
+}
