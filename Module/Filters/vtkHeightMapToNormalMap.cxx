@@ -45,7 +45,9 @@ void HeightNormalisation(double& scale, double& offset)
   offset = -lo * scale;
 }
 
-// Output encoding: floats keep 0.5*n + 0.5, integers round it to nearest on their full range.
+// Output encoding of e in [0,1] (unit-vector components and clamped depths are): floats
+// keep it, integers round it to nearest on their full range. Through int, so that it
+// vectorises.
 template <typename OutT, typename Real>
 inline OutT Quantise(Real e)
 {
@@ -54,8 +56,7 @@ inline OutT Quantise(Real e)
     return static_cast<OutT>(e);
   }
   const Real top = static_cast<Real>(std::numeric_limits<OutT>::max());
-  const Real q = e * top + Real(0.5);
-  return static_cast<OutT>(std::min(std::max(q, Real(0)), top));
+  return static_cast<OutT>(static_cast<int>(e * top + Real(0.5)));
 }
 
 template <typename Real>
@@ -63,7 +64,7 @@ struct RowCache
 {
   std::array<std::vector<Real>, 3> Rows;
   std::array<int, 3> Tags{ { -1, -1, -1 } };
-  std::vector<Real> Gx, Gy;
+  std::vector<Real> Gx, Gy, B, A;
 };
 
 template <typename InT, typename Real, typename OutT>
@@ -92,6 +93,8 @@ struct NormalMapKernel
     const size_t n = static_cast<size_t>(this->I1 - this->I0 + 1);
     c.Gx.resize(n);
     c.Gy.resize(n);
+    c.B.resize(n);
+    c.A.resize(this->OutComps == 4 ? n : 0);
   }
 
   // Row r of the height map as Real, padded with the wrapped texel on each side so that the
@@ -113,9 +116,16 @@ struct NormalMapKernel
     Real* row = c.Rows[b].data();
     const InT* src = this->In + static_cast<size_t>(r) * this->W * this->InStride;
     const int stride = this->InStride;
-    for (int k = 0; k < this->W; ++k)
+    if (stride == 1)
     {
-      row[k + 1] = static_cast<Real>(src[static_cast<size_t>(k) * stride]);
+      std::copy(src, src + this->W, row + 1); // vectorised conversion of the common case
+    }
+    else
+    {
+      for (int k = 0; k < this->W; ++k)
+      {
+        row[k + 1] = static_cast<Real>(src[static_cast<size_t>(k) * stride]);
+      }
     }
     row[0] = row[vtkSurfaceDetail::WrapIndex(-1, this->W, this->Wrap) + 1];
     row[this->W + 1] = row[vtkSurfaceDetail::WrapIndex(this->W, this->W, this->Wrap) + 1];
@@ -142,7 +152,7 @@ struct NormalMapKernel
         : this->Row(c, keep[0], keep) + 1 + this->I0;
       this->Slopes(m, c0, p, n, gx, gy);
       OutT* out = this->Out + static_cast<size_t>(j - this->J0) * n * this->OutComps;
-      this->Encode(c0, gx, gy, n, out);
+      this->Encode(c, c0, n, out);
     }
   }
 
@@ -190,29 +200,48 @@ struct NormalMapKernel
     }
   }
 
-  void Encode(const Real* c0, const Real* gx, const Real* gy, int n, OutT* out) const
+  // Two passes so that the arithmetic vectorises: unit normals into planar scratch rows,
+  // then quantisation into the interleaved output.
+  void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
   {
     const Real lim = static_cast<Real>(MaxSlope);
     const Real half = Real(0.5);
     const Real ySign = this->GreenUp ? Real(-1) : Real(1);
-    const int nc = this->OutComps;
+    Real* r = c.Gx.data(); // the slopes are overwritten by the colours, texel by texel
+    Real* g = c.Gy.data();
+    Real* b = c.B.data();
     for (int i = 0; i < n; ++i)
     {
-      const Real x = -std::min(std::max(gx[i], -lim), lim);
-      const Real y = ySign * std::min(std::max(gy[i], -lim), lim);
+      const Real x = -std::min(std::max(r[i], -lim), lim);
+      const Real y = ySign * std::min(std::max(g[i], -lim), lim);
       const Real len = std::sqrt(x * x + y * y + Real(1));
-      out[static_cast<size_t>(i) * nc] = Quantise<OutT>(half * (x / len) + half);
-      out[static_cast<size_t>(i) * nc + 1] = Quantise<OutT>(half * (y / len) + half);
-      out[static_cast<size_t>(i) * nc + 2] = Quantise<OutT>(half * (Real(1) / len) + half);
+      r[i] = half * (x / len) + half;
+      g[i] = half * (y / len) + half;
+      b[i] = half * (Real(1) / len) + half;
     }
+    const int nc = this->OutComps;
     if (nc == 4)
     {
+      Real* a = c.A.data();
       for (int i = 0; i < n; ++i)
       {
         const Real depth = Real(1) - (c0[i] * this->HScale + this->HOffset);
-        out[static_cast<size_t>(i) * 4 + 3] =
-          Quantise<OutT>(std::min(std::max(depth, Real(0)), Real(1)));
+        a[i] = std::min(std::max(depth, Real(0)), Real(1));
       }
+      for (int i = 0; i < n; ++i)
+      {
+        out[4 * i] = Quantise<OutT>(r[i]);
+        out[4 * i + 1] = Quantise<OutT>(g[i]);
+        out[4 * i + 2] = Quantise<OutT>(b[i]);
+        out[4 * i + 3] = Quantise<OutT>(a[i]);
+      }
+      return;
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      out[3 * i] = Quantise<OutT>(r[i]);
+      out[3 * i + 1] = Quantise<OutT>(g[i]);
+      out[3 * i + 2] = Quantise<OutT>(b[i]);
     }
   }
 };
