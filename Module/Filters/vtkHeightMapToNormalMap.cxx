@@ -526,6 +526,9 @@ int vtkHeightMapToNormalMap::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
+  // The previous map's memory is reused when nobody else holds it (as
+  // vtkImageData::AllocateScalars does): a fresh 4096^2 array costs page faults every run.
+  vtkSmartPointer<vtkDataArray> previous = output->GetPointData()->GetScalars();
   output->Initialize();
   if (!input)
   {
@@ -587,8 +590,14 @@ int vtkHeightMapToNormalMap::RequestData(
   }
   output->SetExtent(outExt);
   const int comps = this->OutputRelief ? 4 : 3;
-  vtkSmartPointer<vtkDataArray> map =
-    vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(this->OutputScalarType));
+  const bool reuse = previous && previous->GetReferenceCount() == 1 &&
+    previous->GetDataType() == this->OutputScalarType && previous->HasStandardMemoryLayout();
+  vtkSmartPointer<vtkDataArray> map = reuse ? previous.Get() : nullptr;
+  previous = nullptr;
+  if (!map)
+  {
+    map.TakeReference(vtkDataArray::CreateDataArray(this->OutputScalarType));
+  }
   map->SetName(this->OutputRelief ? "ReliefMap" : "NormalMap");
   map->SetNumberOfComponents(comps);
   map->SetNumberOfTuples(output->GetNumberOfPoints());

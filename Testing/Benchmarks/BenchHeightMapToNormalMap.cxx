@@ -53,8 +53,8 @@ vtkImageData* Heights()
       {
         const double s = (i + 0.5) / Size;
         h->SetValue(static_cast<vtkIdType>(j) * Size + i,
-          static_cast<float>(0.5 + 0.2 * std::sin(40.0 * s) * std::cos(23.0 * t) +
-            0.1 * std::sin(310.0 * s * t)));
+          static_cast<float>(
+            0.5 + 0.2 * std::sin(40.0 * s) * std::cos(23.0 * t) + 0.1 * std::sin(310.0 * s * t)));
       }
     }
     image->GetPointData()->SetScalars(h);
@@ -77,8 +77,8 @@ double MaxDifference(vtkDataArray* a, vtkDataArray* b)
   double worst = 0.0;
   for (vtkIdType v = 0; v < a->GetNumberOfValues(); ++v)
   {
-    worst = std::max(worst, std::abs(a->GetVariantValue(v).ToDouble() -
-                              b->GetVariantValue(v).ToDouble()));
+    worst = std::max(
+      worst, std::abs(a->GetVariantValue(v).ToDouble() - b->GetVariantValue(v).ToDouble()));
   }
   return worst;
 }
@@ -160,8 +160,8 @@ void VtkPipeline(benchmark::State& state, bool sobel)
   ours->Update();
   state.counters["max_diff"] = MaxDifference(encode->GetOutput()->GetPointData()->GetScalars(),
     ours->GetOutput()->GetPointData()->GetScalars());
-  state.SetLabel(std::string(sobel ? "vtkImageSobel2D" : "vtkImageGradient") + "/" +
-    TypeName(type));
+  state.SetLabel(
+    std::string(sobel ? "vtkImageSobel2D" : "vtkImageGradient") + "/" + TypeName(type));
   state.SetItemsProcessed(state.iterations() * Size * Size);
 }
 

@@ -941,3 +941,45 @@ TEST(TestHeightMapToNormalMap, SettersAndPrintSelf)
     EXPECT_NE(text.find(expect), std::string::npos) << expect << "\n" << text;
   }
 }
+
+// The map lies where the heights lie: origin, spacing and extent come from the input.
+TEST(TestHeightMapToNormalMap, OutputKeepsTheInputGeometry)
+{
+  auto image = Sample<vtkFloatArray>(6, 5, [](double s, double t) { return s * t; });
+  image->SetOrigin(1.0, 2.0, 0.0);
+  image->SetSpacing(0.5, 0.25, 1.0);
+  auto map = MakeMap(image, Settings());
+  double origin[3], spacing[3];
+  map->GetOrigin(origin);
+  map->GetSpacing(spacing);
+  int dims[3];
+  map->GetDimensions(dims);
+  EXPECT_EQ(origin[0], 1.0);
+  EXPECT_EQ(origin[1], 2.0);
+  EXPECT_EQ(spacing[0], 0.5);
+  EXPECT_EQ(spacing[1], 0.25);
+  EXPECT_EQ(dims[0], 6);
+  EXPECT_EQ(dims[1], 5);
+  EXPECT_EQ(dims[2], 1);
+  EXPECT_STREQ(map->GetPointData()->GetScalars()->GetName(), "NormalMap");
+}
+
+// A second run reuses the map's memory only when nobody else holds the previous map: a map
+// kept by the caller is never overwritten by the next execution.
+TEST(TestHeightMapToNormalMap, KeptOutputIsNotOverwritten)
+{
+  auto first = Sample<vtkFloatArray>(8, 8, [](double s, double) { return s; });
+  auto second = Sample<vtkFloatArray>(8, 8, [](double, double t) { return t; });
+  vtkNew<vtkHeightMapToNormalMap> filter;
+  filter->SetInputData(first);
+  filter->SetOutputScalarTypeToFloat();
+  filter->Update();
+  vtkSmartPointer<vtkDataArray> kept = filter->GetOutput()->GetPointData()->GetScalars();
+  const double red = kept->GetComponent(9, 0);
+  EXPECT_LT(red, 0.5); // h = s rises to the right: the normal leans left
+  filter->SetInputData(second);
+  filter->Update();
+  EXPECT_NE(filter->GetOutput()->GetPointData()->GetScalars(), kept.Get());
+  EXPECT_EQ(kept->GetComponent(9, 0), red);
+  EXPECT_EQ(filter->GetOutput()->GetPointData()->GetScalars()->GetComponent(9, 0), 0.5);
+}
