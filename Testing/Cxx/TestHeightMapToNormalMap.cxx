@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
+#include <vtkSOADataArrayTemplate.h>
 #include <vtkSignedCharArray.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
@@ -982,4 +983,49 @@ TEST(TestHeightMapToNormalMap, KeptOutputIsNotOverwritten)
   EXPECT_NE(filter->GetOutput()->GetPointData()->GetScalars(), kept.Get());
   EXPECT_EQ(kept->GetComponent(9, 0), red);
   EXPECT_EQ(filter->GetOutput()->GetPointData()->GetScalars()->GetComponent(9, 0), 0.5);
+}
+
+// Only the first component is the height, whatever the array's layout: an interleaved
+// two-component array and a struct-of-arrays one give the map of their first component.
+TEST(TestHeightMapToNormalMap, OnlyTheFirstComponentIsRead)
+{
+  auto f = [](double s, double t) { return 0.5 + 0.3 * std::sin(6 * s) * std::cos(5 * t); };
+  auto single = Sample<vtkFloatArray>(17, 11, f);
+  vtkDataArray* h = single->GetPointData()->GetScalars();
+
+  auto interleaved = vtkSmartPointer<vtkImageData>::New();
+  interleaved->SetDimensions(17, 11, 1);
+  vtkNew<vtkFloatArray> two;
+  two->SetNumberOfComponents(2);
+  two->SetNumberOfTuples(h->GetNumberOfTuples());
+  auto soa = vtkSmartPointer<vtkImageData>::New();
+  soa->SetDimensions(17, 11, 1);
+  vtkNew<vtkSOADataArrayTemplate<float>> planar;
+  planar->SetNumberOfComponents(2);
+  planar->SetNumberOfTuples(h->GetNumberOfTuples());
+  for (vtkIdType id = 0; id < h->GetNumberOfTuples(); ++id)
+  {
+    two->SetTypedComponent(id, 0, static_cast<float>(h->GetComponent(id, 0)));
+    two->SetTypedComponent(id, 1, static_cast<float>((id * 7919) % 13));
+    planar->SetTypedComponent(id, 0, static_cast<float>(h->GetComponent(id, 0)));
+    planar->SetTypedComponent(id, 1, -static_cast<float>(id));
+  }
+  interleaved->GetPointData()->SetScalars(two);
+  soa->GetPointData()->SetScalars(planar);
+
+  Settings s;
+  s.Scheme = vtkHeightMapToNormalMap::Scharr;
+  s.Relief = true;
+  auto want = MakeMap(single, s);
+  for (vtkImageData* image : { interleaved.Get(), soa.Get() })
+  {
+    auto got = MakeMap(image, s);
+    vtkDataArray* a = got->GetPointData()->GetScalars();
+    vtkDataArray* b = want->GetPointData()->GetScalars();
+    ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues());
+    for (vtkIdType v = 0; v < a->GetNumberOfValues(); ++v)
+    {
+      EXPECT_EQ(a->GetVariantValue(v).ToFloat(), b->GetVariantValue(v).ToFloat()) << v;
+    }
+  }
 }
