@@ -2,6 +2,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkEndian.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -45,26 +48,24 @@ void HeightNormalisation(double& scale, double& offset)
   offset = -lo * scale;
 }
 
-// Output encoding of e in [0,1] (unit-vector components and clamped depths are): floats
-// keep it, integers round it to nearest on their full range. Through int, so that it
-// vectorises.
-template <typename OutT, typename Real>
-inline OutT Quantise(Real e)
-{
-  if (std::is_floating_point<OutT>::value)
-  {
-    return static_cast<OutT>(e);
-  }
-  const Real top = static_cast<Real>(std::numeric_limits<OutT>::max());
-  return static_cast<OutT>(static_cast<int>(e * top + Real(0.5)));
-}
-
 template <typename Real>
 struct RowCache
 {
   std::array<std::vector<Real>, 3> Rows;
   std::array<int, 3> Tags{ { -1, -1, -1 } };
   std::vector<Real> Gx, Gy, B, A;
+  std::vector<uint32_t> Words32; // packed quantised texels (8-bit outputs)
+  std::vector<uint64_t> Words64; // packed quantised texels (16-bit outputs)
+  // What this thread saw: non-finite heights in the rows it read, and (floating-point input
+  // with OutputRelief) heights outside [0,1] among the texels it wrote.
+  bool NonFinite = false;
+  vtkIdType OutOfRange = 0;
+};
+
+struct KernelReport
+{
+  bool NonFinite = false;
+  vtkIdType OutOfRange = 0;
 };
 
 template <typename InT, typename Real, typename OutT>
@@ -95,6 +96,8 @@ struct NormalMapKernel
     c.Gy.resize(n);
     c.B.resize(n);
     c.A.resize(this->OutComps == 4 ? n : 0);
+    c.Words32.resize(sizeof(OutT) == 1 ? n : 0);
+    c.Words64.resize(sizeof(OutT) == 2 ? n : 0);
   }
 
   // Row r of the height map as Real, padded with the wrapped texel on each side so that the
@@ -126,6 +129,17 @@ struct NormalMapKernel
       {
         row[k + 1] = static_cast<Real>(src[static_cast<size_t>(k) * stride]);
       }
+    }
+    if constexpr (std::is_floating_point<InT>::value)
+    {
+      // NaN fails the comparison too; a count (not a branch) keeps the loop vectorised.
+      const Real big = std::numeric_limits<Real>::max();
+      int bad = 0;
+      for (int k = 1; k <= this->W; ++k)
+      {
+        bad += std::abs(row[k]) <= big ? 0 : 1;
+      }
+      c.NonFinite = c.NonFinite || bad > 0;
     }
     row[0] = row[vtkSurfaceDetail::WrapIndex(-1, this->W, this->Wrap) + 1];
     row[this->W + 1] = row[vtkSurfaceDetail::WrapIndex(this->W, this->W, this->Wrap) + 1];
@@ -220,58 +234,87 @@ struct NormalMapKernel
       b[i] = half * (Real(1) / len) + half;
     }
     const int nc = this->OutComps;
+    Real* planes[4] = { r, g, b, c.A.data() };
     if (nc == 4)
     {
-      Real* a = c.A.data();
+      vtkIdType outside = 0;
       for (int i = 0; i < n; ++i)
       {
         const Real depth = Real(1) - (c0[i] * this->HScale + this->HOffset);
-        a[i] = std::min(std::max(depth, Real(0)), Real(1));
+        outside += (depth < Real(0) || depth > Real(1)) ? 1 : 0;
+        planes[3][i] = std::min(std::max(depth, Real(0)), Real(1));
+      }
+      c.OutOfRange += outside;
+    }
+    if constexpr (std::is_floating_point<OutT>::value)
+    {
+      for (int k = 0; k < nc; ++k)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          out[nc * i + k] = static_cast<OutT>(planes[k][i]);
+        }
+      }
+    }
+    else
+    {
+      // Round to nearest on the type's range (values are in [0,1]: adding 0.5 and
+      // truncating rounds), packing each texel's components into one word so that both the
+      // conversion and the packing vectorise and the interleaved store is one per texel.
+      using Word = typename std::conditional<sizeof(OutT) == 1, uint32_t, uint64_t>::type;
+      constexpr int bits = 8 * sizeof(OutT);
+      const Real top = static_cast<Real>(std::numeric_limits<OutT>::max());
+      Word* words = nullptr;
+      if constexpr (sizeof(OutT) == 1)
+      {
+        words = c.Words32.data();
+      }
+      else
+      {
+        words = c.Words64.data();
       }
       for (int i = 0; i < n; ++i)
       {
-        out[4 * i] = Quantise<OutT>(r[i]);
-        out[4 * i + 1] = Quantise<OutT>(g[i]);
-        out[4 * i + 2] = Quantise<OutT>(b[i]);
-        out[4 * i + 3] = Quantise<OutT>(a[i]);
+        words[i] = 0;
       }
-      return;
-    }
-    for (int i = 0; i < n; ++i)
-    {
-      out[3 * i] = Quantise<OutT>(r[i]);
-      out[3 * i + 1] = Quantise<OutT>(g[i]);
-      out[3 * i + 2] = Quantise<OutT>(b[i]);
+      for (int k = 0; k < nc; ++k)
+      {
+        const Real* src = planes[k];
+        for (int i = 0; i < n; ++i)
+        {
+          words[i] |= static_cast<Word>(static_cast<int32_t>(src[i] * top + Real(0.5)))
+            << (bits * k);
+        }
+      }
+      this->Interleave(words, n, out);
     }
   }
-};
 
-// Counts the non-finite heights and the finite ones outside [0,1].
-template <typename Real>
-struct HeightCensus
-{
-  const Real* In;
-  int Stride;
-  vtkSMPThreadLocal<vtkIdType> NonFinite, OutOfRange;
-
-  void Initialize()
+  // Stores packed texels: a whole word per texel; with three components that word also
+  // covers the next texel's first component, which the next store rewrites, so the last
+  // texel is stored component by component.
+  template <typename Word>
+  void Interleave(const Word* words, int n, OutT* out) const
   {
-    this->NonFinite.Local() = 0;
-    this->OutOfRange.Local() = 0;
-  }
-  void operator()(vtkIdType begin, vtkIdType end)
-  {
-    vtkIdType bad = 0, outside = 0;
-    for (vtkIdType k = begin; k < end; ++k)
+    const int nc = this->OutComps;
+    int first = 0; // the texels before it were stored whole
+#ifndef VTK_WORDS_BIGENDIAN
+    // Little-endian: component k is the k-th OutT of the word, in memory order.
+    first = std::max(nc == 4 ? n : n - 1, 0);
+    for (int i = 0; i < first; ++i)
     {
-      const Real v = this->In[k * this->Stride];
-      bad += std::isfinite(v) ? 0 : 1;
-      outside += (v < Real(0) || v > Real(1)) ? 1 : 0;
+      std::memcpy(out + static_cast<size_t>(nc) * i, words + i, sizeof(Word));
     }
-    this->NonFinite.Local() += bad;
-    this->OutOfRange.Local() += outside;
+#endif
+    for (int i = first; i < n; ++i)
+    {
+      for (int k = 0; k < nc; ++k)
+      {
+        out[static_cast<size_t>(nc) * i + k] =
+          static_cast<OutT>(words[i] >> (8 * sizeof(OutT) * k));
+      }
+    }
   }
-  void Reduce() {}
 };
 
 // Replaces each non-finite height by the mean of the finite ones among the eight texels its
@@ -342,7 +385,7 @@ struct Job
 };
 
 template <typename InT, typename OutT>
-void RunKernel(const InT* in, int stride, const Job& job)
+KernelReport RunKernel(const InT* in, int stride, const Job& job)
 {
   using Real = typename std::conditional<std::is_same<InT, double>::value, double, float>::type;
   double scale, offset;
@@ -367,66 +410,60 @@ void RunKernel(const InT* in, int stride, const Job& job)
   kernel.HScale = static_cast<Real>(scale);
   kernel.HOffset = static_cast<Real>(offset);
   vtkSMPTools::For(job.OutExt[2], job.OutExt[3] + 1, kernel);
+  KernelReport report;
+  for (const RowCache<Real>& c : kernel.Cache)
+  {
+    report.NonFinite = report.NonFinite || c.NonFinite;
+    report.OutOfRange += c.OutOfRange;
+  }
+  return report;
 }
 
 template <typename InT>
-void DispatchOutput(const InT* in, int stride, const Job& job)
+KernelReport DispatchOutput(const InT* in, int stride, const Job& job)
 {
   switch (job.OutputScalarType)
   {
     case VTK_FLOAT:
-      RunKernel<InT, float>(in, stride, job);
-      break;
+      return RunKernel<InT, float>(in, stride, job);
     case VTK_UNSIGNED_SHORT:
-      RunKernel<InT, unsigned short>(in, stride, job);
-      break;
+      return RunKernel<InT, unsigned short>(in, stride, job);
     default:
-      RunKernel<InT, unsigned char>(in, stride, job);
-      break;
+      return RunKernel<InT, unsigned char>(in, stride, job);
   }
 }
 
-// Floating-point heights are checked first: non-finite ones are repaired in a copy (the
-// input stays untouched), and out-of-range ones are reported when they would be clamped.
+// Floating-point heights: the kernel notes non-finite heights as it reads them. Only then
+// (rarely) are they counted, repaired in a copy (the input stays untouched) and the map
+// computed again; heights clamped into the relief's [0,1] are reported.
 template <typename Real>
 void RunFloating(
   vtkHeightMapToNormalMap* self, const Real* in, int stride, const Job& job, bool relief)
 {
-  HeightCensus<Real> census;
-  census.In = in;
-  census.Stride = stride;
-  const vtkIdType n = static_cast<vtkIdType>(job.W) * job.H;
-  vtkSMPTools::For(0, n, census);
-  vtkIdType nonFinite = 0, outside = 0;
-  for (vtkIdType v : census.NonFinite)
+  KernelReport report = DispatchOutput(in, stride, job);
+  if (report.NonFinite)
   {
-    nonFinite += v;
+    const vtkIdType n = static_cast<vtkIdType>(job.W) * job.H;
+    std::vector<Real> repaired(static_cast<size_t>(n));
+    vtkIdType nonFinite = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      repaired[k] = in[k * stride];
+      nonFinite += std::isfinite(repaired[k]) ? 0 : 1;
+    }
+    vtkWarningWithObjectMacro(
+      self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
+            << "finite neighbours.");
+    RepairHeights(repaired, job.W, job.H, job.Wrap);
+    report = DispatchOutput(repaired.data(), 1, job);
   }
-  for (vtkIdType v : census.OutOfRange)
-  {
-    outside += v;
-  }
-  if (relief && outside > 0)
+  if (relief && report.OutOfRange > 0)
   {
     vtkWarningWithObjectMacro(
-      self, << outside << " height(s) lie outside [0,1]; their relief depth 1 - h is clamped to "
-            << "[0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength instead.");
+      self, << report.OutOfRange << " height(s) lie outside [0,1]; their relief depth 1 - h is "
+            << "clamped to [0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength "
+            << "instead.");
   }
-  if (nonFinite == 0)
-  {
-    DispatchOutput(in, stride, job);
-    return;
-  }
-  vtkWarningWithObjectMacro(
-    self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
-          << "finite neighbours.");
-  std::vector<Real> repaired(static_cast<size_t>(n));
-  for (vtkIdType k = 0; k < n; ++k)
-  {
-    repaired[k] = in[k * stride];
-  }
-  RepairHeights(repaired, job.W, job.H, job.Wrap);
-  DispatchOutput(repaired.data(), 1, job);
 }
 
 template <typename InT>

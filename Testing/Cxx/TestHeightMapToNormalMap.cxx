@@ -628,6 +628,22 @@ TEST(TestHeightMapToNormalMap, ReliefAlphaIsDepth)
     EXPECT_EQ(rgba->GetTypedComponent(id, 3), 255 - in->GetValue(id));
   }
 
+  // 16 bits: depth (255 - v)/255 is exactly 257*(255 - v)/65535.
+  s.Type = VTK_UNSIGNED_SHORT;
+  auto map16 = MakeMap(bytes, s);
+  auto* rgba16 = vtkUnsignedShortArray::SafeDownCast(map16->GetPointData()->GetScalars());
+  ASSERT_NE(rgba16, nullptr);
+  for (vtkIdType id = 0; id < rgba16->GetNumberOfTuples(); ++id)
+  {
+    EXPECT_EQ(rgba16->GetTypedComponent(id, 3), 257 * (255 - in->GetValue(id)));
+    for (int c = 0; c < 3; ++c)
+    {
+      // The same normal as the 8-bit map, to within the 8-bit map's half step.
+      EXPECT_NEAR(rgba16->GetTypedComponent(id, c) / 65535.0,
+        rgba->GetTypedComponent(id, c) / 255.0, 0.5 / 255 + 1e-6);
+    }
+  }
+
   auto floats = FromRows(3, 1, { 0.25, 1.5, -0.5 });
   vtkNew<vtkHeightMapToNormalMap> filter;
   vtkNew<MessageCounter> messages;
