@@ -228,10 +228,12 @@ struct NormalMapKernel
     {
       const Real x = -std::min(std::max(r[i], -lim), lim);
       const Real y = ySign * std::min(std::max(g[i], -lim), lim);
-      const Real len = std::sqrt(x * x + y * y + Real(1));
-      r[i] = half * (x / len) + half;
-      g[i] = half * (y / len) + half;
-      b[i] = half * (Real(1) / len) + half;
+      // One division per texel, as GPUs normalise (v * 1/|v|): the three divisions of
+      // v/|v| cost more than everything else in the loop.
+      const Real inv = Real(1) / std::sqrt(x * x + y * y + Real(1));
+      r[i] = half * (x * inv) + half;
+      g[i] = half * (y * inv) + half;
+      b[i] = half * inv + half;
     }
     const int nc = this->OutComps;
     Real* planes[4] = { r, g, b, c.A.data() };

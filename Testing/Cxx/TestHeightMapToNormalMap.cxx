@@ -348,7 +348,8 @@ TEST(TestHeightMapToNormalMap, PlaneIsExactAtEverySizeAndScheme)
 //   (0,2): ddx = 4*(0.5 - 1.0) = -2,       ddy = 4*(0.5 - 1.0) = -2
 //   (3,2): ddx wraps to column 0: 4*(1.0 - 0.5) = 2, ddy = 0
 //   every other texel: ddx = ddy = 0.
-// n = (-ddx, -ddy, 1)/|(-ddx, -ddy, 1)|, stored as 0.5*n + 0.5, all in float as the Cg does:
+// n = (-ddx, -ddy, 1) normalised as Cg's normalize does, v * (1/|v|), stored as 0.5*n + 0.5,
+// all in float:
 //   (1,0): (0.75, 0, 1)/1.25 = (3/5, 0, 4/5)      (2,3): (0, 0.75, 1)/1.25 = (0, 3/5, 4/5)
 //   (0,2): (2, 2, 1)/3 = (2/3, 2/3, 1/3)          (0,1): (0, -2, 1)/sqrt(5)
 //   (2,0): (-0.75, -0.75, 1)/sqrt(2.125)          (3,2): (-2, 0, 1)/sqrt(5)
@@ -359,21 +360,40 @@ TEST(TestHeightMapToNormalMap, ForwardIsTheSeedsFormulaToTheBit)
       1.0, 0.5, 0.5, 0.5, //
       0.5, 0.5, 0.5, 0.5, //
       0.5, 0.5, 0.3125, 0.5 });
-  const float r5 = std::sqrt(5.0f), r2125 = std::sqrt(2.125f);
-  // {i, j, nx, ny, nz}: the unit normals above, each component rounded once to float.
+  // {i, j, ddx, ddy} from the hand working above; every other texel has ddx = ddy = 0.
   struct Texel
   {
     int I, J;
-    float N[3];
+    float Ddx, Ddy;
   };
-  const std::vector<Texel> special = {
-    { 1, 0, { 3.0f / 5.0f, 0.0f, 4.0f / 5.0f } },
-    { 2, 0, { -0.75f / r2125, -0.75f / r2125, 1.0f / r2125 } },
-    { 2, 3, { 0.0f, 3.0f / 5.0f, 4.0f / 5.0f } },
-    { 0, 1, { 0.0f, -2.0f / r5, 1.0f / r5 } },
-    { 0, 2, { 2.0f / 3.0f, 2.0f / 3.0f, 1.0f / 3.0f } },
-    { 3, 2, { -2.0f / r5, 0.0f, 1.0f / r5 } },
+  const std::vector<Texel> slopes = { { 1, 0, -0.75f, 0.0f }, { 2, 0, 0.75f, 0.75f },
+    { 2, 3, 0.0f, -0.75f }, { 0, 1, 0.0f, 2.0f }, { 0, 2, -2.0f, -2.0f }, { 3, 2, 2.0f, 0.0f } };
+  auto normal = [&](int i, int j, float n[3])
+  {
+    float ddx = 0.0f, ddy = 0.0f;
+    for (const Texel& t : slopes)
+    {
+      if (t.I == i && t.J == j)
+      {
+        ddx = t.Ddx;
+        ddy = t.Ddy;
+      }
+    }
+    const float inv = 1.0f / std::sqrt(ddx * ddx + ddy * ddy + 1.0f);
+    n[0] = -ddx * inv;
+    n[1] = -ddy * inv;
+    n[2] = inv;
   };
+  // The worked fractions, to float precision: the table above is what the arithmetic gives.
+  float n[3];
+  normal(1, 0, n);
+  EXPECT_FLOAT_EQ(n[0], 3.0f / 5.0f);
+  EXPECT_FLOAT_EQ(n[2], 4.0f / 5.0f);
+  normal(0, 2, n);
+  EXPECT_FLOAT_EQ(n[1], 2.0f / 3.0f);
+  EXPECT_FLOAT_EQ(n[2], 1.0f / 3.0f);
+  normal(0, 1, n);
+  EXPECT_FLOAT_EQ(n[1], -2.0f / std::sqrt(5.0f));
   Settings s;
   s.Scheme = vtkHeightMapToNormalMap::Forward;
   auto map = MakeMap(image, s);
@@ -383,14 +403,7 @@ TEST(TestHeightMapToNormalMap, ForwardIsTheSeedsFormulaToTheBit)
   {
     for (int i = 0; i < 4; ++i)
     {
-      float n[3] = { 0.0f, 0.0f, 1.0f };
-      for (const Texel& t : special)
-      {
-        if (t.I == i && t.J == j)
-        {
-          std::memcpy(n, t.N, sizeof(n));
-        }
-      }
+      normal(i, j, n);
       for (int c = 0; c < 3; ++c)
       {
         EXPECT_EQ(out->GetTypedComponent(j * 4 + i, c), 0.5f * n[c] + 0.5f)
