@@ -12,7 +12,7 @@ count=0
 while read -r example; do
   [ -n "$example" ] || continue
   echo "gallery: $example"
-  xvfb-run -a -s "-screen 0 1280x1024x24" "$BUILD_DIR/bin/$example" "$out"
+  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$BUILD_DIR/bin/$example" "$out"
   count=$((count + 1))
 done < "$BUILD_DIR/gallery-examples.txt"
 echo "gallery: $count scenes rendered into $out"

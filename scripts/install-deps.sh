@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
   libjpeg-turbo-progs
+  xplanet-images
 )
 
 missing=()

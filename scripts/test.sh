@@ -7,5 +7,7 @@ export BUILD_DIR="${BUILD_DIR:-$src/build}"
 bash "$src/scripts/build.sh"
 
 cd "$BUILD_DIR"
-xvfb-run -a -s "-screen 0 1280x1024x24" \
+# -noreset: by default Xvfb resets when its last client disconnects, and a test starting
+# during that reset cannot connect ("bad X server connection") when tests run in parallel.
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
   ctest --output-on-failure --timeout 600 -j "$(nproc)" "$@"

@@ -1,0 +1,296 @@
+// vtkParametricSurfaceSource against VTK's own way of getting the same arrays, in one run:
+// - torus: vtkParametricFunctionSource (points, normals, texture coordinates) followed by
+//   vtkPolyDataTangents, both on vtkParametricTorus;
+// - sphere: vtkTexturedSphereSource (points, normals, texture coordinates);
+// - the bound: allocating and writing the same number of output bytes with memset, which
+//   no generator can beat.
+// Sizes are 1M and 4M points; the second argument is the number of threads given to
+// vtkSMPTools::Initialize. See BENCHMARKS.md for the command and the figures.
+
+#include <vtkBezierProfile.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkParametricDonut.h>
+#include <vtkParametricFunctionSource.h>
+#include <vtkParametricRevolution.h>
+#include <vtkParametricSphere.h>
+#include <vtkParametricSurfaceSource.h>
+#include <vtkParametricTorus.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataTangents.h>
+#include <vtkSMPTools.h>
+#include <vtkTexturedSphereSource.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+namespace
+{
+// Grid side for a given number of points: side x side points.
+int Side(benchmark::State& state)
+{
+  return static_cast<int>(std::lround(std::sqrt(static_cast<double>(state.range(0)))));
+}
+
+void SetThreads(benchmark::State& state)
+{
+  vtkSMPTools::Initialize(static_cast<int>(state.range(1)));
+}
+
+size_t OutputBytes(vtkPolyData* pd)
+{
+  size_t bytes = pd->GetPoints()->GetData()->GetActualMemorySize();
+  for (int a = 0; a < pd->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    bytes += pd->GetPointData()->GetArray(a)->GetActualMemorySize();
+  }
+  bytes += pd->GetPolys()->GetActualMemorySize();
+  return bytes * 1024;
+}
+
+void Report(benchmark::State& state, vtkPolyData* pd)
+{
+  state.counters["points"] = static_cast<double>(pd->GetNumberOfPoints());
+  state.counters["MB"] = static_cast<double>(OutputBytes(pd)) / 1e6;
+}
+
+// Runs our source on @a function at side x side points with the given arrays (normals and
+// texture coordinates always), re-executing it at every iteration.
+void RunSource(
+  benchmark::State& state, vtkParametricFunction* function, bool tangents, bool derivatives)
+{
+  SetThreads(state);
+  const int side = Side(state);
+  vtkNew<vtkParametricSurfaceSource> source;
+  source->SetParametricFunction(function);
+  source->SetUResolution(side - 1);
+  source->SetVResolution(side - 1);
+  source->SetGenerateTangents(tangents);
+  source->SetGenerateDerivatives(derivatives);
+  for (auto _ : state)
+  {
+    source->Modified();
+    source->Update();
+    benchmark::DoNotOptimize(source->GetOutput()->GetPoints());
+  }
+  Report(state, source->GetOutput());
+}
+
+// Ours on VTK's own vtkParametricTorus (a virtual Evaluate with its trigonometry at every
+// point): every array the VTK pair gives (normals, texture coordinates, tangents), and
+// with range(2) the derivatives too.
+void BM_SurfaceSourceTorus(benchmark::State& state)
+{
+  vtkNew<vtkParametricTorus> torus;
+  RunSource(state, torus, true, state.range(2) != 0);
+}
+
+// Ours on seed 000's donut: the same surface as vtkParametricTorus up to a mirror, but a
+// vtkParametricSeparableFunction, so its trigonometry is done per row and column.
+void BM_SurfaceSourceDonut(benchmark::State& state)
+{
+  vtkNew<vtkParametricDonut> donut;
+  RunSource(state, donut, true, state.range(2) != 0);
+}
+
+// VTK's pair on the same torus.
+void BM_VTKFunctionSourceAndTangentsTorus(benchmark::State& state)
+{
+  SetThreads(state);
+  const int side = Side(state);
+  vtkNew<vtkParametricTorus> torus;
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(torus);
+  source->SetUResolution(side);
+  source->SetVResolution(side);
+  source->GenerateTextureCoordinatesOn();
+  source->SetScalarModeToNone();
+  vtkNew<vtkPolyDataTangents> tangents;
+  tangents->SetInputConnection(source->GetOutputPort());
+  for (auto _ : state)
+  {
+    source->Modified();
+    tangents->Update();
+    benchmark::DoNotOptimize(tangents->GetOutput()->GetPoints());
+  }
+  Report(state, tangents->GetOutput());
+}
+
+// Ours, sphere: the arrays vtkTexturedSphereSource gives (normals, texture coordinates), and
+// with range(2) tangents and derivatives as well.
+void BM_SurfaceSourceSphere(benchmark::State& state)
+{
+  vtkNew<vtkParametricSphere> sphere;
+  RunSource(state, sphere, state.range(2) != 0, state.range(2) != 0);
+}
+
+// Ours, seed 004's vase (a vtkBezierProfile turned about y), every array; range(2) turns
+// the profile's arc-length parameterisation on, which inverts the length integral at
+// every row.
+void BM_SurfaceSourceVase(benchmark::State& state)
+{
+  vtkNew<vtkParametricRevolution> vase;
+  vase->GetProfile()->SetArcLengthParameterization(state.range(2) != 0);
+  RunSource(state, vase, true, true);
+}
+
+// One vtkBezierProfile::Evaluate per point, as a caller outside the source pays it (e.g.
+// vtkParametricFunctionSource on a vtkParametricRevolution): range(2) = arc length.
+void BM_BezierProfileEvaluate(benchmark::State& state)
+{
+  vtkNew<vtkBezierProfile> profile;
+  profile->SetToVase();
+  profile->SetArcLengthParameterization(state.range(2) != 0);
+  const vtkIdType n = state.range(0);
+  for (auto _ : state)
+  {
+    double sum = 0.0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[2], d1[2];
+      profile->Evaluate(static_cast<double>(i) / static_cast<double>(n - 1), p, d1, nullptr);
+      sum += p[0] + d1[1];
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["ns/eval"] = benchmark::Counter(static_cast<double>(n),
+    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_VTKTexturedSphereSource(benchmark::State& state)
+{
+  SetThreads(state);
+  const int side = Side(state);
+  vtkNew<vtkTexturedSphereSource> source;
+  source->SetThetaResolution(side - 1);
+  source->SetPhiResolution(side - 1);
+  for (auto _ : state)
+  {
+    source->Modified();
+    source->Update();
+    benchmark::DoNotOptimize(source->GetOutput()->GetPoints());
+  }
+  Report(state, source->GetOutput());
+}
+
+// Bytes per point of each array our source writes: points 12, normals 12, tcoords 8, and
+// 2 triangles = 24 bytes of 32-bit connectivity + 8 of offsets; then tangents 16; then
+// dPdu and dPdv 12 each. range(2) = 0: sphere arrays, 1: + tangents, 2: + derivatives.
+std::vector<size_t> ArrayBytesPerPoint(int variant)
+{
+  std::vector<size_t> bytes = { 12, 12, 8, 24, 8 };
+  if (variant >= 1)
+  {
+    bytes.push_back(16);
+  }
+  if (variant >= 2)
+  {
+    bytes.insert(bytes.end(), { 12, 12 });
+  }
+  return bytes;
+}
+
+// The bandwidth bound: write the same arrays as the source (one allocation each, as VTK
+// arrays are), split among the threads. range(3) = 0: fresh allocations at every iteration,
+// as every VTK source's execution makes (page faults included); 1: the same buffers
+// reused, which no VTK source does (its output arrays are new at each execution) but
+// which is the bare write bandwidth.
+void BM_WriteBound(benchmark::State& state)
+{
+  SetThreads(state);
+  const int side = Side(state);
+  const size_t points = static_cast<size_t>(side) * side;
+  const bool reuse = state.range(3) != 0;
+  std::vector<std::unique_ptr<char[]>> buffers;
+  std::vector<size_t> sizes;
+  for (size_t perPoint : ArrayBytesPerPoint(static_cast<int>(state.range(2))))
+  {
+    sizes.push_back(perPoint * points);
+    buffers.emplace_back(reuse ? new char[sizes.back()] : nullptr);
+  }
+  for (auto _ : state)
+  {
+    for (size_t a = 0; a < sizes.size(); ++a)
+    {
+      if (!reuse)
+      {
+        buffers[a].reset(new char[sizes[a]]);
+      }
+      char* data = buffers[a].get();
+      vtkSMPTools::For(0, static_cast<vtkIdType>(sizes[a]), 1 << 20,
+        [data](vtkIdType begin, vtkIdType end)
+        { std::memset(data + begin, 1, static_cast<size_t>(end - begin)); });
+      benchmark::DoNotOptimize(data);
+    }
+    benchmark::ClobberMemory();
+    if (!reuse)
+    {
+      for (auto& buffer : buffers)
+      {
+        buffer.reset();
+      }
+    }
+  }
+  size_t total = 0;
+  for (size_t size : sizes)
+  {
+    total += size;
+  }
+  state.counters["MB"] = static_cast<double>(total) / 1e6;
+}
+
+void Sizes(benchmark::internal::Benchmark* b, int variants)
+{
+  for (int points : { 1000000, 4000000 })
+  {
+    for (int threads : { 1, 2 })
+    {
+      for (int variant = 0; variant < variants; ++variant)
+      {
+        b->Args({ points, threads, variant });
+      }
+    }
+  }
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+} // namespace
+
+BENCHMARK(BM_SurfaceSourceTorus)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_SurfaceSourceDonut)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_VTKFunctionSourceAndTangentsTorus)
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
+BENCHMARK(BM_SurfaceSourceSphere)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_SurfaceSourceVase)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_BezierProfileEvaluate)
+  ->Args({ 1000000, 1, 0 })
+  ->Args({ 1000000, 1, 1 })
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VTKTexturedSphereSource)
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
+BENCHMARK(BM_WriteBound)
+  ->Apply(
+    [](benchmark::internal::Benchmark* b)
+    {
+      for (int points : { 1000000, 4000000 })
+      {
+        for (int threads : { 1, 2 })
+        {
+          for (int variant : { 0, 1, 2 })
+          {
+            for (int reuse : { 0, 1 })
+            {
+              b->Args({ points, threads, variant, reuse });
+            }
+          }
+        }
+      }
+      b->Unit(benchmark::kMillisecond)->UseRealTime();
+    });
+
+BENCHMARK_MAIN();
