@@ -6,8 +6,11 @@
 //   HeightMapToNormalMap_normal.png  the encoded normal map (green up: a raised bump is
 //                                    redder on its right flank, greener on its top flank)
 //   HeightMapToNormalMap.png         the lit square
+// and the same for the project's brick wall height map (Data/brick_height.png):
+//   HeightMapToNormalMap_bricks_normal.png, HeightMapToNormalMap_bricks.png
 
 #include "vtkHeightMapToNormalMap.h"
+#include "vtkOIIOImageReader.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -27,6 +30,7 @@
 #include <vtkTexture.h>
 #include <vtkTriangleFilter.h>
 #include <vtkWindowToImageFilter.h>
+#include <vtksys/SystemTools.hxx>
 
 #include <cmath>
 #include <iostream>
@@ -53,6 +57,61 @@ void Write(vtkAlgorithmOutput* port, const std::string& path)
   writer->SetInputConnection(port);
   writer->SetFileName(path.c_str());
   writer->Write();
+}
+// A unit square facing +z, texture coordinates (s,t) along (x,y), with tangents for VTK's
+// normal mapping (tbn = (T, N x T, N), so +t is the map's +Y: green up), lit from the right.
+void RenderLit(vtkAlgorithmOutput* normalMap, const std::string& path)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(1, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkPolyDataTangents> tangents;
+  tangents->SetInputConnection(triangles->GetOutputPort());
+
+  vtkNew<vtkTexture> normalTexture;
+  normalTexture->SetInputConnection(normalMap);
+  normalTexture->InterpolateOn();
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(tangents->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetInterpolationToPhong();
+  actor->GetProperty()->SetNormalTexture(normalTexture);
+  actor->GetProperty()->SetColor(0.85, 0.8, 0.72);
+  actor->GetProperty()->SetAmbient(0.1);
+  actor->GetProperty()->SetDiffuse(0.9);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light; // from the right, a little above and in front
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(1.0, 0.2, 0.7);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetPosition(0, 0, 5);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetParallelScale(1.0);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(512, 512);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  Write(capture->GetOutputPort(), path);
 }
 } // namespace
 
@@ -95,57 +154,22 @@ int main(int argc, char* argv[])
   Write(grey->GetOutputPort(), folder + "/HeightMapToNormalMap_height.png");
   Write(toNormals->GetOutputPort(), folder + "/HeightMapToNormalMap_normal.png");
 
-  // A unit square facing +z, texture coordinates (s,t) along (x,y), with tangents for VTK's
-  // normal mapping (tbn = (T, N x T, N), so +t is the map's +Y: green up).
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-1, -1, 0);
-  plane->SetPoint1(1, -1, 0);
-  plane->SetPoint2(-1, 1, 0);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkPolyDataTangents> tangents;
-  tangents->SetInputConnection(triangles->GetOutputPort());
+  RenderLit(toNormals->GetOutputPort(), folder + "/HeightMapToNormalMap.png");
 
-  vtkNew<vtkTexture> normalTexture;
-  normalTexture->SetInputConnection(toNormals->GetOutputPort());
-  normalTexture->InterpolateOn();
-
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(tangents->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetInterpolationToPhong();
-  actor->GetProperty()->SetNormalTexture(normalTexture);
-  actor->GetProperty()->SetColor(0.85, 0.8, 0.72);
-  actor->GetProperty()->SetAmbient(0.1);
-  actor->GetProperty()->SetDiffuse(0.9);
-
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.1, 0.1, 0.12);
-  renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light; // from the right, a little above and in front
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(false);
-  light->SetPosition(1.0, 0.2, 0.7);
-  light->SetFocalPoint(0.0, 0.0, 0.0);
-  renderer->AddLight(light);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetPosition(0, 0, 5);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetParallelScale(1.0);
-
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(512, 512);
-  window->AddRenderer(renderer);
-  window->Render();
-
-  vtkNew<vtkWindowToImageFilter> capture;
-  capture->SetInput(window);
-  Write(capture->GetOutputPort(), folder + "/HeightMapToNormalMap.png");
+  // The project's brick wall (Data/brick_height.png, 16-bit, tiles): read as 0..1 by type
+  // range; Repeat, as the wall is meant to be tiled.
+  const std::string bricks = SURFACEDETAIL_DATA_DIR "/brick_height.png";
+  if (vtksys::SystemTools::FileExists(bricks))
+  {
+    vtkNew<vtkOIIOImageReader> reader;
+    reader->SetFileName(bricks.c_str());
+    vtkNew<vtkHeightMapToNormalMap> brickNormals;
+    brickNormals->SetInputConnection(reader->GetOutputPort());
+    brickNormals->SetSchemeToSobel();
+    brickNormals->SetStrength(0.015);
+    brickNormals->SetWrapToRepeat();
+    Write(brickNormals->GetOutputPort(), folder + "/HeightMapToNormalMap_bricks_normal.png");
+    RenderLit(brickNormals->GetOutputPort(), folder + "/HeightMapToNormalMap_bricks.png");
+  }
   return 0;
 }
