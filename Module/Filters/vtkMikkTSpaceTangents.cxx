@@ -1,0 +1,1242 @@
+#include "vtkMikkTSpaceTangents.h"
+
+#include "vtkSurfaceDetailConventions.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolygon.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkMikkTSpaceTangents);
+
+namespace
+{
+using V3 = std::array<double, 3>;
+
+// Triangle flags, with the meaning of the reference implementation's.
+constexpr int OrientPreserving = 1;  // signed texture area > 0
+constexpr int GroupWithAny = 2;      // no usable texture derivatives: joins any group
+constexpr int MarkDegenerate = 4;    // two corners at the same position
+constexpr int QuadOneDegenerate = 8; // a quad whose other triangle is degenerate
+
+// MikkTSpace works in float and calls a value zero when it is below FLT_MIN; the same test
+// in double keeps the same triangles "good". NaN is zero here, which keeps it out.
+inline bool NotZero(double x)
+{
+  return std::abs(x) > FLT_MIN;
+}
+
+// A few units of single-precision rounding, relative.
+constexpr double CancellationEps = 4.0 * FLT_EPSILON;
+
+inline V3 Sub(const V3& a, const V3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+inline V3 Scale(double s, const V3& a)
+{
+  return { s * a[0], s * a[1], s * a[2] };
+}
+
+inline double Dot(const V3& a, const V3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline V3 NormalizeSafe(const V3& v)
+{
+  if (!(NotZero(v[0]) || NotZero(v[1]) || NotZero(v[2])))
+  {
+    return v;
+  }
+  return Scale(1.0 / std::sqrt(Dot(v, v)), v);
+}
+
+inline V3 ProjectNormalize(const V3& v, const V3& n)
+{
+  return NormalizeSafe(Sub(v, Scale(Dot(n, v), n)));
+}
+
+// Exact equality of values, as the reference's veq: NaN equals nothing.
+inline bool Equal(const V3& a, const V3& b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+inline std::uint64_t HashDouble(std::uint64_t h, double v)
+{
+  // 0 and -0 compare equal, so they must hash equal.
+  if (v == 0.0)
+  {
+    v = 0.0;
+  }
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof(bits));
+  h ^= bits + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+  return h;
+}
+
+/// Everything the algorithm needs, indexed by input point, face corner or triangle.
+struct MikkMesh
+{
+  vtkIdType NumberOfPoints = 0;
+  std::vector<V3> P;
+  std::vector<V3> N; // normalised
+  std::vector<std::array<double, 2>> T;
+  std::vector<vtkIdType> Weld; // the vertex a point is (same P, N and T: same vertex)
+
+  // Output polygons ("faces"), in output order, with the input cell each came from.
+  std::vector<vtkIdType> FaceOffsets{ 0 };
+  std::vector<vtkIdType> FacePoints;
+  std::vector<vtkIdType> FaceCell;
+
+  // Triangles of the faces with 3 or 4 corners, in face order.
+  std::vector<vtkIdType> FaceFirstTri; // per face, size faces+1
+  std::vector<vtkIdType> TriFace;
+  std::vector<std::array<unsigned char, 3>> TriVert; // corner numbers within the face
+  std::vector<int> TriFlag;
+
+  vtkIdType CornerPoint(vtkIdType tri, int k) const
+  {
+    return this->FacePoints[this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k]];
+  }
+  vtkIdType CornerVertex(vtkIdType tri, int k) const
+  {
+    return this->Weld[this->CornerPoint(tri, k)];
+  }
+  vtkIdType FaceCorner(vtkIdType tri, int k) const
+  {
+    return this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k];
+  }
+};
+
+/// The part of a tangent space the output needs.
+struct TSpace
+{
+  V3 Os{ { 1.0, 0.0, 0.0 } }; // the reference's default for corners no group reaches
+  bool Orient = false;
+  vtkIdType Group = -1;
+};
+
+void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoords, MikkMesh& mesh,
+  std::vector<V3>& rawNormals)
+{
+  const vtkIdType n = mesh.NumberOfPoints;
+  mesh.P.resize(n);
+  mesh.N.resize(n);
+  mesh.T.resize(n);
+  rawNormals.resize(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetPoint(i, mesh.P[i].data());
+        normals->GetTuple(i, rawNormals[i].data());
+        mesh.T[i] = { tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1) };
+        V3 nn = rawNormals[i];
+        const double len = std::sqrt(Dot(nn, nn));
+        if (len > 0.0 && std::isfinite(len))
+        {
+          nn = Scale(1.0 / len, nn);
+        }
+        mesh.N[i] = nn;
+      }
+    });
+}
+
+// MikkTSpace welds corners whose position, normal and texture coordinates are identical,
+// so two input points with the same values are one vertex even if the cells do not share
+// them. Hash, sort (parallel, total order on (hash, id)), then compare within equal hashes.
+void Weld(MikkMesh& mesh, const std::vector<V3>& rawNormals)
+{
+  const vtkIdType n = mesh.NumberOfPoints;
+  std::vector<std::pair<std::uint64_t, vtkIdType>> keys(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        std::uint64_t h = 1469598103934665603ULL;
+        for (int c = 0; c < 3; ++c)
+        {
+          h = HashDouble(h, mesh.P[i][c]);
+          h = HashDouble(h, rawNormals[i][c]);
+        }
+        h = HashDouble(h, mesh.T[i][0]);
+        h = HashDouble(h, mesh.T[i][1]);
+        keys[i] = { h, i };
+      }
+    });
+  vtkSMPTools::Sort(keys.begin(), keys.end());
+
+  mesh.Weld.resize(n);
+  vtkIdType runStart = 0;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (keys[k].first != keys[runStart].first)
+    {
+      runStart = k;
+    }
+    const vtkIdType i = keys[k].second;
+    mesh.Weld[i] = i;
+    for (vtkIdType j = runStart; j < k; ++j)
+    {
+      const vtkIdType o = keys[j].second;
+      if (mesh.Weld[o] == o && Equal(mesh.P[i], mesh.P[o]) && Equal(rawNormals[i], rawNormals[o]) &&
+        mesh.T[i][0] == mesh.T[o][0] && mesh.T[i][1] == mesh.T[o][1])
+      {
+        mesh.Weld[i] = o;
+        break;
+      }
+    }
+  }
+}
+
+// Output polygons: triangles and quads as they are, larger polygons triangulated (ear
+// cutting, fan if that fails), polygons with fewer than 3 points kept, strips split.
+void BuildFaces(vtkPolyData* input, MikkMesh& mesh)
+{
+  const vtkIdType polyCellBase = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  mesh.FacePoints.reserve(input->GetPolys()->GetNumberOfConnectivityIds());
+  mesh.FaceOffsets.reserve(input->GetNumberOfPolys() + 1);
+  mesh.FaceCell.reserve(input->GetNumberOfPolys());
+  auto addFace = [&mesh](const vtkIdType* ids, vtkIdType npts, vtkIdType cell)
+  {
+    mesh.FacePoints.insert(mesh.FacePoints.end(), ids, ids + npts);
+    mesh.FaceOffsets.push_back(static_cast<vtkIdType>(mesh.FacePoints.size()));
+    mesh.FaceCell.push_back(cell);
+  };
+
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> triIds;
+  vtkIdType cell = polyCellBase;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    polys->GetCurrentCell(npts, pts);
+    if (npts <= 4)
+    {
+      addFace(pts, npts, cell);
+      continue;
+    }
+    polygon->Initialize(static_cast<int>(npts), pts, input->GetPoints());
+    triIds->Reset();
+    const bool ok = polygon->Triangulate(triIds) != 0 && triIds->GetNumberOfIds() == 3 * (npts - 2);
+    for (vtkIdType t = 0; t < npts - 2; ++t)
+    {
+      vtkIdType tri[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        tri[k] = ok ? pts[triIds->GetId(3 * t + k)] : pts[k == 0 ? 0 : t + k];
+      }
+      addFace(tri, 3, cell);
+    }
+  }
+
+  cell = polyCellBase + input->GetNumberOfPolys();
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    strips->GetCurrentCell(npts, pts);
+    for (vtkIdType k = 0; k + 2 < npts; ++k)
+    {
+      // Every other triangle of a strip is wound the other way round.
+      const vtkIdType tri[3] = { pts[k + (k & 1)], pts[k + 1 - (k & 1)], pts[k + 2] };
+      if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
+      {
+        addFace(tri, 3, cell);
+      }
+    }
+  }
+}
+
+// One triangle per triangle face, two per quad, split along the shorter diagonal in
+// texture space (in position space on a tie) as MikkTSpace does.
+void BuildTriangles(MikkMesh& mesh)
+{
+  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  mesh.FaceFirstTri.resize(nFaces + 1);
+  mesh.FaceFirstTri[0] = 0;
+  for (vtkIdType f = 0; f < nFaces; ++f)
+  {
+    const vtkIdType n = mesh.FaceOffsets[f + 1] - mesh.FaceOffsets[f];
+    mesh.FaceFirstTri[f + 1] = mesh.FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
+  }
+  const vtkIdType nTris = mesh.FaceFirstTri[nFaces];
+  mesh.TriFace.resize(nTris);
+  mesh.TriVert.resize(nTris);
+  mesh.TriFlag.assign(nTris, 0);
+  vtkSMPTools::For(0, nFaces,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        const vtkIdType t = mesh.FaceFirstTri[f];
+        const vtkIdType nt = mesh.FaceFirstTri[f + 1] - t;
+        if (nt == 0)
+        {
+          continue;
+        }
+        mesh.TriFace[t] = f;
+        if (nt == 1)
+        {
+          mesh.TriVert[t] = { 0, 1, 2 };
+          continue;
+        }
+        mesh.TriFace[t + 1] = f;
+        const vtkIdType* c = mesh.FacePoints.data() + mesh.FaceOffsets[f];
+        auto dist2T = [&](int a, int b)
+        {
+          const double ds = mesh.T[c[a]][0] - mesh.T[c[b]][0];
+          const double dt = mesh.T[c[a]][1] - mesh.T[c[b]][1];
+          return ds * ds + dt * dt;
+        };
+        auto dist2P = [&](int a, int b)
+        {
+          const V3 d = Sub(mesh.P[c[a]], mesh.P[c[b]]);
+          return Dot(d, d);
+        };
+        const double t02 = dist2T(0, 2), t13 = dist2T(1, 3);
+        const bool diag02 = t02 < t13 || (!(t13 < t02) && !(dist2P(1, 3) < dist2P(0, 2)));
+        if (diag02)
+        {
+          mesh.TriVert[t] = { 0, 1, 2 };
+          mesh.TriVert[t + 1] = { 0, 2, 3 };
+        }
+        else
+        {
+          mesh.TriVert[t] = { 0, 1, 3 };
+          mesh.TriVert[t + 1] = { 1, 2, 3 };
+        }
+      }
+    });
+}
+
+double TexArea2(const MikkMesh& mesh, vtkIdType tri)
+{
+  const auto& t1 = mesh.T[mesh.CornerPoint(tri, 0)];
+  const auto& t2 = mesh.T[mesh.CornerPoint(tri, 1)];
+  const auto& t3 = mesh.T[mesh.CornerPoint(tri, 2)];
+  return (t2[0] - t1[0]) * (t3[1] - t1[1]) - (t2[1] - t1[1]) * (t3[0] - t1[0]);
+}
+
+/// The algorithm proper, on the triangles of a MikkMesh; fills per face corner tangents.
+class MikkTSpace
+{
+public:
+  MikkTSpace(MikkMesh& mesh, double angularThreshold)
+    : Mesh(mesh)
+    , ThresholdCos(std::cos(vtkMath::RadiansFromDegrees(angularThreshold)))
+  {
+  }
+
+  void Run(std::vector<TSpace>& cornerSpaces)
+  {
+    this->MarkDegenerates();
+    this->InitTriangles();
+    this->ForceQuadOrientation();
+    this->BuildVertexTriangles();
+    this->BuildNeighbors();
+    this->BuildGroups();
+    this->EvaluateGroups();
+    this->GatherCorners(cornerSpaces);
+    this->FixDegenerates(cornerSpaces);
+  }
+
+private:
+  MikkMesh& Mesh;
+  const double ThresholdCos;
+
+  std::vector<vtkIdType> Good; // good triangles in input order, then the degenerate
+  vtkIdType NumberOfGood = 0;
+  std::vector<std::array<vtkIdType, 3>> W; // welded vertex of each corner, by good index
+  std::vector<V3> Os, Ot;                  // per good triangle: directions of dP/ds, dP/dt
+  std::vector<int> Flag;                   // per good triangle
+  std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
+  std::vector<std::array<vtkIdType, 3>> Neighbor;      // across edge (i, i+1)
+  std::vector<vtkIdType> Assigned;                     // group of each good corner
+  std::vector<vtkIdType> GroupVertex, GroupStart, GroupMembers;
+  std::vector<char> GroupOrient;
+  std::vector<TSpace> Spaces; // per good corner
+
+  void MarkDegenerates()
+  {
+    MikkMesh& m = this->Mesh;
+    const vtkIdType nTris = static_cast<vtkIdType>(m.TriFace.size());
+    vtkSMPTools::For(0, nTris,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType t = begin; t < end; ++t)
+        {
+          const V3& p0 = m.P[m.CornerVertex(t, 0)];
+          const V3& p1 = m.P[m.CornerVertex(t, 1)];
+          const V3& p2 = m.P[m.CornerVertex(t, 2)];
+          if (Equal(p0, p1) || Equal(p0, p2) || Equal(p1, p2))
+          {
+            m.TriFlag[t] |= MarkDegenerate;
+          }
+        }
+      });
+    // A quad with exactly one good triangle gets special treatment at the end.
+    for (vtkIdType t = 0; t + 1 < nTris; ++t)
+    {
+      if (m.TriFace[t] == m.TriFace[t + 1])
+      {
+        if (((m.TriFlag[t] ^ m.TriFlag[t + 1]) & MarkDegenerate) != 0)
+        {
+          m.TriFlag[t] |= QuadOneDegenerate;
+          m.TriFlag[t + 1] |= QuadOneDegenerate;
+        }
+        ++t;
+      }
+    }
+    this->Good.reserve(nTris);
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      if (!(m.TriFlag[t] & MarkDegenerate))
+      {
+        this->Good.push_back(t);
+      }
+    }
+    this->NumberOfGood = static_cast<vtkIdType>(this->Good.size());
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      if (m.TriFlag[t] & MarkDegenerate)
+      {
+        this->Good.push_back(t);
+      }
+    }
+  }
+
+  // Per triangle: the normalised directions of dP/ds and dP/dt (eq. 18, 19 of the
+  // reference's description), the texture orientation, and whether the texture mapping
+  // is usable at all (if not, the triangle joins any group and adds nothing).
+  void InitTriangles()
+  {
+    const MikkMesh& m = this->Mesh;
+    const vtkIdType n = this->NumberOfGood;
+    this->W.resize(n);
+    this->Os.assign(n, V3{ 0.0, 0.0, 0.0 });
+    this->Ot.assign(n, V3{ 0.0, 0.0, 0.0 });
+    this->Flag.resize(n);
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType g = begin; g < end; ++g)
+        {
+          const vtkIdType t = this->Good[g];
+          for (int k = 0; k < 3; ++k)
+          {
+            this->W[g][k] = m.CornerVertex(t, k);
+          }
+          const V3& v1 = m.P[this->W[g][0]];
+          const V3& v2 = m.P[this->W[g][1]];
+          const V3& v3 = m.P[this->W[g][2]];
+          const auto& t1 = m.T[this->W[g][0]];
+          const auto& t2 = m.T[this->W[g][1]];
+          const auto& t3 = m.T[this->W[g][2]];
+          const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
+          const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
+          const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
+          const double area2 = t21x * t31y - t21y * t31x;
+          const V3 os = Sub(Scale(t31y, d1), Scale(t21y, d2));
+          const V3 ot = Sub(Scale(t21x, d2), Scale(t31x, d1));
+          int flag = (m.TriFlag[t] & ~MarkDegenerate) | GroupWithAny;
+          if (area2 > 0.0)
+          {
+            flag |= OrientPreserving;
+          }
+          if (NotZero(area2))
+          {
+            const double absArea = std::abs(area2);
+            // dP/ds and dP/dt are differences of terms as large as the edges; what is left
+            // below single-precision rounding of those terms is cancellation noise (a sliver
+            // whose texture edge runs along a vanishing position edge), not a direction. The
+            // reference, in float, finds zero there; in double we must say so explicitly.
+            const double l1 = std::sqrt(Dot(d1, d1)), l2 = std::sqrt(Dot(d2, d2));
+            double lenOs = std::sqrt(Dot(os, os));
+            double lenOt = std::sqrt(Dot(ot, ot));
+            if (lenOs <= CancellationEps * (std::abs(t31y) * l1 + std::abs(t21y) * l2))
+            {
+              lenOs = 0.0;
+            }
+            if (lenOt <= CancellationEps * (std::abs(t31x) * l1 + std::abs(t21x) * l2))
+            {
+              lenOt = 0.0;
+            }
+            const double sign = area2 > 0.0 ? 1.0 : -1.0;
+            if (NotZero(lenOs))
+            {
+              this->Os[g] = Scale(sign / lenOs, os);
+            }
+            if (NotZero(lenOt))
+            {
+              this->Ot[g] = Scale(sign / lenOt, ot);
+            }
+            if (NotZero(lenOs / absArea) && NotZero(lenOt / absArea))
+            {
+              flag &= ~GroupWithAny;
+            }
+          }
+          this->Flag[g] = flag;
+        }
+      });
+  }
+
+  // The two triangles of a quad must have one orientation; the larger texture area (or
+  // the one with usable derivatives) decides.
+  void ForceQuadOrientation()
+  {
+    const MikkMesh& m = this->Mesh;
+    vtkSMPTools::For(0, std::max<vtkIdType>(this->NumberOfGood - 1, 0),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType g = begin; g < end; ++g)
+        {
+          const vtkIdType a = this->Good[g], b = this->Good[g + 1];
+          if (m.TriFace[a] != m.TriFace[b] ||
+            ((this->Flag[g] ^ this->Flag[g + 1]) & OrientPreserving) == 0)
+          {
+            continue;
+          }
+          const bool first = (this->Flag[g + 1] & GroupWithAny) != 0 ||
+            std::abs(TexArea2(m, a)) >= std::abs(TexArea2(m, b));
+          const vtkIdType from = first ? g : g + 1, to = first ? g + 1 : g;
+          this->Flag[to] =
+            (this->Flag[to] & ~OrientPreserving) | (this->Flag[from] & OrientPreserving);
+        }
+      });
+  }
+
+  // Vertex -> good triangles, each list in increasing triangle order.
+  void BuildVertexTriangles()
+  {
+    const vtkIdType nv = this->Mesh.NumberOfPoints;
+    this->VertexTriOffsets.assign(nv + 1, 0);
+    for (const auto& w : this->W)
+    {
+      for (vtkIdType v : w)
+      {
+        ++this->VertexTriOffsets[v + 1];
+      }
+    }
+    for (vtkIdType v = 0; v < nv; ++v)
+    {
+      this->VertexTriOffsets[v + 1] += this->VertexTriOffsets[v];
+    }
+    this->VertexTris.resize(this->VertexTriOffsets[nv]);
+    std::vector<vtkIdType> fill(this->VertexTriOffsets.begin(), this->VertexTriOffsets.end() - 1);
+    for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
+    {
+      for (vtkIdType v : this->W[g])
+      {
+        this->VertexTris[fill[v]++] = g;
+      }
+    }
+  }
+
+  static int EdgeNumber(const std::array<vtkIdType, 3>& w, vtkIdType a, vtkIdType b)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const vtkIdType x = w[e], y = w[e < 2 ? e + 1 : 0];
+      if ((x == a && y == b) || (x == b && y == a))
+      {
+        return e;
+      }
+    }
+    return -1;
+  }
+
+  // Triangles are neighbours across an edge they use in opposite directions. Where more
+  // than two triangles share an edge, the reference pairs them greedily in triangle order:
+  // each unpaired one with the first later unpaired one running the other way. Every
+  // triangle replays that pairing for its own edges, so the loop runs in parallel.
+  void BuildNeighbors()
+  {
+    this->Neighbor.assign(this->NumberOfGood, { -1, -1, -1 });
+    vtkSMPTools::For(0, this->NumberOfGood,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<vtkIdType> tris;
+        std::vector<char> dir, paired;
+        for (vtkIdType g = begin; g < end; ++g)
+        {
+          for (int e = 0; e < 3; ++e)
+          {
+            const vtkIdType a = this->W[g][e], b = this->W[g][e < 2 ? e + 1 : 0];
+            const vtkIdType lo = std::min(a, b), hi = std::max(a, b);
+            tris.clear();
+            dir.clear();
+            for (vtkIdType k = this->VertexTriOffsets[lo]; k < this->VertexTriOffsets[lo + 1]; ++k)
+            {
+              const vtkIdType u = this->VertexTris[k];
+              const int eu = EdgeNumber(this->W[u], lo, hi);
+              if (eu >= 0)
+              {
+                tris.push_back(u);
+                dir.push_back(this->W[u][eu] == lo);
+              }
+            }
+            paired.assign(tris.size(), 0);
+            for (size_t i = 0; i < tris.size(); ++i)
+            {
+              if (paired[i])
+              {
+                continue;
+              }
+              for (size_t j = i + 1; j < tris.size(); ++j)
+              {
+                if (!paired[j] && dir[j] != dir[i])
+                {
+                  paired[i] = paired[j] = 1;
+                  if (tris[i] == g)
+                  {
+                    this->Neighbor[g][e] = tris[j];
+                  }
+                  else if (tris[j] == g)
+                  {
+                    this->Neighbor[g][e] = tris[i];
+                  }
+                  break;
+                }
+              }
+            }
+          }
+        }
+      });
+  }
+
+  static int CornerOf(const std::array<vtkIdType, 3>& w, vtkIdType v)
+  {
+    return w[0] == v ? 0 : (w[1] == v ? 1 : (w[2] == v ? 2 : -1));
+  }
+
+  // Groups: around each vertex, the triangles connected across edges at that vertex and
+  // with one texture orientation. Sequential because a triangle without usable texture
+  // derivatives takes the orientation of the first group that reaches it (the reference's
+  // one order dependency); seeds and floods follow its order.
+  void BuildGroups()
+  {
+    const vtkIdType n = this->NumberOfGood;
+    this->Assigned.assign(3 * n, -1);
+    this->GroupStart.push_back(0);
+    std::vector<vtkIdType> stack;
+    for (vtkIdType g = 0; g < n; ++g)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        if ((this->Flag[g] & GroupWithAny) || this->Assigned[3 * g + i] >= 0)
+        {
+          continue;
+        }
+        const vtkIdType group = static_cast<vtkIdType>(this->GroupVertex.size());
+        const vtkIdType vertex = this->W[g][i];
+        const bool orient = (this->Flag[g] & OrientPreserving) != 0;
+        this->GroupVertex.push_back(vertex);
+        this->GroupOrient.push_back(orient);
+        this->Assigned[3 * g + i] = group;
+        this->GroupMembers.push_back(g);
+        stack.clear();
+        stack.push_back(this->Neighbor[g][i]);
+        stack.push_back(this->Neighbor[g][i > 0 ? i - 1 : 2]);
+        while (!stack.empty())
+        {
+          const vtkIdType t = stack.back();
+          stack.pop_back();
+          if (t < 0)
+          {
+            continue;
+          }
+          const int j = CornerOf(this->W[t], vertex);
+          if (j < 0 || this->Assigned[3 * t + j] >= 0)
+          {
+            continue;
+          }
+          if ((this->Flag[t] & GroupWithAny) && this->Assigned[3 * t] < 0 &&
+            this->Assigned[3 * t + 1] < 0 && this->Assigned[3 * t + 2] < 0)
+          {
+            this->Flag[t] = (this->Flag[t] & ~OrientPreserving) | (orient ? OrientPreserving : 0);
+          }
+          if (((this->Flag[t] & OrientPreserving) != 0) != orient)
+          {
+            continue;
+          }
+          this->Assigned[3 * t + j] = group;
+          this->GroupMembers.push_back(t);
+          stack.push_back(this->Neighbor[t][j]);
+          stack.push_back(this->Neighbor[t][j > 0 ? j - 1 : 2]);
+        }
+        this->GroupStart.push_back(static_cast<vtkIdType>(this->GroupMembers.size()));
+      }
+    }
+  }
+
+  // Angle-weighted average of the members' dP/ds directions projected onto the tangent
+  // plane of the vertex normal, summed in increasing triangle order as the reference does.
+  V3 Average(const vtkIdType* members, size_t count, vtkIdType vertex, const V3& n,
+    const std::vector<V3>& os) const
+  {
+    const MikkMesh& m = this->Mesh;
+    V3 sum{ 0.0, 0.0, 0.0 };
+    for (size_t k = 0; k < count; ++k)
+    {
+      const vtkIdType t = members[k];
+      if (this->Flag[t] & GroupWithAny)
+      {
+        continue;
+      }
+      const auto& w = this->W[t];
+      const int i = CornerOf(w, vertex);
+      if (i < 0)
+      {
+        continue;
+      }
+      const V3& p1 = m.P[w[i]];
+      const V3 e1 = ProjectNormalize(Sub(m.P[w[i > 0 ? i - 1 : 2]], p1), n);
+      const V3 e2 = ProjectNormalize(Sub(m.P[w[i < 2 ? i + 1 : 0]], p1), n);
+      const double c = std::min(1.0, std::max(-1.0, Dot(e1, e2)));
+      double angle = std::acos(c);
+      if (!std::isfinite(angle))
+      {
+        angle = 0.0;
+      }
+      const V3& d = os[k];
+      for (int a = 0; a < 3; ++a)
+      {
+        sum[a] += angle * d[a];
+      }
+    }
+    return NormalizeSafe(sum);
+  }
+
+  void EvaluateGroups()
+  {
+    const MikkMesh& m = this->Mesh;
+    this->Spaces.assign(3 * this->NumberOfGood, TSpace());
+    const vtkIdType nGroups = static_cast<vtkIdType>(this->GroupVertex.size());
+    vtkSMPTools::For(0, nGroups,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<vtkIdType> members, subset;
+        std::vector<V3> os, ot, subOs;
+        for (vtkIdType grp = begin; grp < end; ++grp)
+        {
+          const vtkIdType vertex = this->GroupVertex[grp];
+          const V3& n = m.N[vertex];
+          members.assign(this->GroupMembers.begin() + this->GroupStart[grp],
+            this->GroupMembers.begin() + this->GroupStart[grp + 1]);
+          std::sort(members.begin(), members.end());
+          const size_t count = members.size();
+          os.resize(count);
+          ot.resize(count);
+          for (size_t k = 0; k < count; ++k)
+          {
+            os[k] = ProjectNormalize(this->Os[members[k]], n);
+            ot[k] = ProjectNormalize(this->Ot[members[k]], n);
+          }
+          bool haveAll = false;
+          V3 all{ 0.0, 0.0, 0.0 };
+          for (size_t f = 0; f < count; ++f)
+          {
+            // The sub-group of f: members close enough in direction (always all of them
+            // at the default threshold of 180 degrees, unless exactly opposite).
+            subset.clear();
+            subOs.clear();
+            const vtkIdType tf = members[f];
+            for (size_t k = 0; k < count; ++k)
+            {
+              const vtkIdType tk = members[k];
+              const bool any = ((this->Flag[tf] | this->Flag[tk]) & GroupWithAny) != 0;
+              const bool sameFace = m.TriFace[this->Good[tf]] == m.TriFace[this->Good[tk]];
+              if (any || sameFace ||
+                (Dot(os[f], os[k]) > this->ThresholdCos && Dot(ot[f], ot[k]) > this->ThresholdCos))
+              {
+                subset.push_back(tk);
+                subOs.push_back(os[k]);
+              }
+            }
+            V3 result;
+            if (subset.size() == count)
+            {
+              if (!haveAll)
+              {
+                all = this->Average(members.data(), count, vertex, n, os);
+                haveAll = true;
+              }
+              result = all;
+            }
+            else
+            {
+              result = this->Average(subset.data(), subset.size(), vertex, n, subOs);
+            }
+            TSpace& out = this->Spaces[3 * tf + CornerOf(this->W[tf], vertex)];
+            out.Os = result;
+            out.Orient = this->GroupOrient[grp] != 0;
+            out.Group = grp;
+          }
+        }
+      });
+  }
+
+  // Good triangle corners -> face corners. A quad's diagonal corners get two; the
+  // reference averages them unless they are equal, and the later group's orientation wins.
+  void GatherCorners(std::vector<TSpace>& corners)
+  {
+    const MikkMesh& m = this->Mesh;
+    corners.assign(m.FacePoints.size(), TSpace());
+    std::vector<vtkIdType> goodIndex(m.TriFace.size(), -1);
+    for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
+    {
+      goodIndex[this->Good[g]] = g;
+    }
+    const vtkIdType nFaces = static_cast<vtkIdType>(m.FaceCell.size());
+    vtkSMPTools::For(0, nFaces,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType f = begin; f < end; ++f)
+        {
+          for (vtkIdType t = m.FaceFirstTri[f]; t < m.FaceFirstTri[f + 1]; ++t)
+          {
+            const vtkIdType g = goodIndex[t];
+            if (g < 0)
+            {
+              continue;
+            }
+            for (int k = 0; k < 3; ++k)
+            {
+              const TSpace& in = this->Spaces[3 * g + k];
+              if (in.Group < 0)
+              {
+                continue;
+              }
+              TSpace& out = corners[m.FaceCorner(t, k)];
+              if (out.Group < 0)
+              {
+                out = in;
+                continue;
+              }
+              if (!Equal(out.Os, in.Os))
+              {
+                out.Os = NormalizeSafe(
+                  V3{ out.Os[0] + in.Os[0], out.Os[1] + in.Os[1], out.Os[2] + in.Os[2] });
+              }
+              if (in.Group > out.Group)
+              {
+                out.Orient = in.Orient;
+                out.Group = in.Group;
+              }
+            }
+          }
+        }
+      });
+  }
+
+  // Degenerate triangles take the space of the first good corner at the same vertex; a
+  // quad with one good triangle gives its missing corner the space of the corner at the
+  // same position.
+  void FixDegenerates(std::vector<TSpace>& corners)
+  {
+    const MikkMesh& m = this->Mesh;
+    for (size_t d = static_cast<size_t>(this->NumberOfGood); d < this->Good.size(); ++d)
+    {
+      const vtkIdType t = this->Good[d];
+      if (m.TriFlag[t] & QuadOneDegenerate)
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType v = m.CornerVertex(t, k);
+        if (this->VertexTriOffsets[v] == this->VertexTriOffsets[v + 1])
+        {
+          continue;
+        }
+        const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
+        const vtkIdType src = m.FaceCorner(this->Good[g], CornerOf(this->W[g], v));
+        corners[m.FaceCorner(t, k)] = corners[src];
+      }
+    }
+    for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
+    {
+      const vtkIdType t = this->Good[g];
+      if (!(m.TriFlag[t] & QuadOneDegenerate))
+      {
+        continue;
+      }
+      const auto& vn = m.TriVert[t];
+      const int used = (1 << vn[0]) | (1 << vn[1]) | (1 << vn[2]);
+      const int missing = !(used & 2) ? 1 : (!(used & 4) ? 2 : (!(used & 8) ? 3 : 0));
+      const vtkIdType base = m.FaceOffsets[m.TriFace[t]];
+      const V3& target = m.P[m.FacePoints[base + missing]];
+      for (int k = 0; k < 3; ++k)
+      {
+        if (Equal(m.P[m.FacePoints[base + vn[k]]], target))
+        {
+          corners[base + missing] = corners[base + vn[k]];
+          break;
+        }
+      }
+    }
+  }
+};
+
+// The final frame of a corner: the tangent made exactly orthogonal to the unit normal; if
+// that leaves nothing (degenerate input), any unit vector orthogonal to the normal.
+void FinalTangent(const V3& n, const TSpace& ts, float out[4])
+{
+  double t[4] = { ts.Os[0], ts.Os[1], ts.Os[2], 0.0 };
+  const double nDotT = Dot(n, ts.Os);
+  double tp[3] = { t[0] - nDotT * n[0], t[1] - nDotT * n[1], t[2] - nDotT * n[2] };
+  const double len = vtkSurfaceDetail::Normalize(tp);
+  if (!(len > 1e-6 && std::isfinite(len)))
+  {
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    double nn[3] = { n[0], n[1], n[2] };
+    if (!(std::isfinite(Dot(n, n)) && Dot(n, n) > 0.5))
+    {
+      nn[0] = 0.0;
+      nn[1] = 0.0;
+      nn[2] = 1.0;
+    }
+    vtkSurfaceDetail::MakeTangentFrame(nn, zero, zero, t);
+    tp[0] = t[0];
+    tp[1] = t[1];
+    tp[2] = t[2];
+  }
+  out[0] = static_cast<float>(tp[0]);
+  out[1] = static_cast<float>(tp[1]);
+  out[2] = static_cast<float>(tp[2]);
+  out[3] = ts.Orient ? 1.0f : -1.0f;
+}
+
+vtkSmartPointer<vtkIdList> IdRange(vtkIdType n)
+{
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  ids->SetNumberOfIds(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ids->SetId(i, i);
+  }
+  return ids;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+void vtkMikkTSpaceTangents::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AngularThreshold: " << this->AngularThreshold << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkMikkTSpaceTangents::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro("The input must be a vtkPolyData.");
+    return 0;
+  }
+  const vtkIdType nPts = input->GetNumberOfPoints();
+  if (nPts == 0 || !input->GetPoints())
+  {
+    vtkErrorMacro("The input has no points; give it a surface with points, normals and "
+                  "texture coordinates.");
+    return 0;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input has no polygons or triangle strips; tangents need a surface.");
+    return 0;
+  }
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro("The input has no 2-component point texture coordinates; set them as the "
+                  "point data's TCoords (e.g. with vtkTextureMapToPlane or a parametric "
+                  "source) before computing tangents.");
+    return 0;
+  }
+
+  // The point data that goes to the output: the input's, plus normals if we make them.
+  vtkNew<vtkPointData> inPD;
+  inPD->ShallowCopy(input->GetPointData());
+  vtkDataArray* normals = inPD->GetNormals();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    vtkWarningMacro("The input has no 3-component point normals; computing them with "
+                    "vtkPolyDataNormals (no splitting, no reordering).");
+    vtkNew<vtkPolyData> surface;
+    surface->SetPoints(input->GetPoints());
+    surface->SetPolys(input->GetPolys());
+    surface->SetStrips(input->GetStrips());
+    vtkNew<vtkPolyDataNormals> pdn;
+    pdn->SetInputData(surface);
+    pdn->SplittingOff();
+    pdn->ConsistencyOff();
+    pdn->AutoOrientNormalsOff();
+    pdn->ComputeCellNormalsOff();
+    pdn->ComputePointNormalsOn();
+    pdn->Update();
+    vtkDataArray* computed = pdn->GetOutput()->GetPointData()->GetNormals();
+    if (!computed || computed->GetNumberOfTuples() != nPts)
+    {
+      vtkErrorMacro("The input has no point normals and vtkPolyDataNormals could not make "
+                    "them; set the point data's Normals.");
+      return 0;
+    }
+    inPD->SetNormals(computed);
+    normals = computed;
+  }
+  if (tcoords->GetNumberOfTuples() != nPts || normals->GetNumberOfTuples() != nPts)
+  {
+    vtkErrorMacro("The texture coordinates or normals do not have one tuple per point.");
+    return 0;
+  }
+
+  MikkMesh mesh;
+  mesh.NumberOfPoints = nPts;
+  {
+    std::vector<V3> rawNormals;
+    ReadAttributes(input->GetPoints(), normals, tcoords, mesh, rawNormals);
+    Weld(mesh, rawNormals);
+  }
+  BuildFaces(input, mesh);
+  BuildTriangles(mesh);
+  this->UpdateProgress(0.2);
+
+  std::vector<TSpace> cornerSpaces;
+  {
+    MikkTSpace mikk(mesh, this->AngularThreshold);
+    mikk.Run(cornerSpaces);
+  }
+  this->UpdateProgress(0.7);
+
+  // Final float frames per corner of every face that MikkTSpace handles (3 or 4 corners).
+  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  const vtkIdType nCorners = static_cast<vtkIdType>(mesh.FacePoints.size());
+  std::vector<std::array<float, 4>> cornerTangents(nCorners);
+  std::vector<char> cornerUsed(nCorners, 0);
+  vtkSMPTools::For(0, nFaces,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        if (mesh.FaceFirstTri[f] == mesh.FaceFirstTri[f + 1])
+        {
+          continue;
+        }
+        for (vtkIdType c = mesh.FaceOffsets[f]; c < mesh.FaceOffsets[f + 1]; ++c)
+        {
+          FinalTangent(mesh.N[mesh.FacePoints[c]], cornerSpaces[c], cornerTangents[c].data());
+          cornerUsed[c] = 1;
+        }
+      }
+    });
+
+  // Point -> its corners, in corner order; a point keeps its first frame, every other
+  // distinct frame at it becomes a new point.
+  std::vector<vtkIdType> pointCornerOffsets(nPts + 1, 0);
+  for (vtkIdType c = 0; c < nCorners; ++c)
+  {
+    pointCornerOffsets[mesh.FacePoints[c] + 1] += cornerUsed[c];
+  }
+  for (vtkIdType p = 0; p < nPts; ++p)
+  {
+    pointCornerOffsets[p + 1] += pointCornerOffsets[p];
+  }
+  std::vector<vtkIdType> pointCorners(pointCornerOffsets[nPts]);
+  {
+    std::vector<vtkIdType> fill(pointCornerOffsets.begin(), pointCornerOffsets.end() - 1);
+    for (vtkIdType c = 0; c < nCorners; ++c)
+    {
+      if (cornerUsed[c])
+      {
+        pointCorners[fill[mesh.FacePoints[c]]++] = c;
+      }
+    }
+  }
+  std::vector<vtkIdType> cornerPoint(mesh.FacePoints);
+  std::vector<vtkIdType> extraCount(nPts + 1, 0);
+  auto sameFrame = [&](vtkIdType a, vtkIdType b) {
+    return std::memcmp(cornerTangents[a].data(), cornerTangents[b].data(), 4 * sizeof(float)) == 0;
+  };
+  vtkSMPTools::For(0, nPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkIdType> distinct;
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        distinct.clear();
+        for (vtkIdType k = pointCornerOffsets[p]; k < pointCornerOffsets[p + 1]; ++k)
+        {
+          const vtkIdType c = pointCorners[k];
+          if (std::none_of(
+                distinct.begin(), distinct.end(), [&](vtkIdType d) { return sameFrame(c, d); }))
+          {
+            distinct.push_back(c);
+          }
+        }
+        extraCount[p + 1] = distinct.empty() ? 0 : static_cast<vtkIdType>(distinct.size()) - 1;
+      }
+    });
+  for (vtkIdType p = 0; p < nPts; ++p)
+  {
+    extraCount[p + 1] += extraCount[p];
+  }
+  const vtkIdType nExtra = extraCount[nPts];
+  const vtkIdType nOutPts = nPts + nExtra;
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(4);
+  tangents->SetNumberOfTuples(nOutPts);
+  float* tOut = tangents->GetPointer(0);
+  std::vector<vtkIdType> extraSource(nExtra);
+  vtkSMPTools::For(0, nPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkIdType> distinct;
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        distinct.clear();
+        for (vtkIdType k = pointCornerOffsets[p]; k < pointCornerOffsets[p + 1]; ++k)
+        {
+          const vtkIdType c = pointCorners[k];
+          size_t d = 0;
+          while (d < distinct.size() && !sameFrame(c, distinct[d]))
+          {
+            ++d;
+          }
+          if (d == distinct.size())
+          {
+            distinct.push_back(c);
+            const vtkIdType id = d == 0 ? p : nPts + extraCount[p] + static_cast<vtkIdType>(d) - 1;
+            std::copy_n(cornerTangents[c].data(), 4, tOut + 4 * id);
+            if (d > 0)
+            {
+              extraSource[id - nPts] = p;
+            }
+          }
+          cornerPoint[c] = d == 0 ? p : nPts + extraCount[p] + static_cast<vtkIdType>(d) - 1;
+        }
+        if (distinct.empty())
+        {
+          // Not on any polygon: any frame orthogonal to the normal.
+          FinalTangent(mesh.N[p], TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, tOut + 4 * p);
+        }
+      }
+    });
+  this->UpdateProgress(0.9);
+
+  // Points and point data, extended by the split points.
+  if (nExtra == 0)
+  {
+    output->SetPoints(input->GetPoints());
+    output->GetPointData()->PassData(inPD);
+  }
+  else
+  {
+    vtkNew<vtkIdList> src;
+    src->SetNumberOfIds(nOutPts);
+    for (vtkIdType i = 0; i < nPts; ++i)
+    {
+      src->SetId(i, i);
+    }
+    for (vtkIdType i = 0; i < nExtra; ++i)
+    {
+      src->SetId(nPts + i, extraSource[i]);
+    }
+    vtkNew<vtkPoints> points;
+    points->SetDataType(input->GetPoints()->GetDataType());
+    points->SetNumberOfPoints(nOutPts);
+    input->GetPoints()->GetData()->GetTuples(src, points->GetData());
+    output->SetPoints(points);
+    vtkPointData* outPD = output->GetPointData();
+    outPD->CopyAllocate(inPD, nOutPts);
+    outPD->CopyData(inPD, src, IdRange(nOutPts));
+  }
+  // VTK 9.1 accepts only 3-component tangent attributes, so the frame is the named array
+  // DESIGN.md fixes; a stale input array of that name must not survive next to it.
+  output->GetPointData()->RemoveArray("Tangents");
+  output->GetPointData()->AddArray(tangents);
+
+  // Cells: vertices and lines as they are; polygons renumbered; strips as triangles.
+  output->SetVerts(input->GetVerts());
+  output->SetLines(input->GetLines());
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(nFaces + 1);
+  std::copy(mesh.FaceOffsets.begin(), mesh.FaceOffsets.end(), offsets->GetPointer(0));
+  connectivity->SetNumberOfValues(nCorners);
+  std::copy(cornerPoint.begin(), cornerPoint.end(), connectivity->GetPointer(0));
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+
+  const vtkIdType nLead = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const bool sameCells = input->GetNumberOfStrips() == 0 && nFaces == input->GetNumberOfPolys();
+  if (sameCells)
+  {
+    output->GetCellData()->PassData(input->GetCellData());
+  }
+  else
+  {
+    const vtkIdType nOutCells = nLead + nFaces;
+    vtkNew<vtkIdList> src;
+    src->SetNumberOfIds(nOutCells);
+    for (vtkIdType i = 0; i < nLead; ++i)
+    {
+      src->SetId(i, i);
+    }
+    for (vtkIdType f = 0; f < nFaces; ++f)
+    {
+      src->SetId(nLead + f, mesh.FaceCell[f]);
+    }
+    output->GetCellData()->CopyAllocate(input->GetCellData(), nOutCells);
+    output->GetCellData()->CopyData(input->GetCellData(), src, IdRange(nOutCells));
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+
+  // Non-finite input gives arbitrary (finite) frames: say so.
+  const vtkIdType nonFinite = std::count_if(mesh.P.begin(), mesh.P.end(),
+    [](const V3& p)
+    { return !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])); });
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite
+                    << " points have non-finite coordinates; the tangents "
+                       "around them are arbitrary unit vectors orthogonal to the normal.");
+  }
+  return 1;
+}
