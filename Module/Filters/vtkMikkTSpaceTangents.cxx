@@ -349,6 +349,35 @@ double TexArea2(const MikkMesh& mesh, vtkIdType tri)
   return (t2[0] - t1[0]) * (t3[1] - t1[1]) - (t2[1] - t1[1]) * (t3[0] - t1[0]);
 }
 
+// The final frame of a corner: the tangent made exactly orthogonal to the unit normal; if
+// that leaves nothing (degenerate input), any unit vector orthogonal to the normal.
+void FinalTangent(const V3& n, const TSpace& ts, float out[4])
+{
+  double t[4] = { ts.Os[0], ts.Os[1], ts.Os[2], 0.0 };
+  const double nDotT = Dot(n, ts.Os);
+  double tp[3] = { t[0] - nDotT * n[0], t[1] - nDotT * n[1], t[2] - nDotT * n[2] };
+  const double len = vtkSurfaceDetail::Normalize(tp);
+  if (!(len > 1e-6 && std::isfinite(len)))
+  {
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    double nn[3] = { n[0], n[1], n[2] };
+    if (!(std::isfinite(Dot(n, n)) && Dot(n, n) > 0.5))
+    {
+      nn[0] = 0.0;
+      nn[1] = 0.0;
+      nn[2] = 1.0;
+    }
+    vtkSurfaceDetail::MakeTangentFrame(nn, zero, zero, t);
+    tp[0] = t[0];
+    tp[1] = t[1];
+    tp[2] = t[2];
+  }
+  out[0] = static_cast<float>(tp[0]);
+  out[1] = static_cast<float>(tp[1]);
+  out[2] = static_cast<float>(tp[2]);
+  out[3] = ts.Orient ? 1.0f : -1.0f;
+}
+
 /// The algorithm proper, on the triangles of a MikkMesh; fills per face corner tangents.
 class MikkTSpace
 {
@@ -359,17 +388,21 @@ public:
   {
   }
 
-  void Run(std::vector<TSpace>& cornerSpaces)
+  /// Fills @a tangents for the face corners it can and sets @a set for those.
+  void Run(std::vector<std::array<float, 4>>& tangents, std::vector<char>& set)
   {
+    const size_t nCorners = this->Mesh.FacePoints.size();
+    tangents.resize(nCorners);
+    set.assign(nCorners, 0);
+    this->Tangents = tangents.data();
+    this->Set = set.data();
     this->MarkDegenerates();
     this->InitTriangles();
     this->ForceQuadOrientation();
     this->BuildVertexTriangles();
-    this->BuildNeighbors();
-    this->BuildGroups();
-    this->EvaluateGroups();
-    this->GatherCorners(cornerSpaces);
-    this->FixDegenerates(cornerSpaces);
+    this->ResolveGroupWithAnyOrientation();
+    this->EvaluateVertices();
+    this->FixDegenerates();
   }
 
 private:
@@ -382,11 +415,8 @@ private:
   std::vector<V3> Os, Ot;                  // per good triangle: directions of dP/ds, dP/dt
   std::vector<int> Flag;                   // per good triangle
   std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
-  std::vector<std::array<vtkIdType, 3>> Neighbor;      // across edge (i, i+1)
-  std::vector<vtkIdType> Assigned;                     // group of each good corner
-  std::vector<vtkIdType> GroupVertex, GroupStart, GroupMembers;
-  std::vector<char> GroupOrient;
-  std::vector<TSpace> Spaces; // per good corner
+  std::array<float, 4>* Tangents = nullptr;            // per face corner
+  char* Set = nullptr;                                 // per face corner: Tangents[c] is set
 
   void MarkDegenerates()
   {
@@ -564,298 +594,315 @@ private:
     }
   }
 
-  static int EdgeNumber(const std::array<vtkIdType, 3>& w, vtkIdType a, vtkIdType b)
-  {
-    for (int e = 0; e < 3; ++e)
-    {
-      const vtkIdType x = w[e], y = w[e < 2 ? e + 1 : 0];
-      if ((x == a && y == b) || (x == b && y == a))
-      {
-        return e;
-      }
-    }
-    return -1;
-  }
-
-  // Triangles are neighbours across an edge they use in opposite directions. Where more
-  // than two triangles share an edge, the reference pairs them greedily in triangle order:
-  // each unpaired one with the first later unpaired one running the other way. Every
-  // triangle replays that pairing for its own edges, so the loop runs in parallel.
-  void BuildNeighbors()
-  {
-    this->Neighbor.assign(this->NumberOfGood, { -1, -1, -1 });
-    vtkSMPTools::For(0, this->NumberOfGood,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        std::vector<vtkIdType> tris;
-        std::vector<char> dir, paired;
-        for (vtkIdType g = begin; g < end; ++g)
-        {
-          for (int e = 0; e < 3; ++e)
-          {
-            const vtkIdType a = this->W[g][e], b = this->W[g][e < 2 ? e + 1 : 0];
-            const vtkIdType lo = std::min(a, b), hi = std::max(a, b);
-            tris.clear();
-            dir.clear();
-            for (vtkIdType k = this->VertexTriOffsets[lo]; k < this->VertexTriOffsets[lo + 1]; ++k)
-            {
-              const vtkIdType u = this->VertexTris[k];
-              const int eu = EdgeNumber(this->W[u], lo, hi);
-              if (eu >= 0)
-              {
-                tris.push_back(u);
-                dir.push_back(this->W[u][eu] == lo);
-              }
-            }
-            paired.assign(tris.size(), 0);
-            for (size_t i = 0; i < tris.size(); ++i)
-            {
-              if (paired[i])
-              {
-                continue;
-              }
-              for (size_t j = i + 1; j < tris.size(); ++j)
-              {
-                if (!paired[j] && dir[j] != dir[i])
-                {
-                  paired[i] = paired[j] = 1;
-                  if (tris[i] == g)
-                  {
-                    this->Neighbor[g][e] = tris[j];
-                  }
-                  else if (tris[j] == g)
-                  {
-                    this->Neighbor[g][e] = tris[i];
-                  }
-                  break;
-                }
-              }
-            }
-          }
-        }
-      });
-  }
-
   static int CornerOf(const std::array<vtkIdType, 3>& w, vtkIdType v)
   {
     return w[0] == v ? 0 : (w[1] == v ? 1 : (w[2] == v ? 2 : -1));
   }
 
-  // Groups: around each vertex, the triangles connected across edges at that vertex and
-  // with one texture orientation. Sequential because a triangle without usable texture
-  // derivatives takes the orientation of the first group that reaches it (the reference's
-  // one order dependency); seeds and floods follow its order.
-  void BuildGroups()
+  /// The triangles around one vertex and how they connect there.
+  struct Fan
+  {
+    std::vector<vtkIdType> Tri;        // good triangles, increasing
+    std::vector<int> Corner;           // the vertex's corner in each
+    std::vector<vtkIdType> Next, Prev; // the other two vertices, in winding order
+    std::vector<int> Out, In;          // neighbour across (v, next) and (prev, v), or -1
+  };
+
+  // Triangles are neighbours across an edge they use in opposite directions. Where more
+  // than two triangles share an edge, the reference pairs them greedily in triangle order:
+  // each unpaired one with the first later unpaired one running the other way. All the
+  // triangles on an edge at v are around v, so v's fan alone decides its links.
+  void BuildFan(vtkIdType v, Fan& fan) const
+  {
+    const vtkIdType begin = this->VertexTriOffsets[v], end = this->VertexTriOffsets[v + 1];
+    const size_t k = static_cast<size_t>(end - begin);
+    fan.Tri.assign(this->VertexTris.begin() + begin, this->VertexTris.begin() + end);
+    fan.Corner.resize(k);
+    fan.Next.resize(k);
+    fan.Prev.resize(k);
+    fan.Out.assign(k, -1);
+    fan.In.assign(k, -1);
+    for (size_t a = 0; a < k; ++a)
+    {
+      const auto& w = this->W[fan.Tri[a]];
+      const int i = CornerOf(w, v);
+      fan.Corner[a] = i;
+      fan.Next[a] = w[i < 2 ? i + 1 : 0];
+      fan.Prev[a] = w[i > 0 ? i - 1 : 2];
+    }
+    for (size_t a = 0; a < k; ++a)
+    {
+      for (size_t b = a + 1; b < k && fan.Out[a] < 0; ++b)
+      {
+        if (fan.In[b] < 0 && fan.Prev[b] == fan.Next[a])
+        {
+          fan.Out[a] = static_cast<int>(b);
+          fan.In[b] = static_cast<int>(a);
+        }
+      }
+      for (size_t b = a + 1; b < k && fan.In[a] < 0; ++b)
+      {
+        if (fan.Out[b] < 0 && fan.Next[b] == fan.Prev[a])
+        {
+          fan.In[a] = static_cast<int>(b);
+          fan.Out[b] = static_cast<int>(a);
+        }
+      }
+    }
+  }
+
+  bool Orient(vtkIdType t) const { return (this->Flag[t] & OrientPreserving) != 0; }
+
+  // A triangle without usable texture derivatives takes the orientation of the first group
+  // that reaches it, at any of its vertices: the reference's one order dependency. Replay
+  // its group building (seeds in triangle/corner order, floods across linked neighbours of
+  // the same orientation) at the vertices that have such triangles; elsewhere it cannot
+  // matter, and every other vertex is then independent of the rest.
+  void ResolveGroupWithAnyOrientation()
   {
     const vtkIdType n = this->NumberOfGood;
-    this->Assigned.assign(3 * n, -1);
-    this->GroupStart.push_back(0);
-    std::vector<vtkIdType> stack;
+    const vtkIdType nv = this->Mesh.NumberOfPoints;
+    std::vector<char> anyVertex(nv, 0);
+    bool any = false;
+    for (vtkIdType g = 0; g < n; ++g)
+    {
+      if (this->Flag[g] & GroupWithAny)
+      {
+        any = true;
+        for (vtkIdType v : this->W[g])
+        {
+          anyVertex[v] = 1;
+        }
+      }
+    }
+    if (!any)
+    {
+      return;
+    }
+    std::vector<char> assigned(3 * n, 0);
+    Fan fan;
+    std::vector<int> stack;
     for (vtkIdType g = 0; g < n; ++g)
     {
       for (int i = 0; i < 3; ++i)
       {
-        if ((this->Flag[g] & GroupWithAny) || this->Assigned[3 * g + i] >= 0)
+        const vtkIdType v = this->W[g][i];
+        if (!anyVertex[v] || (this->Flag[g] & GroupWithAny) || assigned[3 * g + i])
         {
           continue;
         }
-        const vtkIdType group = static_cast<vtkIdType>(this->GroupVertex.size());
-        const vtkIdType vertex = this->W[g][i];
-        const bool orient = (this->Flag[g] & OrientPreserving) != 0;
-        this->GroupVertex.push_back(vertex);
-        this->GroupOrient.push_back(orient);
-        this->Assigned[3 * g + i] = group;
-        this->GroupMembers.push_back(g);
-        stack.clear();
-        stack.push_back(this->Neighbor[g][i]);
-        stack.push_back(this->Neighbor[g][i > 0 ? i - 1 : 2]);
+        this->BuildFan(v, fan);
+        const bool orient = this->Orient(g);
+        stack.assign(1,
+          static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), g) - fan.Tri.begin()));
         while (!stack.empty())
         {
-          const vtkIdType t = stack.back();
+          const int a = stack.back();
           stack.pop_back();
-          if (t < 0)
+          const vtkIdType t = fan.Tri[a];
+          char& done = assigned[3 * t + fan.Corner[a]];
+          if (done)
           {
             continue;
           }
-          const int j = CornerOf(this->W[t], vertex);
-          if (j < 0 || this->Assigned[3 * t + j] >= 0)
-          {
-            continue;
-          }
-          if ((this->Flag[t] & GroupWithAny) && this->Assigned[3 * t] < 0 &&
-            this->Assigned[3 * t + 1] < 0 && this->Assigned[3 * t + 2] < 0)
+          if ((this->Flag[t] & GroupWithAny) && !assigned[3 * t] && !assigned[3 * t + 1] &&
+            !assigned[3 * t + 2])
           {
             this->Flag[t] = (this->Flag[t] & ~OrientPreserving) | (orient ? OrientPreserving : 0);
           }
-          if (((this->Flag[t] & OrientPreserving) != 0) != orient)
+          if (this->Orient(t) != orient)
           {
             continue;
           }
-          this->Assigned[3 * t + j] = group;
-          this->GroupMembers.push_back(t);
-          stack.push_back(this->Neighbor[t][j]);
-          stack.push_back(this->Neighbor[t][j > 0 ? j - 1 : 2]);
+          done = 1;
+          for (int b : { fan.Out[a], fan.In[a] })
+          {
+            if (b >= 0)
+            {
+              stack.push_back(b);
+            }
+          }
         }
-        this->GroupStart.push_back(static_cast<vtkIdType>(this->GroupMembers.size()));
       }
     }
   }
 
   // Angle-weighted average of the members' dP/ds directions projected onto the tangent
   // plane of the vertex normal, summed in increasing triangle order as the reference does.
-  V3 Average(const vtkIdType* members, size_t count, vtkIdType vertex, const V3& n,
-    const std::vector<V3>& os) const
+  static V3 Average(const std::vector<int>& members, const std::vector<V3>& os,
+    const std::vector<double>& angle, const std::vector<char>& contributes)
   {
-    const MikkMesh& m = this->Mesh;
     V3 sum{ 0.0, 0.0, 0.0 };
-    for (size_t k = 0; k < count; ++k)
+    for (int a : members)
     {
-      const vtkIdType t = members[k];
-      if (this->Flag[t] & GroupWithAny)
+      if (contributes[a])
       {
-        continue;
-      }
-      const auto& w = this->W[t];
-      const int i = CornerOf(w, vertex);
-      if (i < 0)
-      {
-        continue;
-      }
-      const V3& p1 = m.P[w[i]];
-      const V3 e1 = ProjectNormalize(Sub(m.P[w[i > 0 ? i - 1 : 2]], p1), n);
-      const V3 e2 = ProjectNormalize(Sub(m.P[w[i < 2 ? i + 1 : 0]], p1), n);
-      const double c = std::min(1.0, std::max(-1.0, Dot(e1, e2)));
-      double angle = std::acos(c);
-      if (!std::isfinite(angle))
-      {
-        angle = 0.0;
-      }
-      const V3& d = os[k];
-      for (int a = 0; a < 3; ++a)
-      {
-        sum[a] += angle * d[a];
+        for (int c = 0; c < 3; ++c)
+        {
+          sum[c] += angle[a] * os[a][c];
+        }
       }
     }
     return NormalizeSafe(sum);
   }
 
-  void EvaluateGroups()
+  // Per vertex: groups are the linked triangles of one orientation that contain a
+  // triangle with usable derivatives (the group's seed: its first triangle); each member's
+  // frame is the average over its sub-group (the members whose projected directions are
+  // within the angular threshold of its own; all of them at 180 degrees).
+  void EvaluateVertices()
   {
     const MikkMesh& m = this->Mesh;
-    this->Spaces.assign(3 * this->NumberOfGood, TSpace());
-    const vtkIdType nGroups = static_cast<vtkIdType>(this->GroupVertex.size());
-    vtkSMPTools::For(0, nGroups,
+    vtkSMPTools::For(0, m.NumberOfPoints,
       [&](vtkIdType begin, vtkIdType end)
       {
-        std::vector<vtkIdType> members, subset;
-        std::vector<V3> os, ot, subOs;
-        for (vtkIdType grp = begin; grp < end; ++grp)
+        Fan fan;
+        std::vector<int> comp, members, subset;
+        std::vector<V3> os, ot;
+        std::vector<double> angle;
+        std::vector<char> contributes;
+        std::vector<vtkIdType> face;
+        std::vector<std::pair<vtkIdType, TSpace>> written; // face corner, its space
+        for (vtkIdType v = begin; v < end; ++v)
         {
-          const vtkIdType vertex = this->GroupVertex[grp];
-          const V3& n = m.N[vertex];
-          members.assign(this->GroupMembers.begin() + this->GroupStart[grp],
-            this->GroupMembers.begin() + this->GroupStart[grp + 1]);
-          std::sort(members.begin(), members.end());
-          const size_t count = members.size();
-          os.resize(count);
-          ot.resize(count);
-          for (size_t k = 0; k < count; ++k)
+          if (this->VertexTriOffsets[v] == this->VertexTriOffsets[v + 1])
           {
-            os[k] = ProjectNormalize(this->Os[members[k]], n);
-            ot[k] = ProjectNormalize(this->Ot[members[k]], n);
+            continue;
           }
-          bool haveAll = false;
-          V3 all{ 0.0, 0.0, 0.0 };
-          for (size_t f = 0; f < count; ++f)
+          this->BuildFan(v, fan);
+          written.clear();
+          const size_t k = fan.Tri.size();
+          const V3& n = m.N[v];
+          const V3& pv = m.P[v];
+          os.resize(k);
+          ot.resize(k);
+          angle.resize(k);
+          contributes.resize(k);
+          face.resize(k);
+          for (size_t a = 0; a < k; ++a)
           {
-            // The sub-group of f: members close enough in direction (always all of them
-            // at the default threshold of 180 degrees, unless exactly opposite).
-            subset.clear();
-            subOs.clear();
-            const vtkIdType tf = members[f];
-            for (size_t k = 0; k < count; ++k)
+            const vtkIdType t = fan.Tri[a];
+            face[a] = m.TriFace[this->Good[t]];
+            os[a] = ProjectNormalize(this->Os[t], n);
+            ot[a] = ProjectNormalize(this->Ot[t], n);
+            contributes[a] = (this->Flag[t] & GroupWithAny) == 0;
+            if (contributes[a])
             {
-              const vtkIdType tk = members[k];
-              const bool any = ((this->Flag[tf] | this->Flag[tk]) & GroupWithAny) != 0;
-              const bool sameFace = m.TriFace[this->Good[tf]] == m.TriFace[this->Good[tk]];
-              if (any || sameFace ||
-                (Dot(os[f], os[k]) > this->ThresholdCos && Dot(ot[f], ot[k]) > this->ThresholdCos))
-              {
-                subset.push_back(tk);
-                subOs.push_back(os[k]);
-              }
+              const V3 e1 = ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
+              const V3 e2 = ProjectNormalize(Sub(m.P[fan.Next[a]], pv), n);
+              const double c = std::acos(std::min(1.0, std::max(-1.0, Dot(e1, e2))));
+              angle[a] = std::isfinite(c) ? c : 0.0;
             }
-            V3 result;
-            if (subset.size() == count)
-            {
-              if (!haveAll)
-              {
-                all = this->Average(members.data(), count, vertex, n, os);
-                haveAll = true;
-              }
-              result = all;
-            }
-            else
-            {
-              result = this->Average(subset.data(), subset.size(), vertex, n, subOs);
-            }
-            TSpace& out = this->Spaces[3 * tf + CornerOf(this->W[tf], vertex)];
-            out.Os = result;
-            out.Orient = this->GroupOrient[grp] != 0;
-            out.Group = grp;
           }
-        }
-      });
-  }
-
-  // Good triangle corners -> face corners. A quad's diagonal corners get two; the
-  // reference averages them unless they are equal, and the later group's orientation wins.
-  void GatherCorners(std::vector<TSpace>& corners)
-  {
-    const MikkMesh& m = this->Mesh;
-    corners.assign(m.FacePoints.size(), TSpace());
-    std::vector<vtkIdType> goodIndex(m.TriFace.size(), -1);
-    for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
-    {
-      goodIndex[this->Good[g]] = g;
-    }
-    const vtkIdType nFaces = static_cast<vtkIdType>(m.FaceCell.size());
-    vtkSMPTools::For(0, nFaces,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType f = begin; f < end; ++f)
-        {
-          for (vtkIdType t = m.FaceFirstTri[f]; t < m.FaceFirstTri[f + 1]; ++t)
+          // Components of the link graph between triangles of one orientation.
+          comp.resize(k);
+          for (size_t a = 0; a < k; ++a)
           {
-            const vtkIdType g = goodIndex[t];
-            if (g < 0)
+            comp[a] = static_cast<int>(a);
+          }
+          auto root = [&comp](int a)
+          {
+            while (comp[a] != a)
+            {
+              a = comp[a] = comp[comp[a]];
+            }
+            return a;
+          };
+          for (size_t a = 0; a < k; ++a)
+          {
+            const int b = fan.Out[a];
+            if (b >= 0 && this->Orient(fan.Tri[a]) == this->Orient(fan.Tri[b]))
+            {
+              const int ra = root(static_cast<int>(a)), rb = root(b);
+              comp[std::max(ra, rb)] = std::min(ra, rb);
+            }
+          }
+          for (size_t a = 0; a < k; ++a)
+          {
+            comp[a] = root(static_cast<int>(a));
+          }
+          for (size_t r = 0; r < k; ++r)
+          {
+            if (comp[r] != static_cast<int>(r))
             {
               continue;
             }
-            for (int k = 0; k < 3; ++k)
+            members.clear();
+            int seed = -1;
+            for (size_t a = r; a < k; ++a)
             {
-              const TSpace& in = this->Spaces[3 * g + k];
-              if (in.Group < 0)
+              if (comp[a] == static_cast<int>(r))
               {
-                continue;
-              }
-              TSpace& out = corners[m.FaceCorner(t, k)];
-              if (out.Group < 0)
-              {
-                out = in;
-                continue;
-              }
-              if (!Equal(out.Os, in.Os))
-              {
-                out.Os = NormalizeSafe(
-                  V3{ out.Os[0] + in.Os[0], out.Os[1] + in.Os[1], out.Os[2] + in.Os[2] });
-              }
-              if (in.Group > out.Group)
-              {
-                out.Orient = in.Orient;
-                out.Group = in.Group;
+                members.push_back(static_cast<int>(a));
+                if (seed < 0 && contributes[a])
+                {
+                  seed = static_cast<int>(a);
+                }
               }
             }
+            if (seed < 0)
+            {
+              continue; // no triangle to seed a group: the reference leaves these corners
+            }
+            const vtkIdType key = 3 * fan.Tri[seed] + fan.Corner[seed];
+            const bool orient = this->Orient(fan.Tri[seed]);
+            auto joins = [&](int f, int a)
+            {
+              return !contributes[f] || !contributes[a] || face[f] == face[a] ||
+                (Dot(os[f], os[a]) > this->ThresholdCos && Dot(ot[f], ot[a]) > this->ThresholdCos);
+            };
+            bool allJoin = true;
+            for (size_t x = 0; x < members.size() && allJoin; ++x)
+            {
+              for (size_t y = x + 1; y < members.size() && allJoin; ++y)
+              {
+                allJoin = joins(members[x], members[y]);
+              }
+            }
+            const V3 all = Average(members, os, angle, contributes);
+            for (int f : members)
+            {
+              V3 result = all;
+              if (!allJoin)
+              {
+                subset.clear();
+                for (int a : members)
+                {
+                  if (a == f || joins(f, a))
+                  {
+                    subset.push_back(a);
+                  }
+                }
+                result = Average(subset, os, angle, contributes);
+              }
+              // A quad's diagonal corner gets a space from each of its triangles: the
+              // reference averages them unless equal; the later group's orientation wins.
+              const vtkIdType c =
+                m.FaceOffsets[face[f]] + m.TriVert[this->Good[fan.Tri[f]]][fan.Corner[f]];
+              auto same = std::find_if(written.begin(), written.end(),
+                [c](const std::pair<vtkIdType, TSpace>& e) { return e.first == c; });
+              if (same == written.end())
+              {
+                written.push_back({ c, TSpace{ result, orient, key } });
+                continue;
+              }
+              TSpace& out = same->second;
+              if (!Equal(out.Os, result))
+              {
+                out.Os = NormalizeSafe(
+                  V3{ out.Os[0] + result[0], out.Os[1] + result[1], out.Os[2] + result[2] });
+              }
+              if (key > out.Group)
+              {
+                out.Orient = orient;
+                out.Group = key;
+              }
+            }
+          }
+          for (const auto& e : written)
+          {
+            FinalTangent(n, e.second, this->Tangents[e.first].data());
+            this->Set[e.first] = 1;
           }
         }
       });
@@ -863,8 +910,8 @@ private:
 
   // Degenerate triangles take the space of the first good corner at the same vertex; a
   // quad with one good triangle gives its missing corner the space of the corner at the
-  // same position.
-  void FixDegenerates(std::vector<TSpace>& corners)
+  // same position (made orthogonal to its own normal).
+  void FixDegenerates()
   {
     const MikkMesh& m = this->Mesh;
     for (size_t d = static_cast<size_t>(this->NumberOfGood); d < this->Good.size(); ++d)
@@ -883,7 +930,9 @@ private:
         }
         const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
         const vtkIdType src = m.FaceCorner(this->Good[g], CornerOf(this->W[g], v));
-        corners[m.FaceCorner(t, k)] = corners[src];
+        const vtkIdType dst = m.FaceCorner(t, k);
+        this->Tangents[dst] = this->Tangents[src];
+        this->Set[dst] = this->Set[src];
       }
     }
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
@@ -900,44 +949,20 @@ private:
       const V3& target = m.P[m.FacePoints[base + missing]];
       for (int k = 0; k < 3; ++k)
       {
-        if (Equal(m.P[m.FacePoints[base + vn[k]]], target))
+        const vtkIdType src = base + vn[k];
+        if (Equal(m.P[m.FacePoints[src]], target))
         {
-          corners[base + missing] = corners[base + vn[k]];
+          const auto& f = this->Tangents[src];
+          FinalTangent(m.N[m.FacePoints[base + missing]],
+            TSpace{ V3{ f[0], f[1], f[2] }, f[3] > 0.0f, 0 },
+            this->Tangents[base + missing].data());
+          this->Set[base + missing] = this->Set[src];
           break;
         }
       }
     }
   }
 };
-
-// The final frame of a corner: the tangent made exactly orthogonal to the unit normal; if
-// that leaves nothing (degenerate input), any unit vector orthogonal to the normal.
-void FinalTangent(const V3& n, const TSpace& ts, float out[4])
-{
-  double t[4] = { ts.Os[0], ts.Os[1], ts.Os[2], 0.0 };
-  const double nDotT = Dot(n, ts.Os);
-  double tp[3] = { t[0] - nDotT * n[0], t[1] - nDotT * n[1], t[2] - nDotT * n[2] };
-  const double len = vtkSurfaceDetail::Normalize(tp);
-  if (!(len > 1e-6 && std::isfinite(len)))
-  {
-    const double zero[3] = { 0.0, 0.0, 0.0 };
-    double nn[3] = { n[0], n[1], n[2] };
-    if (!(std::isfinite(Dot(n, n)) && Dot(n, n) > 0.5))
-    {
-      nn[0] = 0.0;
-      nn[1] = 0.0;
-      nn[2] = 1.0;
-    }
-    vtkSurfaceDetail::MakeTangentFrame(nn, zero, zero, t);
-    tp[0] = t[0];
-    tp[1] = t[1];
-    tp[2] = t[2];
-  }
-  out[0] = static_cast<float>(tp[0]);
-  out[1] = static_cast<float>(tp[1]);
-  out[2] = static_cast<float>(tp[2]);
-  out[3] = ts.Orient ? 1.0f : -1.0f;
-}
 
 vtkSmartPointer<vtkIdList> IdRange(vtkIdType n)
 {
@@ -962,6 +987,7 @@ void vtkMikkTSpaceTangents::PrintSelf(ostream& os, vtkIndent indent)
 int vtkMikkTSpaceTangents::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output)
@@ -1037,17 +1063,18 @@ int vtkMikkTSpaceTangents::RequestData(
   BuildTriangles(mesh);
   this->UpdateProgress(0.2);
 
-  std::vector<TSpace> cornerSpaces;
+  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  const vtkIdType nCorners = static_cast<vtkIdType>(mesh.FacePoints.size());
+  std::vector<std::array<float, 4>> cornerTangents;
+  std::vector<char> cornerSet;
   {
     MikkTSpace mikk(mesh, this->AngularThreshold);
-    mikk.Run(cornerSpaces);
+    mikk.Run(cornerTangents, cornerSet);
   }
   this->UpdateProgress(0.7);
 
-  // Final float frames per corner of every face that MikkTSpace handles (3 or 4 corners).
-  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
-  const vtkIdType nCorners = static_cast<vtkIdType>(mesh.FacePoints.size());
-  std::vector<std::array<float, 4>> cornerTangents(nCorners);
+  // Corners of faces MikkTSpace handles (3 or 4 corners) that no group reached keep the
+  // reference's default space, (1, 0, 0) with w = -1, made orthogonal to the normal.
   std::vector<char> cornerUsed(nCorners, 0);
   vtkSMPTools::For(0, nFaces,
     [&](vtkIdType begin, vtkIdType end)
@@ -1060,7 +1087,10 @@ int vtkMikkTSpaceTangents::RequestData(
         }
         for (vtkIdType c = mesh.FaceOffsets[f]; c < mesh.FaceOffsets[f + 1]; ++c)
         {
-          FinalTangent(mesh.N[mesh.FacePoints[c]], cornerSpaces[c], cornerTangents[c].data());
+          if (!cornerSet[c])
+          {
+            FinalTangent(mesh.N[mesh.FacePoints[c]], TSpace(), cornerTangents[c].data());
+          }
           cornerUsed[c] = 1;
         }
       }
