@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
   libjpeg-turbo-progs
+  xplanet-images
 )
 # issue 4: node runs the reference MikkTSpace (npm package "mikktspace") in the tests. Only
 # when the commands are missing: a node from elsewhere (e.g. NodeSource, which bundles npm

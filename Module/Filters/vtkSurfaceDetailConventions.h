@@ -14,6 +14,8 @@
  * - Tangent frame: T = normalize(dP/ds minus its part along N), w = sign(dot(cross(N,T),
  *   dP/dt)) (+1 when that is zero), B = w*cross(N,T).
  * - Normal maps store 0.5*n + 0.5 per component; green up (+Y = +t) by default.
+ * - Integer normal maps round to nearest (flat is (128,128,255) in 8 bits); decoding
+ *   renormalises (EncodeNormal/DecodeNormal; GLSL twin vtkSurfaceDetailNormalCoding.glsl).
  */
 
 #ifndef vtkSurfaceDetailConventions_h
@@ -92,6 +94,41 @@ inline double EncodeUnit(double c)
 inline double DecodeUnit(double c)
 {
   return 2.0 * c - 1.0;
+}
+
+/**
+ * Encodes unit normal @a n as a colour in [0,1]^3 (0.5*n + 0.5 per component). Green-up
+ * (OpenGL, +Y = +t) stores n as it is; green-down (DirectX) stores -n.y.
+ * glsl/vtkSurfaceDetailNormalCoding.glsl (Rendering) is the GLSL twin of this pair.
+ */
+inline void EncodeNormal(const double n[3], bool greenUp, double rgb[3])
+{
+  rgb[0] = EncodeUnit(n[0]);
+  rgb[1] = EncodeUnit(greenUp ? n[1] : -n[1]);
+  rgb[2] = EncodeUnit(n[2]);
+}
+
+/**
+ * Decodes colour @a rgb in [0,1]^3 (integer maps divided by their type's maximum first)
+ * back to a unit normal in the green-up convention. Quantisation leaves the decoded vector
+ * slightly off unit length, so it is renormalised; a degenerate colour gives (0,0,1).
+ */
+inline void DecodeNormal(const double rgb[3], bool greenUp, double n[3])
+{
+  n[0] = DecodeUnit(rgb[0]);
+  n[1] = greenUp ? DecodeUnit(rgb[1]) : -DecodeUnit(rgb[1]);
+  n[2] = DecodeUnit(rgb[2]);
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(len > 0.0) || !std::isfinite(len))
+  {
+    n[0] = 0.0;
+    n[1] = 0.0;
+    n[2] = 1.0;
+    return;
+  }
+  n[0] /= len;
+  n[1] /= len;
+  n[2] /= len;
 }
 
 inline double Dot(const double a[3], const double b[3])

@@ -1,0 +1,154 @@
+/**
+ * @class   vtkHeightMapToNormalMap
+ * @brief   Turns a height map into a tangent-space normal map (optionally a relief map).
+ *
+ * The output is the normal map of the surface z = k*h(s,t) over the unit texture square,
+ * k being Strength: n = normalize(-k*dh/ds, -k*dh/dt, 1), derivatives taken per unit of
+ * texture coordinate (texel differences times the image's width or height), so the map
+ * does not change with the image's resolution, only gets more accurate. Spacing and origin
+ * are ignored: a height map lives in texture space. Each component is stored as 0.5*n + 0.5
+ * (vtkSurfaceDetailConventions.h EncodeNormal; decode with DecodeNormal or its GLSL twin).
+ *
+ * Schemes (all estimate the same derivative; texel (i,j), W x H texels):
+ * - Forward: dh/ds = W*(h[i+1] - h[i]), exactly the seed's Cg code
+ *   `w*(tex2D(d, u + 1/w) - tex2D(d, u))`; first order (it is centred half a texel away).
+ * - Central: W*(h[i+1] - h[i-1])/2; second order.
+ * - Sobel: central differences smoothed across by (1,2,1)/4; second order.
+ * - Scharr: the same with (3,10,3)/16, closer to rotation invariant; second order.
+ *
+ * Input: the first component of the point scalars of a 2-D image of any scalar type and
+ * any size (1xN, Nx1 and non-powers of two included). Integer types are normalised to
+ * [0,1] by their type's range; floating-point heights are used as they are. Non-finite
+ * heights are replaced by the mean of their finite neighbours (one warning with the count).
+ *
+ * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, the seed's relief map). For
+ * floating-point input h is the height as given, the same value the normal map and
+ * vtkDisplacementMapFilter use, so a relief rendered with DepthScale d shows the surface
+ * whose normal map this is when Strength = d; heights outside [0,1] are clamped to it with
+ * a warning (rescale first, e.g. with vtkImageShiftScale).
+ *
+ * The output holds one array, "NormalMap" (RGB) or "ReliefMap" (RGBA), of
+ * OutputScalarType: unsigned char or unsigned short (rounded to nearest) or float.
+ * Runs with vtkSMPTools; the result does not depend on the number of threads. Requests for
+ * a sub-extent are honoured (the whole input is read, as borders wrap).
+ *
+ * @sa vtkDisplacementMapFilter vtkImageGradient
+ */
+
+#ifndef vtkHeightMapToNormalMap_h
+#define vtkHeightMapToNormalMap_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+class SURFACEDETAILFILTERS_EXPORT vtkHeightMapToNormalMap : public vtkImageAlgorithm
+{
+public:
+  static vtkHeightMapToNormalMap* New();
+  vtkTypeMacro(vtkHeightMapToNormalMap, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum SchemeType
+  {
+    Forward = 0,
+    Central = 1,
+    Sobel = 2,
+    Scharr = 3
+  };
+
+  /// Wrap modes, with vtkTexture's numbering.
+  enum WrapType
+  {
+    ClampToEdge = 0,
+    Repeat = 1,
+    MirroredRepeat = 2
+  };
+
+  ///@{
+  /**
+   * The finite-difference scheme. Default Central.
+   */
+  vtkSetClampMacro(Scheme, int, Forward, Scharr);
+  vtkGetMacro(Scheme, int);
+  void SetSchemeToForward() { this->SetScheme(Forward); }
+  void SetSchemeToCentral() { this->SetScheme(Central); }
+  void SetSchemeToSobel() { this->SetScheme(Sobel); }
+  void SetSchemeToScharr() { this->SetScheme(Scharr); }
+  const char* GetSchemeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Strength k: the map is the normal map of z = k*h(s,t) over the unit texture square.
+   * Default 1. Must be finite (a non-finite value is an error at execution).
+   */
+  vtkSetMacro(Strength, double);
+  vtkGetMacro(Strength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Which texels the stencil reads beyond the borders, as vtkTexture::Wrap would sample
+   * them. Default Repeat (tiling textures). For the one-texel stencils used here
+   * MirroredRepeat reads the same texels as ClampToEdge.
+   */
+  vtkSetClampMacro(Wrap, int, ClampToEdge, MirroredRepeat);
+  vtkGetMacro(Wrap, int);
+  void SetWrapToClampToEdge() { this->SetWrap(ClampToEdge); }
+  void SetWrapToRepeat() { this->SetWrap(Repeat); }
+  void SetWrapToMirroredRepeat() { this->SetWrap(MirroredRepeat); }
+  const char* GetWrapAsString();
+  ///@}
+
+  ///@{
+  /**
+   * On (default): +Y of the map is +t (OpenGL, Blender). Off: -Y (DirectX, Unreal);
+   * only the green channel changes.
+   */
+  vtkSetMacro(GreenUp, bool);
+  vtkGetMacro(GreenUp, bool);
+  vtkBooleanMacro(GreenUp, bool);
+  ///@}
+
+  ///@{
+  /**
+   * VTK_UNSIGNED_CHAR (default), VTK_UNSIGNED_SHORT or VTK_FLOAT; other values are
+   * rejected with an error and leave the setting unchanged.
+   */
+  void SetOutputScalarType(int type);
+  vtkGetMacro(OutputScalarType, int);
+  void SetOutputScalarTypeToUnsignedChar() { this->SetOutputScalarType(VTK_UNSIGNED_CHAR); }
+  void SetOutputScalarTypeToUnsignedShort() { this->SetOutputScalarType(VTK_UNSIGNED_SHORT); }
+  void SetOutputScalarTypeToFloat() { this->SetOutputScalarType(VTK_FLOAT); }
+  ///@}
+
+  ///@{
+  /**
+   * Off (default): RGB normal map. On: RGBA relief map, A = depth = 1 - height.
+   */
+  vtkSetMacro(OutputRelief, bool);
+  vtkGetMacro(OutputRelief, bool);
+  vtkBooleanMacro(OutputRelief, bool);
+  ///@}
+
+protected:
+  vtkHeightMapToNormalMap();
+  ~vtkHeightMapToNormalMap() override = default;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Scheme = Central;
+  double Strength = 1.0;
+  int Wrap = Repeat;
+  bool GreenUp = true;
+  int OutputScalarType = VTK_UNSIGNED_CHAR;
+  bool OutputRelief = false;
+
+private:
+  vtkHeightMapToNormalMap(const vtkHeightMapToNormalMap&) = delete;
+  void operator=(const vtkHeightMapToNormalMap&) = delete;
+};
+
+#endif

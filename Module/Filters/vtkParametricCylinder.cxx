@@ -1,0 +1,53 @@
+#include "vtkParametricCylinder.h"
+
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkParametricCylinder);
+
+//------------------------------------------------------------------------------
+vtkParametricCylinder::vtkParametricCylinder()
+{
+  this->JoinU = 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricCylinder::EvaluateUTerms(double u, double* terms)
+{
+  const double theta = 2.0 * vtkMath::Pi() * u;
+  terms[0] = std::cos(theta);
+  terms[1] = std::sin(theta);
+}
+
+void vtkParametricCylinder::EvaluateVTerms(double v, double* terms)
+{
+  terms[0] = v;
+}
+
+void vtkParametricCylinder::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
+{
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double c = uTerms[0], s = uTerms[1];
+  const double r = this->Radius;
+  Pt[0] = r * c;
+  Pt[1] = this->Height * vTerms[0];
+  Pt[2] = -r * s;
+  Duvw[0] = -twoPi * r * s;
+  Duvw[1] = 0.0;
+  Duvw[2] = -twoPi * r * c;
+  Duvw[3] = 0.0;
+  Duvw[4] = this->Height;
+  Duvw[5] = 0.0;
+  Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricCylinder::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+}

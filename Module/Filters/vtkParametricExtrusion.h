@@ -1,0 +1,70 @@
+/**
+ * @class   vtkParametricExtrusion
+ * @brief   Seed 004's extrusion ("love pillar"): a Bézier profile in x-z swept up y.
+ *
+ * The profile gives (x, z) at parameter u; P(u,v) = (x, Height*v, z). u runs along the
+ * profile (texture s), v up (texture t), as in the seed's code. Du x Dv = Height*(-z', 0, x')
+ * points outward for a closed profile traversed from +x towards -z (the way
+ * vtkParametricCylinder turns). The default profile is the heart of
+ * vtkBezierProfile::SetToHeart(), whose seam sits at the dip between the lobes.
+ *
+ * @sa vtkBezierProfile vtkParametricSurfaceSource vtkParametricRevolution
+ */
+
+#ifndef vtkParametricExtrusion_h
+#define vtkParametricExtrusion_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkParametricSeparableFunction.h"
+#include "vtkSmartPointer.h" // For the profile member
+
+class vtkBezierProfile;
+
+class SURFACEDETAILFILTERS_EXPORT vtkParametricExtrusion : public vtkParametricSeparableFunction
+{
+public:
+  static vtkParametricExtrusion* New();
+  vtkTypeMacro(vtkParametricExtrusion, vtkParametricSeparableFunction);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The (x, z) profile. Default: the heart. Must not be null. */
+  void SetProfile(vtkBezierProfile* profile);
+  vtkBezierProfile* GetProfile();
+  ///@}
+
+  ///@{
+  /** Height of the extrusion along +y, from y = 0. Default 2. */
+  vtkSetMacro(Height, double);
+  vtkGetMacro(Height, double);
+  ///@}
+
+  /** Includes the profile's modification time. */
+  vtkMTimeType GetMTime() override;
+
+  ///@{
+  /**
+   * The split evaluation (see vtkParametricSeparableFunction). An invalid or missing
+   * profile is reported as an error and gives zeros.
+   */
+  int GetNumberOfUTerms() override { return 4; }
+  int GetNumberOfVTerms() override { return 1; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
+
+protected:
+  vtkParametricExtrusion();
+  ~vtkParametricExtrusion() override;
+
+  vtkSmartPointer<vtkBezierProfile> Profile;
+  double Height = 2.0;
+
+private:
+  vtkParametricExtrusion(const vtkParametricExtrusion&) = delete;
+  void operator=(const vtkParametricExtrusion&) = delete;
+};
+
+#endif

@@ -1,0 +1,45 @@
+#include "vtkParametricRectangle.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkParametricRectangle);
+
+//------------------------------------------------------------------------------
+vtkParametricRectangle::vtkParametricRectangle() = default;
+
+//------------------------------------------------------------------------------
+void vtkParametricRectangle::EvaluateUTerms(double u, double* terms)
+{
+  terms[0] = u;
+}
+
+void vtkParametricRectangle::EvaluateVTerms(double v, double* terms)
+{
+  terms[0] = v;
+}
+
+void vtkParametricRectangle::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const double du = this->Point1[k] - this->Origin[k];
+    const double dv = this->Point2[k] - this->Origin[k];
+    Pt[k] = this->Origin[k] + uTerms[0] * du + vTerms[0] * dv;
+    Duvw[k] = du;
+    Duvw[3 + k] = dv;
+    Duvw[6 + k] = 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricRectangle::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
+     << this->Origin[2] << ")\n";
+  os << indent << "Point1: (" << this->Point1[0] << ", " << this->Point1[1] << ", "
+     << this->Point1[2] << ")\n";
+  os << indent << "Point2: (" << this->Point2[0] << ", " << this->Point2[1] << ", "
+     << this->Point2[2] << ")\n";
+}

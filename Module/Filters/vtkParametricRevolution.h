@@ -1,0 +1,64 @@
+/**
+ * @class   vtkParametricRevolution
+ * @brief   Seed 004's surface of revolution ("marble vase"): a Bézier profile turned about y.
+ *
+ * The profile gives (r, y) at parameter v; with theta = 2*pi*u (turning from +x towards -z),
+ * P(u,v) = (r cos(theta), y, -r sin(theta)). u runs round (texture s), v along the profile
+ * (texture t). Du x Dv points outward where the profile rises (dy/dv > 0) at positive r.
+ * Where the profile touches the axis (r = 0) Du vanishes; vtkParametricSurfaceSource takes
+ * the limit there. The default profile is the vase of vtkBezierProfile::SetToVase(); turn
+ * on the profile's ArcLengthParameterization to spread the texture evenly along it.
+ *
+ * @sa vtkBezierProfile vtkParametricSurfaceSource vtkParametricExtrusion
+ */
+
+#ifndef vtkParametricRevolution_h
+#define vtkParametricRevolution_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkParametricSeparableFunction.h"
+#include "vtkSmartPointer.h" // For the profile member
+
+class vtkBezierProfile;
+
+class SURFACEDETAILFILTERS_EXPORT vtkParametricRevolution : public vtkParametricSeparableFunction
+{
+public:
+  static vtkParametricRevolution* New();
+  vtkTypeMacro(vtkParametricRevolution, vtkParametricSeparableFunction);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The (radius, height) profile. Default: the vase. Must not be null. */
+  void SetProfile(vtkBezierProfile* profile);
+  vtkBezierProfile* GetProfile();
+  ///@}
+
+  /** Includes the profile's modification time. */
+  vtkMTimeType GetMTime() override;
+
+  ///@{
+  /**
+   * The split evaluation (see vtkParametricSeparableFunction). An invalid or missing
+   * profile is reported as an error and gives zeros.
+   */
+  int GetNumberOfUTerms() override { return 2; }
+  int GetNumberOfVTerms() override { return 4; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
+
+protected:
+  vtkParametricRevolution();
+  ~vtkParametricRevolution() override;
+
+  vtkSmartPointer<vtkBezierProfile> Profile;
+
+private:
+  vtkParametricRevolution(const vtkParametricRevolution&) = delete;
+  void operator=(const vtkParametricRevolution&) = delete;
+};
+
+#endif

@@ -1,0 +1,56 @@
+#include "vtkParametricSphere.h"
+
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkParametricSphere);
+
+//------------------------------------------------------------------------------
+vtkParametricSphere::vtkParametricSphere()
+{
+  this->JoinU = 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricSphere::EvaluateUTerms(double u, double* terms)
+{
+  const double theta = 2.0 * vtkMath::Pi() * u;
+  terms[0] = std::cos(theta);
+  terms[1] = std::sin(theta);
+}
+
+void vtkParametricSphere::EvaluateVTerms(double v, double* terms)
+{
+  const double alpha = vtkMath::Pi() * (1.0 - v);
+  terms[0] = std::cos(alpha);
+  terms[1] = std::sin(alpha);
+}
+
+void vtkParametricSphere::EvaluateTerms(
+  const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9])
+{
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double ct = uTerms[0], st = uTerms[1];
+  const double ca = vTerms[0], sa = vTerms[1];
+  const double r = this->Radius;
+  Pt[0] = r * sa * ct;
+  Pt[1] = r * ca;
+  Pt[2] = -r * sa * st;
+  // dP/du = 2 pi dP/dtheta; dP/dv = -pi dP/dalpha.
+  Duvw[0] = -twoPi * r * sa * st;
+  Duvw[1] = 0.0;
+  Duvw[2] = -twoPi * r * sa * ct;
+  Duvw[3] = -vtkMath::Pi() * r * ca * ct;
+  Duvw[4] = vtkMath::Pi() * r * sa;
+  Duvw[5] = vtkMath::Pi() * r * ca * st;
+  Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricSphere::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << "\n";
+}

@@ -1,0 +1,55 @@
+/**
+ * @class   vtkParametricSphere
+ * @brief   Seed 004's y-up sphere on the unit square, for equirectangular textures.
+ *
+ * With theta = 2*pi*u (turning from +x towards -z) and alpha = pi*(1 - v) (the angle from
+ * +y), P(u,v) = Radius*(sin(alpha) cos(theta), cos(alpha), -sin(alpha) sin(theta)).
+ * Texture coordinates (u,v) then put an equirectangular map (an Earth map, a sky) upright:
+ * v = 0 is the south pole, v = 1 the north pole, u = 0.5 faces -x. Du x Dv points outward.
+ * The derivatives are analytic; Du vanishes at the poles (vtkParametricSurfaceSource takes
+ * the limit there).
+ *
+ * @sa vtkParametricSurfaceSource vtkParametricEllipsoid
+ */
+
+#ifndef vtkParametricSphere_h
+#define vtkParametricSphere_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkParametricSeparableFunction.h"
+
+class SURFACEDETAILFILTERS_EXPORT vtkParametricSphere : public vtkParametricSeparableFunction
+{
+public:
+  static vtkParametricSphere* New();
+  vtkTypeMacro(vtkParametricSphere, vtkParametricSeparableFunction);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Radius of the sphere. Default 1. */
+  vtkSetMacro(Radius, double);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /** The split evaluation (see vtkParametricSeparableFunction). */
+  int GetNumberOfUTerms() override { return 2; }
+  int GetNumberOfVTerms() override { return 2; }
+  void EvaluateUTerms(double u, double* terms) override;
+  void EvaluateVTerms(double v, double* terms) override;
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  ///@}
+
+protected:
+  vtkParametricSphere();
+  ~vtkParametricSphere() override = default;
+
+  double Radius = 1.0;
+
+private:
+  vtkParametricSphere(const vtkParametricSphere&) = delete;
+  void operator=(const vtkParametricSphere&) = delete;
+};
+
+#endif

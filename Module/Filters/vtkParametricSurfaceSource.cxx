@@ -1,0 +1,715 @@
+#include "vtkParametricSurfaceSource.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkParametricFunction.h"
+#include "vtkParametricSeparableFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSurfaceDetailConventions.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkParametricSurfaceSource);
+
+namespace
+{
+using vtkSurfaceDetail::Cross;
+using vtkSurfaceDetail::Dot;
+
+// Derivatives shorter than this fraction of the other one, or a cross product shorter than
+// this fraction of |Du||Dv|, carry no reliable direction: such points take the limit.
+constexpr double DegenerateTolerance = 1e-9;
+constexpr double DegenerateTolerance2 = DegenerateTolerance * DegenerateTolerance;
+// Step (in unit-square parameters) of the one-sided difference that gives the limit of a
+// vanishing derivative's direction; the second-order difference leaves an O(h^2) error.
+constexpr double LimitStep = 1e-4;
+
+// Everything the per-point work needs; read-only while the threads run.
+struct Grid
+{
+  vtkParametricFunction* Function = nullptr;
+  int U = 1;
+  vtkIdType Row0 = 0;    // first point row of this piece
+  vtkIdType NumRows = 0; // point rows in this piece
+  double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
+  double Orientation = 1.0; // +1: N = Du x Dv; -1: N = Dv x Du
+  double InvRepeat[2] = { 1.0, 1.0 };
+  double TangentSign = 1.0;             // sign of the s repeat
+  double Handedness = 1.0;              // w wherever Du x Dv is regular
+  std::vector<double> UUnit, VUnit;     // unit-square parameter of each column / row
+  std::vector<double> UDomain, VDomain; // the function's parameter of each column / row
+  std::vector<float> S, T;              // texture coordinate of each column / row
+  // Separable functions: their u terms of each column and v terms of each row.
+  vtkParametricSeparableFunction* Separable = nullptr;
+  int NumUTerms = 0, NumVTerms = 0;
+  std::vector<double> UTerms, VTerms;
+
+  double ToDomainU(double u) const { return this->UMin + this->UExtent * u; }
+  double ToDomainV(double v) const { return this->VMin + this->VExtent * v; }
+
+  // The function and its unit-square derivatives at domain parameters (u, v).
+  void Evaluate(double u, double v, double p[3], double du[3], double dv[3]) const
+  {
+    double uvw[3] = { u, v, 0.0 };
+    double d[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+    this->Function->Evaluate(uvw, p, d);
+    for (int k = 0; k < 3; ++k)
+    {
+      du[k] = d[k] * this->UExtent;
+      dv[k] = d[3 + k] * this->VExtent;
+    }
+  }
+
+  // The function at grid column col and row j, from the cached terms when it is separable.
+  void EvaluateGrid(vtkIdType col, vtkIdType j, double p[3], double du[3], double dv[3]) const
+  {
+    if (!this->Separable)
+    {
+      this->Evaluate(this->UDomain[col], this->VDomain[j], p, du, dv);
+      return;
+    }
+    double d[9];
+    this->Separable->EvaluateTerms(
+      this->UTerms.data() + col * this->NumUTerms, this->VTerms.data() + j * this->NumVTerms, p, d);
+    for (int k = 0; k < 3; ++k)
+    {
+      du[k] = d[k] * this->UExtent;
+      dv[k] = d[3 + k] * this->VExtent;
+    }
+  }
+
+  // Unit-square derivatives only, at unit-square parameters (clamped to the domain).
+  void Derivatives(double u, double v, double du[3], double dv[3]) const
+  {
+    double p[3];
+    this->Evaluate(this->ToDomainU(std::min(std::max(u, 0.0), 1.0)),
+      this->ToDomainV(std::min(std::max(v, 0.0), 1.0)), p, du, dv);
+  }
+};
+
+// True when du and dv span a plane well enough to give a normal; n is then the unit normal
+// and a2 the squared length of du.
+inline bool RegularNormal(
+  const double du[3], const double dv[3], double orientation, double n[3], double& a2)
+{
+  Cross(du, dv, n);
+  a2 = Dot(du, du);
+  const double b2 = Dot(dv, dv);
+  const double c2 = Dot(n, n);
+  if (!(c2 > DegenerateTolerance2 * a2 * b2) || !(a2 > DegenerateTolerance2 * b2) ||
+    !(b2 > DegenerateTolerance2 * a2) || !std::isfinite(c2))
+  {
+    return false;
+  }
+  const double scale = orientation / std::sqrt(c2);
+  n[0] *= scale;
+  n[1] *= scale;
+  n[2] *= scale;
+  return true;
+}
+
+// Direction in which a derivative that vanishes at unit parameter x grows when one moves
+// from x into the domain: the one-sided derivative of f(x + sigma*e) at e = 0, by the
+// second-order difference (4 f(h) - f(2h) - 3 f(0)) / 2h.
+template <typename F>
+void OneSidedLimit(double x, const double f0[3], F&& f, double out[3])
+{
+  const double sigma = x < 0.5 ? 1.0 : -1.0;
+  double f1[3], f2[3];
+  f(x + sigma * LimitStep, f1);
+  f(x + 2.0 * sigma * LimitStep, f2);
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = (4.0 * f1[k] - f2[k] - 3.0 * f0[k]) / (2.0 * LimitStep);
+  }
+}
+
+/**
+ * The frame at a point where the plain cross product fails. Returns false when no
+ * neighbourhood of the point has area either (the frame is then arbitrary but unit).
+ */
+bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], const double dv[3],
+  double n[3], double t[4])
+{
+  const double a2 = Dot(du, du);
+  const double b2 = Dot(dv, dv);
+  double a[3] = { du[0], du[1], du[2] };
+  double b[3] = { dv[0], dv[1], dv[2] };
+  const bool aVanishes = !(a2 > DegenerateTolerance2 * b2);
+  const bool bVanishes = !(b2 > DegenerateTolerance2 * a2);
+  if (aVanishes)
+  {
+    OneSidedLimit(
+      v, du,
+      [&](double vv, double out[3])
+      {
+        double tmp[3];
+        g.Derivatives(u, vv, out, tmp);
+      },
+      a);
+  }
+  if (bVanishes)
+  {
+    OneSidedLimit(
+      u, dv,
+      [&](double uu, double out[3])
+      {
+        double tmp[3];
+        g.Derivatives(uu, v, tmp, out);
+      },
+      b);
+  }
+  double length2;
+  bool found = RegularNormal(a, b, g.Orientation, n, length2);
+  // Parallel derivatives, or a limit that still vanishes: take the frame of nearby points
+  // inside the domain, nearest first.
+  for (double h = 1e-6; !found && h < 0.1; h *= 100.0)
+  {
+    const double su = u < 0.5 ? h : -h;
+    const double sv = v < 0.5 ? h : -h;
+    g.Derivatives(u + su, v + sv, a, b);
+    found = RegularNormal(a, b, g.Orientation, n, length2);
+  }
+  if (!found)
+  {
+    // No area anywhere near: any unit normal orthogonal to what derivative there is.
+    const double* d = a2 >= b2 ? du : dv;
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    double dn[3] = { d[0], d[1], d[2] };
+    if (vtkSurfaceDetail::Normalize(dn) > 0.0 && std::isfinite(Dot(dn, dn)))
+    {
+      double axis[4];
+      vtkSurfaceDetail::MakeTangentFrame(dn, zero, zero, axis);
+      n[0] = axis[0];
+      n[1] = axis[1];
+      n[2] = axis[2];
+    }
+    else
+    {
+      n[0] = 0.0;
+      n[1] = 0.0;
+      n[2] = 1.0;
+    }
+    a[0] = du[0];
+    a[1] = du[1];
+    a[2] = du[2];
+    b[0] = dv[0];
+    b[1] = dv[1];
+    b[2] = dv[2];
+  }
+  if (t)
+  {
+    const double dPds[3] = { a[0] * g.InvRepeat[0], a[1] * g.InvRepeat[0], a[2] * g.InvRepeat[0] };
+    const double dPdt[3] = { b[0] * g.InvRepeat[1], b[1] * g.InvRepeat[1], b[2] * g.InvRepeat[1] };
+    vtkSurfaceDetail::MakeTangentFrame(n, dPds, dPdt, t);
+  }
+  return found;
+}
+
+// Points and point arrays of one piece; each point is computed from its own (i, j) alone,
+// so any split among threads gives the same bytes.
+template <typename Real>
+struct PointWorker
+{
+  const Grid& G;
+  Real* Points;
+  float* Normals;
+  float* TCoords;
+  float* Tangents;
+  Real* DPdu;
+  Real* DPdv;
+  vtkSMPThreadLocal<vtkIdType> Arbitrary; // points with an arbitrary frame
+  vtkSMPThreadLocal<unsigned char> NonFinite;
+
+  PointWorker(const Grid& g)
+    : G(g)
+  {
+  }
+
+  void Initialize()
+  {
+    this->Arbitrary.Local() = 0;
+    this->NonFinite.Local() = 0;
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    const Grid& g = this->G;
+    const vtkIdType rowLength = g.U + 1;
+    vtkIdType row = begin / rowLength;
+    vtkIdType col = begin % rowLength;
+    vtkIdType& arbitrary = this->Arbitrary.Local();
+    bool finite = true;
+    const bool frame = this->Normals || this->Tangents;
+    for (vtkIdType id = begin; id < end; ++id)
+    {
+      const vtkIdType j = g.Row0 + row;
+      double p[3], du[3], dv[3];
+      g.EvaluateGrid(col, j, p, du, dv);
+      finite = finite && std::isfinite(p[0] + p[1] + p[2]) &&
+        std::isfinite(du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2]);
+      Real* pt = this->Points + 3 * id;
+      pt[0] = static_cast<Real>(p[0]);
+      pt[1] = static_cast<Real>(p[1]);
+      pt[2] = static_cast<Real>(p[2]);
+      if (this->DPdu)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          this->DPdu[3 * id + k] = static_cast<Real>(du[k]);
+          this->DPdv[3 * id + k] = static_cast<Real>(dv[k]);
+        }
+      }
+      if (this->TCoords)
+      {
+        this->TCoords[2 * id] = g.S[col];
+        this->TCoords[2 * id + 1] = g.T[j];
+      }
+      if (frame)
+      {
+        double n[3];
+        double t[4];
+        double du2;
+        if (RegularNormal(du, dv, g.Orientation, n, du2))
+        {
+          if (this->Tangents)
+          {
+            // Here N = +-(Du x Dv)/|Du x Dv| is orthogonal to Du already, and the shared
+            // frame (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the
+            // sign of the s repeat, with w = cross(N,T).dP/dt of constant sign.
+            const double scale = g.TangentSign / std::sqrt(du2);
+            t[0] = du[0] * scale;
+            t[1] = du[1] * scale;
+            t[2] = du[2] * scale;
+            t[3] = g.Handedness;
+          }
+        }
+        else if (!DegenerateFrame(
+                   g, g.UUnit[col], g.VUnit[j], du, dv, n, this->Tangents ? t : nullptr))
+        {
+          ++arbitrary;
+        }
+        if (this->Normals)
+        {
+          float* out = this->Normals + 3 * id;
+          out[0] = static_cast<float>(n[0]);
+          out[1] = static_cast<float>(n[1]);
+          out[2] = static_cast<float>(n[2]);
+        }
+        if (this->Tangents)
+        {
+          float* out = this->Tangents + 4 * id;
+          out[0] = static_cast<float>(t[0]);
+          out[1] = static_cast<float>(t[1]);
+          out[2] = static_cast<float>(t[2]);
+          out[3] = static_cast<float>(t[3]);
+        }
+      }
+      if (++col == rowLength)
+      {
+        col = 0;
+        ++row;
+      }
+    }
+    if (!finite)
+    {
+      this->NonFinite.Local() = 1;
+    }
+  }
+
+  void Reduce() {}
+};
+
+// Two triangles per grid quad, counter-clockwise around the normal.
+template <typename Id>
+void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connectivity)
+{
+  const vtkIdType numQuads = numRows * U;
+  vtkSMPTools::For(0, numQuads,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType q = begin; q < end; ++q)
+      {
+        const vtkIdType r = q / U;
+        const vtkIdType i = q % U;
+        const Id p00 = static_cast<Id>(r * (U + 1) + i);
+        const Id p10 = p00 + 1;
+        const Id p01 = static_cast<Id>(p00 + U + 1);
+        const Id p11 = p01 + 1;
+        Id* c = connectivity + 6 * q;
+        c[0] = p00;
+        c[1] = flip ? p11 : p10;
+        c[2] = flip ? p10 : p11;
+        c[3] = p00;
+        c[4] = flip ? p01 : p11;
+        c[5] = flip ? p11 : p01;
+        offsets[2 * q] = static_cast<Id>(6 * q);
+        offsets[2 * q + 1] = static_cast<Id>(6 * q + 3);
+      }
+    });
+  offsets[2 * numQuads] = static_cast<Id>(6 * numQuads);
+}
+
+template <typename IdArray>
+vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, int U, bool flip)
+{
+  using Id = typename IdArray::ValueType;
+  const vtkIdType numTriangles = 2 * numRows * U;
+  vtkNew<IdArray> offsets;
+  offsets->SetNumberOfValues(numTriangles + 1);
+  vtkNew<IdArray> connectivity;
+  connectivity->SetNumberOfValues(3 * numTriangles);
+  BuildTriangles<Id>(numRows, U, flip, offsets->GetPointer(0), connectivity->GetPointer(0));
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+template <typename Real, typename RealArray>
+bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoords, bool tangents,
+  bool derivatives, vtkPolyData* output, vtkIdType& arbitrary)
+{
+  auto newArray = [numPoints](auto array, const char* name, int components)
+  {
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(numPoints);
+    return array;
+  };
+  vtkNew<RealArray> points;
+  newArray(points.Get(), "Points", 3);
+  PointWorker<Real> worker(g);
+  worker.Points = points->GetPointer(0);
+  vtkNew<vtkFloatArray> normalArray, tcoordArray, tangentArray;
+  vtkNew<RealArray> dPdu, dPdv;
+  worker.Normals = normals ? newArray(normalArray.Get(), "Normals", 3)->GetPointer(0) : nullptr;
+  worker.TCoords = tcoords ? newArray(tcoordArray.Get(), "TCoords", 2)->GetPointer(0) : nullptr;
+  worker.Tangents = tangents ? newArray(tangentArray.Get(), "Tangents", 4)->GetPointer(0) : nullptr;
+  worker.DPdu = derivatives ? newArray(dPdu.Get(), "dPdu", 3)->GetPointer(0) : nullptr;
+  worker.DPdv = derivatives ? newArray(dPdv.Get(), "dPdv", 3)->GetPointer(0) : nullptr;
+
+  // Grain: a few thousand points amortise the scheduling; the split never changes values.
+  vtkSMPTools::For(0, numPoints, 4096, worker);
+
+  for (unsigned char bad : worker.NonFinite)
+  {
+    if (bad)
+    {
+      return false;
+    }
+  }
+  arbitrary = 0;
+  for (vtkIdType count : worker.Arbitrary)
+  {
+    arbitrary += count;
+  }
+
+  vtkNew<vtkPoints> pts;
+  pts->SetData(points);
+  output->SetPoints(pts);
+  vtkPointData* pd = output->GetPointData();
+  if (normals)
+  {
+    pd->SetNormals(normalArray);
+  }
+  if (tcoords)
+  {
+    pd->SetTCoords(tcoordArray);
+  }
+  if (tangents)
+  {
+    // VTK 9.1 accepts only 3-component tangent attributes (vtkDataSetAttributes), so the
+    // 4-component frame is an ordinary array found by its name.
+    pd->AddArray(tangentArray);
+  }
+  if (derivatives)
+  {
+    pd->AddArray(dPdu);
+    pd->AddArray(dPdv);
+  }
+  return true;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkParametricSurfaceSource::vtkParametricSurfaceSource()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkParametricSurfaceSource::~vtkParametricSurfaceSource() = default;
+
+//------------------------------------------------------------------------------
+void vtkParametricSurfaceSource::SetParametricFunction(vtkParametricFunction* function)
+{
+  if (this->ParametricFunction != function)
+  {
+    this->ParametricFunction = function;
+    this->Modified();
+  }
+}
+
+vtkParametricFunction* vtkParametricSurfaceSource::GetParametricFunction()
+{
+  return this->ParametricFunction;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkParametricSurfaceSource::GetMTime()
+{
+  vtkMTimeType mtime = this->Superclass::GetMTime();
+  if (this->ParametricFunction)
+  {
+    mtime = std::max(mtime, this->ParametricFunction->GetMTime());
+  }
+  return mtime;
+}
+
+//------------------------------------------------------------------------------
+int vtkParametricSurfaceSource::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkParametricSurfaceSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  output->Initialize();
+
+  vtkParametricFunction* function = this->ParametricFunction;
+  if (!function)
+  {
+    vtkErrorMacro("No parametric function: call SetParametricFunction() with a "
+                  "vtkParametricFunction (e.g. vtkParametricSphere) first.");
+    return 0;
+  }
+  if (function->GetDimension() != 2)
+  {
+    vtkErrorMacro("The parametric function " << function->GetClassName() << " has dimension "
+                                             << function->GetDimension()
+                                             << "; only surfaces (dimension 2) can be "
+                                                "tessellated.");
+    return 0;
+  }
+  if (this->UResolution < 1 || this->VResolution < 1)
+  {
+    vtkErrorMacro("Resolution " << this->UResolution << " x " << this->VResolution
+                                << " is invalid: UResolution and VResolution must be at "
+                                   "least 1.");
+    return 0;
+  }
+  const double umin = function->GetMinimumU(), umax = function->GetMaximumU();
+  const double vmin = function->GetMinimumV(), vmax = function->GetMaximumV();
+  if (!std::isfinite(umax - umin) || !std::isfinite(vmax - vmin) || umin == umax || vmin == vmax)
+  {
+    vtkErrorMacro("The parametric function's domain [" << umin << ", " << umax << "] x [" << vmin
+                                                       << ", " << vmax
+                                                       << "] is empty or not finite: set "
+                                                          "its Minimum/Maximum U and V.");
+    return 0;
+  }
+  if (this->GenerateTangents &&
+    (!(this->TextureRepeat[0] != 0.0) || !(this->TextureRepeat[1] != 0.0) ||
+      !std::isfinite(1.0 / this->TextureRepeat[0]) || !std::isfinite(1.0 / this->TextureRepeat[1])))
+  {
+    vtkErrorMacro("TextureRepeat (" << this->TextureRepeat[0] << ", " << this->TextureRepeat[1]
+                                    << ") leaves no texture direction for the tangents: "
+                                       "use a non-zero repeat.");
+    return 0;
+  }
+  const vtkIdType U = this->UResolution;
+  const vtkIdType V = this->VResolution;
+  const vtkIdType rowLength = U + 1;
+  if (rowLength * (V + 1) > std::numeric_limits<vtkIdType>::max() / 8)
+  {
+    vtkErrorMacro("Resolution " << U << " x " << V << " is too large to index.");
+    return 0;
+  }
+
+  // Pieces split the rows of cells, as vtkSphereSource splits its theta range.
+  int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  int numPieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (numPieces < 1)
+  {
+    numPieces = 1;
+    piece = 0;
+  }
+  if (numPieces > V)
+  {
+    numPieces = static_cast<int>(V);
+  }
+  if (piece < 0 || piece >= numPieces)
+  {
+    return 1; // a surplus piece is empty
+  }
+  const vtkIdType cellRow0 = piece * V / numPieces;
+  const vtkIdType cellRow1 = (piece + 1) * V / numPieces;
+
+  Grid g;
+  g.Function = function;
+  g.U = this->UResolution;
+  g.Row0 = cellRow0;
+  g.NumRows = cellRow1 - cellRow0 + 1;
+  g.UMin = umin;
+  g.UExtent = umax - umin;
+  g.VMin = vmin;
+  g.VExtent = vmax - vmin;
+  g.Orientation = function->GetClockwiseOrdering() ? 1.0 : -1.0;
+  g.InvRepeat[0] = 1.0 / this->TextureRepeat[0];
+  g.InvRepeat[1] = 1.0 / this->TextureRepeat[1];
+  g.TangentSign = this->TextureRepeat[0] < 0.0 ? -1.0 : 1.0;
+  g.Handedness = g.Orientation * g.TangentSign * (this->TextureRepeat[1] < 0.0 ? -1.0 : 1.0);
+  g.UUnit.resize(U + 1);
+  g.UDomain.resize(U + 1);
+  g.S.resize(U + 1);
+  for (vtkIdType i = 0; i <= U; ++i)
+  {
+    const double u = static_cast<double>(i) / static_cast<double>(U);
+    g.UUnit[i] = u;
+    g.UDomain[i] = i == U ? umax : umin + g.UExtent * u;
+    g.S[i] = static_cast<float>(this->TextureOffset[0] + this->TextureRepeat[0] * u);
+  }
+  g.VUnit.resize(V + 1);
+  g.VDomain.resize(V + 1);
+  g.T.resize(V + 1);
+  for (vtkIdType j = 0; j <= V; ++j)
+  {
+    const double v = static_cast<double>(j) / static_cast<double>(V);
+    g.VUnit[j] = v;
+    g.VDomain[j] = j == V ? vmax : vmin + g.VExtent * v;
+    g.T[j] = static_cast<float>(this->TextureOffset[1] + this->TextureRepeat[1] * v);
+  }
+
+  // One evaluation before the threads start: functions that build state lazily (profiles,
+  // splines) do it here, and errors they report stop the source before any output exists.
+  {
+    std::string message;
+    vtkNew<vtkCallbackCommand> onError;
+    onError->SetClientData(&message);
+    onError->SetCallback(
+      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      {
+        auto* text = static_cast<std::string*>(clientData);
+        if (callData && text->empty())
+        {
+          *text = static_cast<const char*>(callData);
+        }
+      });
+    const unsigned long tag = function->AddObserver(vtkCommand::ErrorEvent, onError);
+    double p[3], du[3], dv[3];
+    g.Evaluate(g.UDomain[0], g.VDomain[cellRow0], p, du, dv);
+    function->RemoveObserver(tag);
+    if (!message.empty())
+    {
+      vtkErrorMacro("The parametric function " << function->GetClassName()
+                                               << " reported an error: " << message);
+      return 0;
+    }
+  }
+
+  // Separable functions do their per-column and per-row work once, not at every point.
+  g.Separable = vtkParametricSeparableFunction::SafeDownCast(function);
+  if (g.Separable)
+  {
+    g.NumUTerms = g.Separable->GetNumberOfUTerms();
+    g.NumVTerms = g.Separable->GetNumberOfVTerms();
+    g.UTerms.resize(rowLength * g.NumUTerms);
+    g.VTerms.resize((V + 1) * g.NumVTerms);
+    vtkSMPTools::For(0, rowLength,
+      [&g](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          g.Separable->EvaluateUTerms(g.UDomain[i], g.UTerms.data() + i * g.NumUTerms);
+        }
+      });
+    vtkSMPTools::For(cellRow0, cellRow1 + 1,
+      [&g](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType j = begin; j < end; ++j)
+        {
+          g.Separable->EvaluateVTerms(g.VDomain[j], g.VTerms.data() + j * g.NumVTerms);
+        }
+      });
+  }
+
+  const vtkIdType numPoints = g.NumRows * rowLength;
+  vtkIdType arbitrary = 0;
+  const bool ok = this->OutputPointsPrecision == DOUBLE_PRECISION
+    ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, this->GenerateNormals,
+        this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
+        arbitrary)
+    : GeneratePoints<float, vtkFloatArray>(g, numPoints, this->GenerateNormals,
+        this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
+        arbitrary);
+  if (!ok)
+  {
+    output->Initialize();
+    vtkErrorMacro("The parametric function " << function->GetClassName()
+                                             << " returned non-finite points or derivatives: "
+                                                "check its parameters (scale, radii).");
+    return 0;
+  }
+  if (arbitrary > 0)
+  {
+    vtkWarningMacro(<< arbitrary
+                    << " points lie where the surface has no area (e.g. a zero "
+                       "radius): their normals and tangents are arbitrary.");
+  }
+
+  const vtkIdType numTriangles = 2 * (g.NumRows - 1) * U;
+  const bool flip = g.Orientation < 0.0;
+  const bool fits32 = 3 * numTriangles < std::numeric_limits<vtkTypeInt32>::max() &&
+    numPoints < std::numeric_limits<vtkTypeInt32>::max();
+  output->SetPolys(fits32 ? MakeTriangles<vtkTypeInt32Array>(g.NumRows - 1, g.U, flip)
+                          : MakeTriangles<vtkTypeInt64Array>(g.NumRows - 1, g.U, flip));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkParametricSurfaceSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParametricFunction: ";
+  if (this->ParametricFunction)
+  {
+    os << this->ParametricFunction->GetClassName() << " (" << this->ParametricFunction.Get()
+       << ")\n";
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+  os << indent << "UResolution: " << this->UResolution << "\n";
+  os << indent << "VResolution: " << this->VResolution << "\n";
+  os << indent << "GenerateNormals: " << this->GenerateNormals << "\n";
+  os << indent << "GenerateTextureCoordinates: " << this->GenerateTextureCoordinates << "\n";
+  os << indent << "GenerateTangents: " << this->GenerateTangents << "\n";
+  os << indent << "GenerateDerivatives: " << this->GenerateDerivatives << "\n";
+  os << indent << "TextureRepeat: (" << this->TextureRepeat[0] << ", " << this->TextureRepeat[1]
+     << ")\n";
+  os << indent << "TextureOffset: (" << this->TextureOffset[0] << ", " << this->TextureOffset[1]
+     << ")\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+}

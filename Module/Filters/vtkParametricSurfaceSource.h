@@ -1,0 +1,162 @@
+/**
+ * @class   vtkParametricSurfaceSource
+ * @brief   Tessellates a parametric surface with analytic normals, texture coordinates and
+ *          tangent frames, in pieces and threads.
+ *
+ * vtkParametricSurfaceSource samples any two-dimensional vtkParametricFunction (VTK's own,
+ * such as vtkParametricTorus or vtkParametricEllipsoid, and SurfaceDetail's functions on the
+ * unit square such as vtkParametricSphere) on a regular (UResolution+1) x (VResolution+1)
+ * grid and connects it with 2*UResolution*VResolution triangles. Point i + j*(UResolution+1)
+ * is the function at u = i/UResolution, v = j/VResolution of its domain (MinimumU..MaximumU,
+ * MinimumV..MaximumV). Seams are not joined: the first and last columns (rows) are distinct
+ * points, so texture coordinates run from 0 to 1 without wrapping back.
+ *
+ * Point arrays, each computed only when asked for:
+ * - "Normals" (GenerateNormals): unit normals from the function's analytic derivatives,
+ *   N = Du x Dv, or Dv x Du for VTK functions whose ClockwiseOrdering is off (the rule
+ *   vtkParametricFunctionSource follows), so closed surfaces face outward. Triangles wind
+ *   counter-clockwise around N.
+ * - "TCoords" (GenerateTextureCoordinates): s = TextureOffset[0] + TextureRepeat[0]*u,
+ *   t = TextureOffset[1] + TextureRepeat[1]*v with (u,v) the unit-square parameters,
+ *   whatever the function's own domain.
+ * - "Tangents" (GenerateTangents): 4-component float tangents, T = dP/ds made orthogonal
+ *   to N and normalised, w = handedness, per vtkSurfaceDetailConventions.h
+ *   (MakeTangentFrame); bitangent B = w*cross(N,T). VTK 9.1's point data accepts only
+ *   3-component tangent attributes, so this is a named array (GetArray("Tangents")), not
+ *   the point data's tangent attribute.
+ * - "dPdu", "dPdv" (GenerateDerivatives): the raw derivatives with respect to the
+ *   unit-square parameters (the function's own derivatives times the extent of its domain).
+ *
+ * Degenerate points, where Du or Dv vanishes (a sphere's poles, the axis of a surface of
+ * revolution) or where they are parallel, get the limit of the normal and tangent from the
+ * surrounding surface: the vanishing derivative is replaced by its one-sided derivative
+ * across the degenerate line (a second-order difference of analytic derivatives), so a
+ * sphere's pole normal is the pole direction and its tangent is continuous along the column.
+ * A surface with no area anywhere near a point (a zero radius) gets an arbitrary unit frame
+ * there and a warning.
+ *
+ * Pieces: the source splits the v rows among UPDATE_NUMBER_OF_PIECES pieces like
+ * vtkSphereSource; the pieces together are exactly the serial surface (boundary rows are
+ * repeated as points, cells are not). Work is done by vtkSMPTools and the result does not
+ * depend on the number of threads.
+ *
+ * The function is evaluated from several threads at once. VTK's functions and SurfaceDetail's
+ * allow that; a function that builds state lazily is evaluated once before the threads start.
+ * If the function reports an error, or returns a non-finite value, the output is empty and
+ * the source reports an error.
+ *
+ * @sa vtkParametricFunctionSource vtkParametricSphere vtkParametricDonut
+ * vtkSurfaceDetailConventions.h
+ */
+
+#ifndef vtkParametricSurfaceSource_h
+#define vtkParametricSurfaceSource_h
+
+#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // For the function member
+
+class vtkParametricFunction;
+
+class SURFACEDETAILFILTERS_EXPORT vtkParametricSurfaceSource : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkParametricSurfaceSource* New();
+  vtkTypeMacro(vtkParametricSurfaceSource, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The surface: a two-dimensional vtkParametricFunction. Required; no default.
+   */
+  void SetParametricFunction(vtkParametricFunction* function);
+  vtkParametricFunction* GetParametricFunction();
+  ///@}
+
+  ///@{
+  /**
+   * Number of grid intervals along u and v (cells per row and rows). At least 1; default
+   * 64 x 32. Values below 1 are reported as an error when the source executes.
+   */
+  vtkSetMacro(UResolution, int);
+  vtkGetMacro(UResolution, int);
+  vtkSetMacro(VResolution, int);
+  vtkGetMacro(VResolution, int);
+  ///@}
+
+  ///@{
+  /** Produce the "Normals" point array (unit, analytic). Default on. */
+  vtkSetMacro(GenerateNormals, bool);
+  vtkGetMacro(GenerateNormals, bool);
+  vtkBooleanMacro(GenerateNormals, bool);
+  ///@}
+
+  ///@{
+  /** Produce the "TCoords" point array. Default on. */
+  vtkSetMacro(GenerateTextureCoordinates, bool);
+  vtkGetMacro(GenerateTextureCoordinates, bool);
+  vtkBooleanMacro(GenerateTextureCoordinates, bool);
+  ///@}
+
+  ///@{
+  /** Produce the 4-component float "Tangents" point array. Default off. */
+  vtkSetMacro(GenerateTangents, bool);
+  vtkGetMacro(GenerateTangents, bool);
+  vtkBooleanMacro(GenerateTangents, bool);
+  ///@}
+
+  ///@{
+  /** Produce the "dPdu" and "dPdv" point arrays (unit-square derivatives). Default off. */
+  vtkSetMacro(GenerateDerivatives, bool);
+  vtkGetMacro(GenerateDerivatives, bool);
+  vtkBooleanMacro(GenerateDerivatives, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Texture transform: s = TextureOffset[0] + TextureRepeat[0]*u, and the same for t with v.
+   * Default repeat (1,1), offset (0,0). A repeat of zero, which leaves no texture direction
+   * for the tangents, is an error when tangents are asked for.
+   */
+  vtkSetVector2Macro(TextureRepeat, double);
+  vtkGetVector2Macro(TextureRepeat, double);
+  vtkSetVector2Macro(TextureOffset, double);
+  vtkGetVector2Macro(TextureOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * vtkAlgorithm::SINGLE_PRECISION (default) or DOUBLE_PRECISION for the points and the
+   * derivative arrays. Normals, texture coordinates and tangents are always float.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  /** Includes the function's modification time. */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkParametricSurfaceSource();
+  ~vtkParametricSurfaceSource() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkSmartPointer<vtkParametricFunction> ParametricFunction;
+  int UResolution = 64;
+  int VResolution = 32;
+  bool GenerateNormals = true;
+  bool GenerateTextureCoordinates = true;
+  bool GenerateTangents = false;
+  bool GenerateDerivatives = false;
+  double TextureRepeat[2] = { 1.0, 1.0 };
+  double TextureOffset[2] = { 0.0, 0.0 };
+  int OutputPointsPrecision = SINGLE_PRECISION;
+
+private:
+  vtkParametricSurfaceSource(const vtkParametricSurfaceSource&) = delete;
+  void operator=(const vtkParametricSurfaceSource&) = delete;
+};
+
+#endif

@@ -1,0 +1,98 @@
+/**
+ * @class   vtkOIIOImageReader
+ * @brief   Reads any 2-D image OpenImageIO can read (PNG, JPEG, TIFF, OpenEXR, HDR, TGA, ...).
+ *
+ * Textures come in many formats VTK cannot read (OpenEXR, Radiance HDR) and in pixel types
+ * VTK's readers narrow (half floats). This reader hands the file to OpenImageIO and keeps
+ * what the file holds:
+ *
+ * - the pixel type: 8-bit stays unsigned char, 16-bit stays unsigned short, float stays
+ *   float; half becomes float (VTK has no half type); other integer types and double keep
+ *   their VTK equivalent;
+ * - the channel count, 1 to 4 (grey, grey+alpha, RGB, RGBA);
+ * - VTK's orientation: row 0 of the output is the bottom row of the picture, so that
+ *   texture coordinate t = 0 samples the bottom (as OpenGL and vtkTexture do);
+ * - spacing 1 and origin 0, whatever resolution the file records;
+ * - the colour space the file declares (OpenImageIO's "oiio:ColorSpace"), through
+ *   GetColorSpace() and GetIsSRGB(), so a caller can set vtkTexture::UseSRGBColorSpace.
+ *
+ * Only the first subimage at full resolution is read. Files OpenImageIO cannot open, and
+ * layouts VTK cannot hold (more than 4 channels, volumes, deep data), are errors: the
+ * reader reports the path and OpenImageIO's reason with vtkErrorMacro, sets its ErrorCode
+ * and leaves the output empty.
+ *
+ * Loading the SurfaceDetail::IO library registers the reader with vtkImageReader2Factory,
+ * so vtkImageReader2Factory::CreateImageReader2() finds it for the formats VTK's own
+ * readers lack (EXR, HDR, ...). VTK's readers are asked first, so PNG or JPEG still go to
+ * vtkPNGReader or vtkJPEGReader from the factory; instantiate this class to use OpenImageIO
+ * for them too. RegisterWithImageReader2Factory() does the registration explicitly and may
+ * be called any number of times.
+ *
+ * @sa vtkOIIOImageWriter vtkImageReader2Factory vtkPNGReader
+ */
+
+#ifndef vtkOIIOImageReader_h
+#define vtkOIIOImageReader_h
+
+#include "SurfaceDetailIOModule.h" // For export macro
+#include "vtkImageReader2.h"
+
+#include <string> // For the colour space and extension strings
+
+class SURFACEDETAILIO_EXPORT vtkOIIOImageReader : public vtkImageReader2
+{
+public:
+  static vtkOIIOImageReader* New();
+  vtkTypeMacro(vtkOIIOImageReader, vtkImageReader2);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * 3 if OpenImageIO opens the file and its layout fits a vtkImageData (1-4 channels, 2-D),
+   * 0 otherwise. Does not read the pixels.
+   */
+  int CanReadFile(const char* fname) override;
+
+  /**
+   * The extensions of every format this OpenImageIO build reads, e.g. ".exr .hdr .png".
+   */
+  const char* GetFileExtensions() override;
+
+  const char* GetDescriptiveName() override { return "OpenImageIO image"; }
+
+  /**
+   * The colour space the file declares (OpenImageIO's "oiio:ColorSpace", e.g. "sRGB" or
+   * "Linear"), empty if it declares none. Valid after UpdateInformation().
+   */
+  const char* GetColorSpace() const { return this->ColorSpace.c_str(); }
+
+  /**
+   * Whether the file's pixels are sRGB-encoded (true for most 8-bit PNG/JPEG) rather than
+   * linear (OpenEXR, HDR). Valid after UpdateInformation().
+   */
+  bool GetIsSRGB() const;
+
+  /**
+   * Adds an instance to vtkImageReader2Factory's list unless one is there already.
+   * Called when the library loads; safe to call again.
+   */
+  static void RegisterWithImageReader2Factory();
+
+protected:
+  vtkOIIOImageReader();
+  ~vtkOIIOImageReader() override = default;
+
+  void ExecuteInformation() override;
+  void ExecuteDataWithInformation(vtkDataObject* output, vtkInformation* outInfo) override;
+
+private:
+  vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;
+  void operator=(const vtkOIIOImageReader&) = delete;
+
+  /// Reports the failure, sets the error code and empties the output.
+  void Fail(unsigned long errorCode, const std::string& message);
+
+  std::string ColorSpace;
+  std::string FileExtensions;
+};
+
+#endif

@@ -1,0 +1,487 @@
+// vtkParametricSurfaceSource as a pipeline citizen: pieces add up to the serial surface,
+// thread counts do not change a byte, bad input gives a clear error and an empty output,
+// and sweeps over degenerate and extreme surfaces give finite unit frames (or an error).
+
+#include "ParametricSurfaceTestHelpers.h"
+
+#include <vtkBezierProfile.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkParametricBohemianDome.h>
+#include <vtkParametricBoy.h>
+#include <vtkParametricCrossCap.h>
+#include <vtkParametricCylinder.h>
+#include <vtkParametricDini.h>
+#include <vtkParametricDonut.h>
+#include <vtkParametricEllipsoid.h>
+#include <vtkParametricEnneper.h>
+#include <vtkParametricExtrusion.h>
+#include <vtkParametricFigure8Klein.h>
+#include <vtkParametricKlein.h>
+#include <vtkParametricMobius.h>
+#include <vtkParametricPseudosphere.h>
+#include <vtkParametricRectangle.h>
+#include <vtkParametricRevolution.h>
+#include <vtkParametricRoman.h>
+#include <vtkParametricSphere.h>
+#include <vtkParametricSpline.h>
+#include <vtkParametricSuperEllipsoid.h>
+#include <vtkParametricSuperToroid.h>
+#include <vtkParametricSurfaceSource.h>
+#include <vtkParametricTorus.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace
+{
+vtkSmartPointer<vtkParametricSurfaceSource> MakeSource(vtkParametricFunction* f, int U, int V)
+{
+  auto source = vtkSmartPointer<vtkParametricSurfaceSource>::New();
+  source->SetParametricFunction(f);
+  source->SetUResolution(U);
+  source->SetVResolution(V);
+  source->GenerateNormalsOn();
+  source->GenerateTextureCoordinatesOn();
+  source->GenerateTangentsOn();
+  source->GenerateDerivativesOn();
+  return source;
+}
+
+// Every value finite; normals unit; tangents unit, orthogonal to the normal, w = +-1.
+// Returns the number of bad points (and says why for the first).
+int CountBadFrames(vtkPolyData* out, double unitTolerance = 1e-5)
+{
+  int bad = 0;
+  vtkPointData* pd = out->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    for (vtkIdType v = 0; v < array->GetNumberOfValues(); ++v)
+    {
+      if (!std::isfinite(array->GetComponent(v / array->GetNumberOfComponents(),
+            static_cast<int>(v % array->GetNumberOfComponents()))))
+      {
+        ADD_FAILURE() << array->GetName() << " is not finite at value " << v;
+        return 1;
+      }
+    }
+  }
+  vtkDataArray* points = out->GetPoints()->GetData();
+  for (vtkIdType v = 0; v < 3 * points->GetNumberOfTuples(); ++v)
+  {
+    if (!std::isfinite(points->GetComponent(v / 3, static_cast<int>(v % 3))))
+    {
+      ADD_FAILURE() << "point " << v / 3 << " is not finite";
+      return 1;
+    }
+  }
+  vtkDataArray* normals = pd->GetNormals();
+  vtkDataArray* tangents = pd->GetArray("Tangents");
+  for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+  {
+    double n[3], t[4];
+    normals->GetTuple(id, n);
+    tangents->GetTuple(id, t);
+    const double nn = std::sqrt(vtkMath::Dot(n, n));
+    const double tt = std::sqrt(vtkMath::Dot(t, t));
+    const double nt = vtkMath::Dot(n, t);
+    if (std::abs(nn - 1) > unitTolerance || std::abs(tt - 1) > unitTolerance ||
+      std::abs(nt) > unitTolerance || std::abs(t[3]) != 1.0)
+    {
+      if (bad == 0)
+      {
+        ADD_FAILURE() << "point " << id << ": |n| = " << nn << ", |t| = " << tt << ", n.t = " << nt
+                      << ", w = " << t[3];
+      }
+      ++bad;
+    }
+  }
+  return bad;
+}
+
+// Runs the source; either it succeeds with finite unit frames, or it reports an error and
+// the output is empty. Returns true on success.
+bool RunChecked(vtkParametricFunction* f, int U, int V, const std::string& what)
+{
+  SCOPED_TRACE(what);
+  auto source = MakeSource(f, U, V);
+  vtkNew<ParametricErrorObserver> observer;
+  observer->Observe(source);
+  source->Update();
+  vtkPolyData* out = source->GetOutput();
+  if (observer->ErrorCount > 0)
+  {
+    EXPECT_EQ(out->GetNumberOfPoints(), 0);
+    EXPECT_EQ(out->GetNumberOfCells(), 0);
+    EXPECT_FALSE(observer->Errors.empty());
+    return false;
+  }
+  EXPECT_EQ(out->GetNumberOfPoints(), static_cast<vtkIdType>(U + 1) * (V + 1));
+  EXPECT_EQ(out->GetNumberOfCells(), 2 * static_cast<vtkIdType>(U) * V);
+  EXPECT_EQ(CountBadFrames(out), 0);
+  return true;
+}
+
+// A grid point is identified by its texture coordinates, which are distinct for every
+// (i, j) with the default texture transform.
+using Key = std::pair<float, float>;
+Key PointKey(vtkPolyData* pd, vtkIdType id)
+{
+  double tc[2];
+  pd->GetPointData()->GetTCoords()->GetTuple(id, tc);
+  return { static_cast<float>(tc[0]), static_cast<float>(tc[1]) };
+}
+
+// A triangle as serial point indices, rotated so that the smallest comes first (the
+// winding is kept, so a flipped triangle does not match).
+std::array<vtkIdType, 3> Canonical(vtkIdType a, vtkIdType b, vtkIdType c)
+{
+  if (b < a && b < c)
+  {
+    return { b, c, a };
+  }
+  if (c < a && c < b)
+  {
+    return { c, a, b };
+  }
+  return { a, b, c };
+}
+
+bool SameArrays(vtkDataArray* a, vtkDataArray* b)
+{
+  if (!a || !b || a->GetDataType() != b->GetDataType() ||
+    a->GetNumberOfValues() != b->GetNumberOfValues())
+  {
+    return false;
+  }
+  return std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+           static_cast<size_t>(a->GetNumberOfValues()) * a->GetDataTypeSize()) == 0;
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, PiecesTogetherAreTheSerialSurface)
+{
+  vtkNew<vtkParametricTorus> torus;
+  const int U = 13, V = 11;
+  auto serialSource = MakeSource(torus, U, V);
+  serialSource->Update();
+  vtkPolyData* serial = serialSource->GetOutput();
+  std::map<Key, vtkIdType> index;
+  for (vtkIdType id = 0; id < serial->GetNumberOfPoints(); ++id)
+  {
+    index[PointKey(serial, id)] = id;
+  }
+  ASSERT_EQ(static_cast<vtkIdType>(index.size()), serial->GetNumberOfPoints());
+  std::multiset<std::array<vtkIdType, 3>> serialCells;
+  vtkIdType npts;
+  const vtkIdType* pts;
+  for (vtkIdType c = 0; c < serial->GetNumberOfCells(); ++c)
+  {
+    serial->GetPolys()->GetCellAtId(c, npts, pts);
+    serialCells.insert(Canonical(pts[0], pts[1], pts[2]));
+  }
+
+  for (int numPieces : { 1, 2, 3, 4, 7, V, V + 5 })
+  {
+    SCOPED_TRACE("pieces: " + std::to_string(numPieces));
+    std::multiset<std::array<vtkIdType, 3>> union_;
+    int nonEmpty = 0;
+    for (int piece = 0; piece < numPieces; ++piece)
+    {
+      auto source = MakeSource(torus, U, V);
+      source->UpdatePiece(piece, numPieces, 0);
+      vtkPolyData* out = source->GetOutput();
+      nonEmpty += out->GetNumberOfCells() > 0;
+      std::vector<vtkIdType> toSerial(out->GetNumberOfPoints());
+      for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+      {
+        auto it = index.find(PointKey(out, id));
+        ASSERT_NE(it, index.end());
+        toSerial[id] = it->second;
+        // Every array of a piece's point is bit-identical to the serial one.
+        for (const char* name : { "Normals", "TCoords", "Tangents", "dPdu", "dPdv" })
+        {
+          vtkDataArray* a = out->GetPointData()->GetArray(name);
+          vtkDataArray* b = serial->GetPointData()->GetArray(name);
+          for (int k = 0; k < a->GetNumberOfComponents(); ++k)
+          {
+            ASSERT_EQ(a->GetComponent(id, k), b->GetComponent(it->second, k)) << name;
+          }
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          ASSERT_EQ(out->GetPoints()->GetData()->GetComponent(id, k),
+            serial->GetPoints()->GetData()->GetComponent(it->second, k));
+        }
+      }
+      for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+      {
+        out->GetPolys()->GetCellAtId(c, npts, pts);
+        union_.insert(Canonical(toSerial[pts[0]], toSerial[pts[1]], toSerial[pts[2]]));
+      }
+    }
+    EXPECT_EQ(union_, serialCells); // no cell missing, none twice, same winding
+    EXPECT_EQ(nonEmpty, std::min(numPieces, V));
+  }
+}
+
+TEST(ParametricSurfaceSource, ThreadCountDoesNotChangeTheResult)
+{
+  vtkNew<vtkParametricRevolution> vase;
+  vase->GetProfile()->ArcLengthParameterizationOn();
+  std::vector<vtkSmartPointer<vtkPolyData>> results;
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    EXPECT_EQ(vtkSMPTools::GetEstimatedNumberOfThreads(), threads);
+    auto source = MakeSource(vase, 300, 200); // many more points than one grain of work
+    source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    source->Update();
+    results.emplace_back(source->GetOutput());
+  }
+  vtkSMPTools::Initialize(0);
+  vtkPolyData* a = results[0];
+  vtkPolyData* b = results[1];
+  EXPECT_TRUE(SameArrays(a->GetPoints()->GetData(), b->GetPoints()->GetData()));
+  for (const char* name : { "Normals", "TCoords", "Tangents", "dPdu", "dPdv" })
+  {
+    EXPECT_TRUE(SameArrays(a->GetPointData()->GetArray(name), b->GetPointData()->GetArray(name)))
+      << name;
+  }
+  EXPECT_TRUE(
+    SameArrays(a->GetPolys()->GetConnectivityArray(), b->GetPolys()->GetConnectivityArray()));
+  EXPECT_TRUE(SameArrays(a->GetPolys()->GetOffsetsArray(), b->GetPolys()->GetOffsetsArray()));
+}
+
+TEST(ParametricSurfaceSource, BadInputIsAClearError)
+{
+  vtkNew<ParametricErrorObserver> observer;
+  auto expectError = [&observer](vtkParametricSurfaceSource* source, const char* phrase)
+  {
+    observer->Clear();
+    source->Modified();
+    source->Update();
+    EXPECT_EQ(observer->ErrorCount, 1) << phrase;
+    EXPECT_NE(observer->Errors.find(phrase), std::string::npos) << observer->Errors;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+    EXPECT_EQ(source->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
+  };
+
+  vtkNew<vtkParametricSphere> sphere;
+  vtkNew<vtkParametricSurfaceSource> source;
+  observer->Observe(source);
+  expectError(source, "SetParametricFunction");
+
+  source->SetParametricFunction(sphere);
+  source->SetUResolution(0);
+  expectError(source, "at least 1");
+  source->SetUResolution(8);
+  source->SetVResolution(-3);
+  expectError(source, "at least 1");
+  source->SetVResolution(4);
+
+  source->GenerateTangentsOn();
+  source->SetTextureRepeat(0, 1);
+  expectError(source, "non-zero repeat");
+  source->SetTextureRepeat(1, 1);
+
+  vtkNew<vtkParametricSpline> curve; // a curve, not a surface
+  source->SetParametricFunction(curve);
+  expectError(source, "dimension");
+
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetMaximumU(torus->GetMinimumU());
+  source->SetParametricFunction(torus);
+  expectError(source, "domain");
+
+  sphere->SetRadius(vtkMath::Nan());
+  source->SetParametricFunction(sphere);
+  expectError(source, "non-finite");
+  sphere->SetRadius(1e308); // finite points, overflowing derivatives
+  expectError(source, "non-finite");
+
+  vtkNew<vtkParametricRevolution> vase;
+  vase->GetProfile()->AddControlPoint(3, 3); // 11 points: not 3k+1
+  source->SetParametricFunction(vase);
+  expectError(source, "3k+1");
+  vase->SetProfile(nullptr);
+  expectError(source, "no profile");
+
+  vtkNew<vtkParametricExtrusion> pillar;
+  pillar->GetProfile()->SetControlPoint(2, vtkMath::Inf(), 0);
+  source->SetParametricFunction(pillar);
+  expectError(source, "non-finite control point");
+
+  // After an error, good input works again.
+  observer->Clear();
+  sphere->SetRadius(2);
+  source->SetParametricFunction(sphere);
+  source->Update();
+  EXPECT_EQ(observer->ErrorCount, 0);
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 9 * 5);
+}
+
+TEST(ParametricSurfaceSource, StressOurSurfaces)
+{
+  const std::array<std::array<int, 2>, 6> resolutions = { { { 1, 1 }, { 2, 2 }, { 3, 3 }, { 1, 3 },
+    { 2048, 3 }, { 3, 2048 } } };
+  const double scales[] = { 1e-12, 1e-6, 1, 1e6, 1e12 };
+  for (const auto& r : resolutions)
+  {
+    const std::string res = std::to_string(r[0]) + "x" + std::to_string(r[1]);
+    for (double s : scales)
+    {
+      const std::string at = res + " scale " + std::to_string(s);
+      vtkNew<vtkParametricSphere> sphere;
+      sphere->SetRadius(s);
+      EXPECT_TRUE(RunChecked(sphere, r[0], r[1], "sphere " + at));
+
+      vtkNew<vtkParametricCylinder> cylinder;
+      cylinder->SetRadius(s);
+      cylinder->SetHeight(3 * s);
+      EXPECT_TRUE(RunChecked(cylinder, r[0], r[1], "cylinder " + at));
+
+      vtkNew<vtkParametricDonut> donut;
+      donut->SetRingRadius(s);
+      donut->SetCrossSectionRadius(s); // horn torus: touches the axis at v = 1/2
+      EXPECT_TRUE(RunChecked(donut, r[0], r[1], "horn donut " + at));
+
+      vtkNew<vtkParametricRectangle> rect;
+      rect->SetOrigin(-s, 0, 0);
+      rect->SetPoint1(s, 0, s);
+      rect->SetPoint2(-s, s, 0);
+      EXPECT_TRUE(RunChecked(rect, r[0], r[1], "rectangle " + at));
+
+      vtkNew<vtkParametricRevolution> vase;
+      vtkNew<vtkParametricExtrusion> pillar;
+      for (vtkBezierProfile* profile : { vase->GetProfile(), pillar->GetProfile() })
+      {
+        for (int i = 0; i < profile->GetNumberOfControlPoints(); ++i)
+        {
+          double p[2];
+          profile->GetControlPoint(i, p);
+          profile->SetControlPoint(i, s * p[0], s * p[1]);
+        }
+      }
+      pillar->SetHeight(2 * s);
+      EXPECT_TRUE(RunChecked(vase, r[0], r[1], "vase " + at));
+      EXPECT_TRUE(RunChecked(pillar, r[0], r[1], "pillar " + at));
+    }
+  }
+}
+
+TEST(ParametricSurfaceSource, StressDegenerateShapes)
+{
+  // Zero sizes: no area at all. The frames are arbitrary but finite and unit, with a warning.
+  vtkNew<vtkParametricSphere> point;
+  point->SetRadius(0);
+  vtkNew<vtkParametricCylinder> line;
+  line->SetRadius(0);
+  vtkNew<vtkParametricCylinder> ring;
+  ring->SetHeight(0);
+  vtkNew<vtkParametricDonut> circle;
+  circle->SetCrossSectionRadius(0);
+  vtkNew<vtkParametricDonut> tube; // spindle torus: R < r, self-intersecting, crosses axis
+  tube->SetRingRadius(0.2);
+  tube->SetCrossSectionRadius(1);
+  vtkNew<vtkParametricRectangle> flat;
+  flat->SetPoint2(flat->GetPoint1());
+  for (vtkParametricFunction* f :
+    std::initializer_list<vtkParametricFunction*>{ point, line, ring, circle, tube, flat })
+  {
+    for (int res : { 1, 2, 3, 17 })
+    {
+      auto source = MakeSource(f, res, res);
+      vtkNew<ParametricErrorObserver> observer;
+      observer->Observe(source);
+      source->Update();
+      SCOPED_TRACE(std::string(f->GetClassName()) + " " + std::to_string(res));
+      EXPECT_EQ(observer->ErrorCount, 0);
+      EXPECT_EQ(CountBadFrames(source->GetOutput()), 0);
+      if (f == point.Get())
+      {
+        EXPECT_NE(observer->Warnings.find("no area"), std::string::npos);
+      }
+    }
+  }
+
+  // Profiles: coincident control points (the curve stops), a profile on the axis, a profile
+  // crossing the axis, a fully collapsed profile; arc length on and off.
+  const std::vector<std::vector<std::array<double, 2>>> profiles = {
+    { { 0, 0 }, { 0, 0 }, { 1, 1 }, { 1, 2 } },   // stops at the start, on the axis
+    { { 1, 0 }, { 2, 1 }, { 1, 2 }, { 1, 2 } },   // stops at the end
+    { { 1, 0 }, { 1, 0 }, { 1, 0 }, { 0.5, 1 } }, // three coincident at the start
+    { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 0, 3 } },   // lies on the axis
+    { { -1, 0 }, { 1, 1 }, { -1, 2 }, { 1, 3 } }, // crosses the axis twice
+    { { 1, 1 }, { 1, 1 }, { 1, 1 }, { 1, 1 } },   // a single point
+    { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 1, 1 }, { 1, 1 }, { 0, 1 }, { 0, 2 } }, // stop at join
+  };
+  for (size_t k = 0; k < profiles.size(); ++k)
+  {
+    for (bool arc : { false, true })
+    {
+      vtkNew<vtkParametricRevolution> revolution;
+      vtkNew<vtkParametricExtrusion> extrusion;
+      for (vtkBezierProfile* profile : { revolution->GetProfile(), extrusion->GetProfile() })
+      {
+        profile->RemoveAllControlPoints();
+        for (const auto& p : profiles[k])
+        {
+          profile->AddControlPoint(p[0], p[1]);
+        }
+        profile->SetArcLengthParameterization(arc);
+      }
+      for (int res : { 1, 2, 3, 40 })
+      {
+        for (vtkParametricFunction* f :
+          std::initializer_list<vtkParametricFunction*>{ revolution, extrusion })
+        {
+          auto source = MakeSource(f, res, res);
+          vtkNew<ParametricErrorObserver> observer;
+          observer->Observe(source);
+          source->Update();
+          SCOPED_TRACE(std::string(f->GetClassName()) + " profile " + std::to_string(k) +
+            (arc ? " arc length" : "") + " res " + std::to_string(res));
+          EXPECT_EQ(observer->ErrorCount, 0);
+          EXPECT_EQ(CountBadFrames(source->GetOutput()), 0);
+        }
+      }
+    }
+  }
+}
+
+TEST(ParametricSurfaceSource, StressVTKFunctions)
+{
+  std::vector<vtkSmartPointer<vtkParametricFunction>> functions = {
+    vtkSmartPointer<vtkParametricBohemianDome>::New(), vtkSmartPointer<vtkParametricBoy>::New(),
+    vtkSmartPointer<vtkParametricCrossCap>::New(), vtkSmartPointer<vtkParametricDini>::New(),
+    vtkSmartPointer<vtkParametricEllipsoid>::New(), vtkSmartPointer<vtkParametricEnneper>::New(),
+    vtkSmartPointer<vtkParametricFigure8Klein>::New(), vtkSmartPointer<vtkParametricKlein>::New(),
+    vtkSmartPointer<vtkParametricMobius>::New(), vtkSmartPointer<vtkParametricPseudosphere>::New(),
+    vtkSmartPointer<vtkParametricRoman>::New(), vtkSmartPointer<vtkParametricSuperEllipsoid>::New(),
+    vtkSmartPointer<vtkParametricSuperToroid>::New(), vtkSmartPointer<vtkParametricTorus>::New()
+  };
+  for (auto& f : functions)
+  {
+    for (int res : { 1, 2, 3, 64 })
+    {
+      RunChecked(f, res, res, std::string(f->GetClassName()) + " " + std::to_string(res));
+    }
+  }
+}
