@@ -142,29 +142,37 @@ struct TSpace
   vtkIdType Group = -1;
 };
 
-void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoords, MikkMesh& mesh,
-  std::vector<V3>& rawNormals)
+// Normals are read as they are (the weld compares them so) and normalised after welding.
+void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoords, MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
   mesh.P.resize(n);
   mesh.N.resize(n);
   mesh.T.resize(n);
-  rawNormals.resize(n);
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
         points->GetPoint(i, mesh.P[i].data());
-        normals->GetTuple(i, rawNormals[i].data());
+        normals->GetTuple(i, mesh.N[i].data());
         mesh.T[i] = { tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1) };
-        V3 nn = rawNormals[i];
-        const double len = std::sqrt(Dot(nn, nn));
+      }
+    });
+}
+
+void NormalizeNormals(MikkMesh& mesh)
+{
+  vtkSMPTools::For(0, mesh.NumberOfPoints,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double len = std::sqrt(Dot(mesh.N[i], mesh.N[i]));
         if (len > 0.0 && std::isfinite(len))
         {
-          nn = Scale(1.0 / len, nn);
+          mesh.N[i] = Scale(1.0 / len, mesh.N[i]);
         }
-        mesh.N[i] = nn;
       }
     });
 }
@@ -172,7 +180,7 @@ void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoo
 // MikkTSpace welds corners whose position, normal and texture coordinates are identical,
 // so two input points with the same values are one vertex even if the cells do not share
 // them. Hash, sort (parallel, total order on (hash, id)), then compare within equal hashes.
-void Weld(MikkMesh& mesh, const std::vector<V3>& rawNormals)
+void Weld(MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
   std::vector<std::pair<std::uint64_t, vtkIdType>> keys(n);
@@ -185,7 +193,7 @@ void Weld(MikkMesh& mesh, const std::vector<V3>& rawNormals)
         for (int c = 0; c < 3; ++c)
         {
           h = HashDouble(h, mesh.P[i][c]);
-          h = HashDouble(h, rawNormals[i][c]);
+          h = HashDouble(h, mesh.N[i][c]);
         }
         h = HashDouble(h, mesh.T[i][0]);
         h = HashDouble(h, mesh.T[i][1]);
@@ -207,7 +215,7 @@ void Weld(MikkMesh& mesh, const std::vector<V3>& rawNormals)
     for (vtkIdType j = runStart; j < k; ++j)
     {
       const vtkIdType o = keys[j].second;
-      if (mesh.Weld[o] == o && Equal(mesh.P[i], mesh.P[o]) && Equal(rawNormals[i], rawNormals[o]) &&
+      if (mesh.Weld[o] == o && Equal(mesh.P[i], mesh.P[o]) && Equal(mesh.N[i], mesh.N[o]) &&
         mesh.T[i][0] == mesh.T[o][0] && mesh.T[i][1] == mesh.T[o][1])
       {
         mesh.Weld[i] = o;
@@ -1055,9 +1063,9 @@ int vtkMikkTSpaceTangents::RequestData(
   MikkMesh mesh;
   mesh.NumberOfPoints = nPts;
   {
-    std::vector<V3> rawNormals;
-    ReadAttributes(input->GetPoints(), normals, tcoords, mesh, rawNormals);
-    Weld(mesh, rawNormals);
+    ReadAttributes(input->GetPoints(), normals, tcoords, mesh);
+    Weld(mesh);
+    NormalizeNormals(mesh);
   }
   BuildFaces(input, mesh);
   BuildTriangles(mesh);
@@ -1118,7 +1126,10 @@ int vtkMikkTSpaceTangents::RequestData(
       }
     }
   }
-  std::vector<vtkIdType> cornerPoint(mesh.FacePoints);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(nCorners);
+  vtkIdType* cornerPoint = connectivity->GetPointer(0);
+  std::copy(mesh.FacePoints.begin(), mesh.FacePoints.end(), cornerPoint);
   std::vector<vtkIdType> extraCount(nPts + 1, 0);
   auto sameFrame = [&](vtkIdType a, vtkIdType b) {
     return std::memcmp(cornerTangents[a].data(), cornerTangents[b].data(), 4 * sizeof(float)) == 0;
@@ -1225,11 +1236,9 @@ int vtkMikkTSpaceTangents::RequestData(
   // Cells: vertices and lines as they are; polygons renumbered; strips as triangles.
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(nFaces + 1);
   std::copy(mesh.FaceOffsets.begin(), mesh.FaceOffsets.end(), offsets->GetPointer(0));
-  connectivity->SetNumberOfValues(nCorners);
-  std::copy(cornerPoint.begin(), cornerPoint.end(), connectivity->GetPointer(0));
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
