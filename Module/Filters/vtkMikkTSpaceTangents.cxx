@@ -419,9 +419,16 @@ private:
 
   std::vector<vtkIdType> Good; // good triangles in input order, then the degenerate
   vtkIdType NumberOfGood = 0;
-  std::vector<std::array<vtkIdType, 3>> W; // welded vertex of each corner, by good index
-  std::vector<V3> Os, Ot;                  // per good triangle: directions of dP/ds, dP/dt
-  std::vector<int> Flag;                   // per good triangle
+  // Per good triangle, everything the per-vertex pass reads, together in memory.
+  struct GoodTriangle
+  {
+    std::array<vtkIdType, 3> W;      // welded vertex of each corner
+    std::array<vtkIdType, 3> Corner; // face corner of each corner
+    V3 Os, Ot;                       // directions of dP/ds and dP/dt
+    vtkIdType Face;
+    int Flag;
+  };
+  std::vector<GoodTriangle> Tris;
   std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
   std::array<float, 4>* Tangents = nullptr;            // per face corner
   char* Set = nullptr;                                 // per face corner: Tangents[c] is set
@@ -482,26 +489,28 @@ private:
   {
     const MikkMesh& m = this->Mesh;
     const vtkIdType n = this->NumberOfGood;
-    this->W.resize(n);
-    this->Os.assign(n, V3{ 0.0, 0.0, 0.0 });
-    this->Ot.assign(n, V3{ 0.0, 0.0, 0.0 });
-    this->Flag.resize(n);
+    this->Tris.resize(n);
     vtkSMPTools::For(0, n,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType g = begin; g < end; ++g)
         {
           const vtkIdType t = this->Good[g];
+          GoodTriangle& tri = this->Tris[g];
+          tri.Face = m.TriFace[t];
           for (int k = 0; k < 3; ++k)
           {
-            this->W[g][k] = m.CornerVertex(t, k);
+            tri.W[k] = m.CornerVertex(t, k);
+            tri.Corner[k] = m.FaceCorner(t, k);
           }
-          const V3& v1 = m.P[this->W[g][0]];
-          const V3& v2 = m.P[this->W[g][1]];
-          const V3& v3 = m.P[this->W[g][2]];
-          const auto& t1 = m.T[this->W[g][0]];
-          const auto& t2 = m.T[this->W[g][1]];
-          const auto& t3 = m.T[this->W[g][2]];
+          tri.Os = V3{ 0.0, 0.0, 0.0 };
+          tri.Ot = V3{ 0.0, 0.0, 0.0 };
+          const V3& v1 = m.P[this->Tris[g].W[0]];
+          const V3& v2 = m.P[this->Tris[g].W[1]];
+          const V3& v3 = m.P[this->Tris[g].W[2]];
+          const auto& t1 = m.T[this->Tris[g].W[0]];
+          const auto& t2 = m.T[this->Tris[g].W[1]];
+          const auto& t3 = m.T[this->Tris[g].W[2]];
           const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
           const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
           const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
@@ -534,18 +543,18 @@ private:
             const double sign = area2 > 0.0 ? 1.0 : -1.0;
             if (NotZero(lenOs))
             {
-              this->Os[g] = Scale(sign / lenOs, os);
+              this->Tris[g].Os = Scale(sign / lenOs, os);
             }
             if (NotZero(lenOt))
             {
-              this->Ot[g] = Scale(sign / lenOt, ot);
+              this->Tris[g].Ot = Scale(sign / lenOt, ot);
             }
             if (NotZero(lenOs / absArea) && NotZero(lenOt / absArea))
             {
               flag &= ~GroupWithAny;
             }
           }
-          this->Flag[g] = flag;
+          this->Tris[g].Flag = flag;
         }
       });
   }
@@ -562,15 +571,15 @@ private:
         {
           const vtkIdType a = this->Good[g], b = this->Good[g + 1];
           if (m.TriFace[a] != m.TriFace[b] ||
-            ((this->Flag[g] ^ this->Flag[g + 1]) & OrientPreserving) == 0)
+            ((this->Tris[g].Flag ^ this->Tris[g + 1].Flag) & OrientPreserving) == 0)
           {
             continue;
           }
-          const bool first = (this->Flag[g + 1] & GroupWithAny) != 0 ||
+          const bool first = (this->Tris[g + 1].Flag & GroupWithAny) != 0 ||
             std::abs(TexArea2(m, a)) >= std::abs(TexArea2(m, b));
           const vtkIdType from = first ? g : g + 1, to = first ? g + 1 : g;
-          this->Flag[to] =
-            (this->Flag[to] & ~OrientPreserving) | (this->Flag[from] & OrientPreserving);
+          this->Tris[to].Flag =
+            (this->Tris[to].Flag & ~OrientPreserving) | (this->Tris[from].Flag & OrientPreserving);
         }
       });
   }
@@ -580,9 +589,9 @@ private:
   {
     const vtkIdType nv = this->Mesh.NumberOfPoints;
     this->VertexTriOffsets.assign(nv + 1, 0);
-    for (const auto& w : this->W)
+    for (const auto& tri : this->Tris)
     {
-      for (vtkIdType v : w)
+      for (vtkIdType v : tri.W)
       {
         ++this->VertexTriOffsets[v + 1];
       }
@@ -595,7 +604,7 @@ private:
     std::vector<vtkIdType> fill(this->VertexTriOffsets.begin(), this->VertexTriOffsets.end() - 1);
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
     {
-      for (vtkIdType v : this->W[g])
+      for (vtkIdType v : this->Tris[g].W)
       {
         this->VertexTris[fill[v]++] = g;
       }
@@ -632,7 +641,7 @@ private:
     fan.In.assign(k, -1);
     for (size_t a = 0; a < k; ++a)
     {
-      const auto& w = this->W[fan.Tri[a]];
+      const auto& w = this->Tris[fan.Tri[a]].W;
       const int i = CornerOf(w, v);
       fan.Corner[a] = i;
       fan.Next[a] = w[i < 2 ? i + 1 : 0];
@@ -659,7 +668,7 @@ private:
     }
   }
 
-  bool Orient(vtkIdType t) const { return (this->Flag[t] & OrientPreserving) != 0; }
+  bool Orient(vtkIdType t) const { return (this->Tris[t].Flag & OrientPreserving) != 0; }
 
   // A triangle without usable texture derivatives takes the orientation of the first group
   // that reaches it, at any of its vertices: the reference's one order dependency. Replay
@@ -674,10 +683,10 @@ private:
     bool any = false;
     for (vtkIdType g = 0; g < n; ++g)
     {
-      if (this->Flag[g] & GroupWithAny)
+      if (this->Tris[g].Flag & GroupWithAny)
       {
         any = true;
-        for (vtkIdType v : this->W[g])
+        for (vtkIdType v : this->Tris[g].W)
         {
           anyVertex[v] = 1;
         }
@@ -694,8 +703,8 @@ private:
     {
       for (int i = 0; i < 3; ++i)
       {
-        const vtkIdType v = this->W[g][i];
-        if (!anyVertex[v] || (this->Flag[g] & GroupWithAny) || assigned[3 * g + i])
+        const vtkIdType v = this->Tris[g].W[i];
+        if (!anyVertex[v] || (this->Tris[g].Flag & GroupWithAny) || assigned[3 * g + i])
         {
           continue;
         }
@@ -713,10 +722,11 @@ private:
           {
             continue;
           }
-          if ((this->Flag[t] & GroupWithAny) && !assigned[3 * t] && !assigned[3 * t + 1] &&
+          if ((this->Tris[t].Flag & GroupWithAny) && !assigned[3 * t] && !assigned[3 * t + 1] &&
             !assigned[3 * t + 2])
           {
-            this->Flag[t] = (this->Flag[t] & ~OrientPreserving) | (orient ? OrientPreserving : 0);
+            this->Tris[t].Flag =
+              (this->Tris[t].Flag & ~OrientPreserving) | (orient ? OrientPreserving : 0);
           }
           if (this->Orient(t) != orient)
           {
@@ -790,10 +800,10 @@ private:
           for (size_t a = 0; a < k; ++a)
           {
             const vtkIdType t = fan.Tri[a];
-            face[a] = m.TriFace[this->Good[t]];
-            os[a] = ProjectNormalize(this->Os[t], n);
-            ot[a] = ProjectNormalize(this->Ot[t], n);
-            contributes[a] = (this->Flag[t] & GroupWithAny) == 0;
+            face[a] = this->Tris[t].Face;
+            os[a] = ProjectNormalize(this->Tris[t].Os, n);
+            ot[a] = ProjectNormalize(this->Tris[t].Ot, n);
+            contributes[a] = (this->Tris[t].Flag & GroupWithAny) == 0;
             if (contributes[a])
             {
               const V3 e1 = ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
@@ -885,8 +895,7 @@ private:
               }
               // A quad's diagonal corner gets a space from each of its triangles: the
               // reference averages them unless equal; the later group's orientation wins.
-              const vtkIdType c =
-                m.FaceOffsets[face[f]] + m.TriVert[this->Good[fan.Tri[f]]][fan.Corner[f]];
+              const vtkIdType c = this->Tris[fan.Tri[f]].Corner[fan.Corner[f]];
               auto same = std::find_if(written.begin(), written.end(),
                 [c](const std::pair<vtkIdType, TSpace>& e) { return e.first == c; });
               if (same == written.end())
@@ -937,7 +946,7 @@ private:
           continue;
         }
         const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
-        const vtkIdType src = m.FaceCorner(this->Good[g], CornerOf(this->W[g], v));
+        const vtkIdType src = this->Tris[g].Corner[CornerOf(this->Tris[g].W, v)];
         const vtkIdType dst = m.FaceCorner(t, k);
         this->Tangents[dst] = this->Tangents[src];
         this->Set[dst] = this->Set[src];
