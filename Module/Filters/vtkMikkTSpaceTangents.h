@@ -26,21 +26,25 @@
  *
  * The output is the input surface with a 4-component float point array "Tangents"
  * (xyz, w). VTK 9.1's point data takes only 3-component tangent attributes, so it is a
- * named array (GetPointData()->GetArray("Tangents")), as vtkParametricSurfaceSource's. A point
- * whose corners get different frames (a mirrored texture shell, or faces around it that MikkTSpace
- * does not join) is split: the first frame keeps the point, every other frame gets a new point
- * appended after the input's points, with all point data copied; the polygons are renumbered
- * accordingly. Points whose texture coordinates already differ across a seam are separate points in
- * the input and stay so.
+ * named array (GetPointData()->GetArray("Tangents")), as vtkParametricSurfaceSource's.
+ * A point whose corners get different frames (a mirrored texture shell, or faces around
+ * it that MikkTSpace does not join) is split: the first frame keeps the point, every
+ * other frame gets a new point appended after the input's points, with all point data
+ * copied, and the polygons are renumbered. Points whose texture coordinates differ across
+ * a seam are separate points in the input already and stay so.
  *
  * Differences from the reference implementation, all on input it handles badly:
  * normals are normalised before use (the reference assumes unit normals); corners for
- * which the reference returns a zero or arbitrary vector (degenerate texture mapping with
- * no usable neighbour, non-finite coordinates) get a unit tangent orthogonal to the
- * normal, so the output is always finite and unit length. Missing normals are computed
- * with vtkPolyDataNormals (no splitting, no reordering), with a warning.
+ * which the reference returns a zero vector or its (1, 0, 0) placeholder (no usable
+ * texture derivatives around them, non-finite coordinates) get that placeholder made
+ * orthogonal to the normal, or any unit vector orthogonal to it, so the output is always
+ * finite and unit length. Missing normals are computed with vtkPolyDataNormals (no
+ * splitting, no reordering), with a warning.
  *
- * Arithmetic is in double precision; the result does not depend on the number of threads.
+ * Arithmetic is in double precision. Where the reference's single precision cancels a
+ * sliver's dP/ds or dP/dt to zero (a texture edge along a position edge shorter than the
+ * rounding of the others), the filter also treats it as zero, rather than as a direction
+ * made of rounding noise. The result does not depend on the number of threads.
  *
  * @sa vtkPolyDataTangents vtkPolyDataNormals
  */
