@@ -48,7 +48,8 @@ struct Grid
   vtkIdType Row0 = 0;    // first point row of this piece
   vtkIdType NumRows = 0; // point rows in this piece
   double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
-  double Orientation = 1.0; // +1: N = Du x Dv; -1: N = Dv x Du
+  double Orientation = 1.0;   // +1: N = Du x Dv; -1: N = Dv x Du
+  bool HasDerivatives = true; // false: differences of the function's points
   double InvRepeat[2] = { 1.0, 1.0 };
   double TangentSign = 1.0;             // sign of the s repeat
   double Handedness = 1.0;              // w wherever Du x Dv is regular
@@ -69,6 +70,12 @@ struct Grid
     double uvw[3] = { u, v, 0.0 };
     double d[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
     this->Function->Evaluate(uvw, p, d);
+    if (!this->HasDerivatives)
+    {
+      this->Difference(0, (u - this->UMin) / this->UExtent, (v - this->VMin) / this->VExtent, du);
+      this->Difference(1, (u - this->UMin) / this->UExtent, (v - this->VMin) / this->VExtent, dv);
+      return;
+    }
     for (int k = 0; k < 3; ++k)
     {
       du[k] = d[k] * this->UExtent;
@@ -76,22 +83,91 @@ struct Grid
     }
   }
 
-  // The function at grid column col and row j, from the cached terms when it is separable.
-  void EvaluateGrid(vtkIdType col, vtkIdType j, double p[3], double du[3], double dv[3]) const
+  /**
+   * For functions without derivatives (DerivativesAvailable off): the unit-square derivative
+   * along @a axis at unit parameters (u, v) by fourth-order differences, central inside the
+   * domain and one-sided within two steps of its edge, so the function is never evaluated
+   * outside its domain. Truncation O(h^4) and rounding O(eps/h) balance near h = 1e-3.
+   */
+  void Difference(int axis, double u, double v, double out[3]) const
   {
-    if (!this->Separable)
+    constexpr double h = 1e-3;
+    auto at = [&](double offset, double p[3])
     {
-      this->Evaluate(this->UDomain[col], this->VDomain[j], p, du, dv);
+      double uvw[3] = { this->ToDomainU(axis == 0 ? u + offset : u),
+        this->ToDomainV(axis == 1 ? v + offset : v), 0.0 };
+      double d[9];
+      this->Function->Evaluate(uvw, p, d);
+    };
+    const double x = axis == 0 ? u : v;
+    double a[3], b[3], c[3], e[3];
+    if (x - 2 * h >= 0.0 && x + 2 * h <= 1.0)
+    {
+      at(2 * h, a);
+      at(h, b);
+      at(-h, c);
+      at(-2 * h, e);
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = (-a[k] + 8 * b[k] - 8 * c[k] + e[k]) / (12 * h);
+      }
       return;
     }
-    double d[9];
-    this->Separable->EvaluateTerms(
-      this->UTerms.data() + col * this->NumUTerms, this->VTerms.data() + j * this->NumVTerms, p, d);
+    const double step = x + 4 * h <= 1.0 ? h : -h;
+    double f0[3];
+    at(0, f0);
+    at(step, a);
+    at(2 * step, b);
+    at(3 * step, c);
+    at(4 * step, e);
     for (int k = 0; k < 3; ++k)
     {
-      du[k] = d[k] * this->UExtent;
-      dv[k] = d[3 + k] * this->VExtent;
+      out[k] = (-25 * f0[k] + 48 * a[k] - 36 * b[k] + 16 * c[k] - 3 * e[k]) / (12 * step);
     }
+  }
+
+  /**
+   * The function at @a count consecutive columns from @a col of row @a j: points in P (3 per
+   * point) and derivatives in D (9 per point, Duvw's layout) which, multiplied by
+   * DerivativeScale, are unit-square derivatives. Separable functions use the cached terms.
+   * A block is evaluated before any of it is read back, so that reading does not wait on
+   * the stores the function has just made (a 16-byte load of two 8-byte stores cannot be
+   * forwarded).
+   */
+  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* P, double* D) const
+  {
+    if (this->Separable)
+    {
+      const double* vTerms = this->VTerms.data() + j * this->NumVTerms;
+      const double* uTerms = this->UTerms.data() + col * this->NumUTerms;
+      for (int k = 0; k < count; ++k)
+      {
+        this->Separable->EvaluateTerms(uTerms + k * this->NumUTerms, vTerms, P + 3 * k, D + 9 * k);
+      }
+    }
+    else if (this->HasDerivatives)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        double uvw[3] = { this->UDomain[col + k], this->VDomain[j], 0.0 };
+        this->Function->Evaluate(uvw, P + 3 * k, D + 9 * k);
+      }
+    }
+    else
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        this->Evaluate(
+          this->UDomain[col + k], this->VDomain[j], P + 3 * k, D + 9 * k, D + 9 * k + 3);
+      }
+    }
+  }
+
+  // Factors from the derivatives EvaluateBlock gives to unit-square derivatives.
+  double DerivativeScale(int axis) const
+  {
+    return (this->Separable || this->HasDerivatives) ? (axis == 0 ? this->UExtent : this->VExtent)
+                                                     : 1.0;
   }
 
   // Unit-square derivatives only, at unit-square parameters (clamped to the domain).
@@ -257,11 +333,26 @@ struct PointWorker
     vtkIdType& arbitrary = this->Arbitrary.Local();
     bool finite = true;
     const bool frame = this->Normals || this->Tangents;
+    const double scaleU = g.DerivativeScale(0), scaleV = g.DerivativeScale(1);
+    constexpr int BlockSize = 64;
+    double blockP[3 * BlockSize];
+    double blockD[9 * BlockSize];
+    int inBlock = 0, blockLength = 0;
     for (vtkIdType id = begin; id < end; ++id)
     {
       const vtkIdType j = g.Row0 + row;
-      double p[3], du[3], dv[3];
-      g.EvaluateGrid(col, j, p, du, dv);
+      if (inBlock == blockLength)
+      {
+        blockLength =
+          static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
+        g.EvaluateBlock(col, j, blockLength, blockP, blockD);
+        inBlock = 0;
+      }
+      const double* p = blockP + 3 * inBlock;
+      const double* d = blockD + 9 * inBlock;
+      ++inBlock;
+      const double du[3] = { d[0] * scaleU, d[1] * scaleU, d[2] * scaleU };
+      const double dv[3] = { d[3] * scaleV, d[4] * scaleV, d[5] * scaleV };
       finite = finite && std::isfinite(p[0] + p[1] + p[2]) &&
         std::isfinite(du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2]);
       Real* pt = this->Points + 3 * id;
@@ -576,6 +667,7 @@ int vtkParametricSurfaceSource::RequestData(
   g.VMin = vmin;
   g.VExtent = vmax - vmin;
   g.Orientation = function->GetClockwiseOrdering() ? 1.0 : -1.0;
+  g.HasDerivatives = function->GetDerivativesAvailable() != 0;
   g.InvRepeat[0] = 1.0 / this->TextureRepeat[0];
   g.InvRepeat[1] = 1.0 / this->TextureRepeat[1];
   g.TangentSign = this->TextureRepeat[0] < 0.0 ? -1.0 : 1.0;

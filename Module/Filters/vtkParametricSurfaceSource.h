@@ -27,6 +27,13 @@
  * - "dPdu", "dPdv" (GenerateDerivatives): the raw derivatives with respect to the
  *   unit-square parameters (the function's own derivatives times the extent of its domain).
  *
+ * Functions whose DerivativesAvailable is off (vtkParametricSuperEllipsoid,
+ * vtkParametricSuperToroid, vtkParametricRandomHills) get fourth-order finite differences of
+ * their points instead, accurate to about 1e-9 relative; the orientation rule is the same,
+ * so vtkParametricRandomHills (ClockwiseOrdering off) faces -z unless ClockwiseOrdering is
+ * turned on. Functions derived from vtkParametricSeparableFunction (all of SurfaceDetail's)
+ * have their per-column and per-row work done once per column and row.
+ *
  * Degenerate points, where Du or Dv vanishes (a sphere's poles, the axis of a surface of
  * revolution) or where they are parallel, get the limit of the normal and tangent from the
  * surrounding surface: the vanishing derivative is replaced by its one-sided derivative

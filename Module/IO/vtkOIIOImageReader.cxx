@@ -5,11 +5,9 @@
 #include "vtkImageData.h"
 #include "vtkImageReader2Collection.h"
 #include "vtkImageReader2Factory.h"
-#include "vtkInformation.h"
+#include "vtkOIIOUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSmartPointer.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -27,68 +25,9 @@ vtkStandardNewMacro(vtkOIIOImageReader);
 
 namespace
 {
-/// The VTK scalar type that holds a channel of type @a t without loss, or -1.
-int VTKTypeOf(OIIO::TypeDesc t)
-{
-  switch (t.basetype)
-  {
-    case OIIO::TypeDesc::UINT8:
-      return VTK_UNSIGNED_CHAR;
-    case OIIO::TypeDesc::INT8:
-      return VTK_SIGNED_CHAR;
-    case OIIO::TypeDesc::UINT16:
-      return VTK_UNSIGNED_SHORT;
-    case OIIO::TypeDesc::INT16:
-      return VTK_SHORT;
-    case OIIO::TypeDesc::UINT32:
-      return VTK_UNSIGNED_INT;
-    case OIIO::TypeDesc::INT32:
-      return VTK_INT;
-    case OIIO::TypeDesc::HALF: // VTK has no half type; float holds every half exactly.
-    case OIIO::TypeDesc::FLOAT:
-      return VTK_FLOAT;
-    case OIIO::TypeDesc::DOUBLE:
-      return VTK_DOUBLE;
-    default:
-      return -1;
-  }
-}
-
-/// The OIIO type matching VTK scalar type @a vtkType (which VTKTypeOf produced).
-OIIO::TypeDesc OIIOTypeOf(int vtkType)
-{
-  switch (vtkType)
-  {
-    case VTK_UNSIGNED_CHAR:
-      return OIIO::TypeDesc::UINT8;
-    case VTK_SIGNED_CHAR:
-      return OIIO::TypeDesc::INT8;
-    case VTK_UNSIGNED_SHORT:
-      return OIIO::TypeDesc::UINT16;
-    case VTK_SHORT:
-      return OIIO::TypeDesc::INT16;
-    case VTK_UNSIGNED_INT:
-      return OIIO::TypeDesc::UINT32;
-    case VTK_INT:
-      return OIIO::TypeDesc::INT32;
-    case VTK_DOUBLE:
-      return OIIO::TypeDesc::DOUBLE;
-    default:
-      return OIIO::TypeDesc::FLOAT;
-  }
-}
-
-/// OIIO's pending error text (clearing it, so the next call starts clean).
-std::string OIIOError(const OIIO::ImageInput* in)
-{
-  std::string reason = in ? in->geterror() : std::string();
-  const std::string global = OIIO::geterror();
-  if (reason.empty())
-  {
-    reason = global;
-  }
-  return reason.empty() ? std::string("no reason given") : reason;
-}
+using vtkOIIOUtilities::OIIOError;
+using vtkOIIOUtilities::OIIOTypeOf;
+using vtkOIIOUtilities::VTKTypeOf;
 
 /// Why a vtkImageData cannot hold @a spec's image, or empty if it can.
 std::string LayoutProblem(const OIIO::ImageSpec& spec)
@@ -181,7 +120,7 @@ int vtkOIIOImageReader::CanReadFile(const char* fname)
     auto in = OpenInput(fname);
     if (!in)
     {
-      OIIOError(nullptr);
+      OIIOError();
       return 0;
     }
     const bool fits = LayoutProblem(in->spec()).empty();
@@ -254,7 +193,7 @@ void vtkOIIOImageReader::ExecuteInformation()
     auto in = OpenInput(path);
     if (!in)
     {
-      const std::string reason = OIIOError(nullptr);
+      const std::string reason = OIIOError();
       if (!vtksys::SystemTools::FileExists(path))
       {
         this->Fail(vtkErrorCode::FileNotFoundError, "Cannot read '" + path + "': no such file.");
@@ -319,7 +258,7 @@ void vtkOIIOImageReader::ExecuteDataWithInformation(vtkDataObject* output, vtkIn
     if (!in)
     {
       this->Fail(vtkErrorCode::CannotOpenFileError,
-        "Cannot read '" + path + "': OpenImageIO could not open it: " + OIIOError(nullptr));
+        "Cannot read '" + path + "': OpenImageIO could not open it: " + OIIOError());
       return;
     }
     const OIIO::ImageSpec& spec = in->spec();
@@ -340,6 +279,8 @@ void vtkOIIOImageReader::ExecuteDataWithInformation(vtkDataObject* output, vtkIn
     const OIIO::stride_t rowBytes = pixelBytes * spec.width;
     const bool whole = extent[0] == 0 && extent[1] == spec.width - 1 && extent[2] == 0 &&
       extent[3] == spec.height - 1;
+    // A smaller update extent is cut from the whole picture: read_image() serves scanline
+    // and tiled files alike, and textures are small enough to read whole.
     std::vector<unsigned char> buffer;
     unsigned char* destination = static_cast<unsigned char*>(data->GetScalarPointer());
     if (!whole)

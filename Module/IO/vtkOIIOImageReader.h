@@ -26,7 +26,8 @@
  * readers lack (EXR, HDR, ...). VTK's readers are asked first, so PNG or JPEG still go to
  * vtkPNGReader or vtkJPEGReader from the factory; instantiate this class to use OpenImageIO
  * for them too. RegisterWithImageReader2Factory() does the registration explicitly and may
- * be called any number of times.
+ * be called any number of times; a program linking SurfaceDetailIO as a static library must
+ * call it, since there the load-time registration runs only if the linker keeps this class.
  *
  * @sa vtkOIIOImageWriter vtkImageReader2Factory vtkPNGReader
  */

@@ -5,6 +5,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkOIIOUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -20,47 +21,8 @@
 
 vtkStandardNewMacro(vtkOIIOImageWriter);
 
-namespace
-{
-/// The OIIO type of VTK scalar type @a vtkType, or UNKNOWN if OIIO has none.
-OIIO::TypeDesc OIIOTypeOf(int vtkType)
-{
-  switch (vtkType)
-  {
-    case VTK_UNSIGNED_CHAR:
-      return OIIO::TypeDesc::UINT8;
-    case VTK_SIGNED_CHAR:
-    case VTK_CHAR:
-      return OIIO::TypeDesc::INT8;
-    case VTK_UNSIGNED_SHORT:
-      return OIIO::TypeDesc::UINT16;
-    case VTK_SHORT:
-      return OIIO::TypeDesc::INT16;
-    case VTK_UNSIGNED_INT:
-      return OIIO::TypeDesc::UINT32;
-    case VTK_INT:
-      return OIIO::TypeDesc::INT32;
-    case VTK_FLOAT:
-      return OIIO::TypeDesc::FLOAT;
-    case VTK_DOUBLE:
-      return OIIO::TypeDesc::DOUBLE;
-    default:
-      return OIIO::TypeDesc::UNKNOWN;
-  }
-}
-
-/// OIIO's pending error text (clearing it, so the next call starts clean).
-std::string OIIOError(const OIIO::ImageOutput* out)
-{
-  std::string reason = out ? out->geterror() : std::string();
-  const std::string global = OIIO::geterror();
-  if (reason.empty())
-  {
-    reason = global;
-  }
-  return reason.empty() ? std::string("no reason given") : reason;
-}
-}
+using vtkOIIOUtilities::OIIOError;
+using vtkOIIOUtilities::OIIOTypeOf;
 
 //------------------------------------------------------------------------------
 vtkOIIOImageWriter::vtkOIIOImageWriter()
@@ -179,22 +141,27 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
     memoryType == OIIO::TypeDesc::FLOAT && this->FloatPrecision == Half ? OIIO::TypeDesc::HALF
                                                                         : memoryType;
 
+  // Until open() succeeds, whatever is at path is the user's and must survive a failure;
+  // after it, the file is this writer's partial output and is removed.
+  bool opened = false;
   try
   {
     auto out = OIIO::ImageOutput::create(path);
     if (!out)
     {
       return fail(vtkErrorCode::UnrecognizedFileTypeError,
-        "OpenImageIO has no writer for this file name's extension: " + OIIOError(nullptr));
+        "OpenImageIO has no writer for this file name's extension: " + OIIOError());
     }
     OIIO::ImageSpec spec(width, height, components, fileType);
     // VTK images carry straight (unassociated) alpha: say so, so that OIIO stores the
     // values as they are rather than un-premultiplying them.
     spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("png:compressionLevel", this->CompressionLevel);
     if (!out->open(path, spec))
     {
       return fail(vtkErrorCode::CannotOpenFileError, OIIOError(out.get()));
     }
+    opened = true;
     if (out->spec().format != fileType)
     {
       vtkWarningMacro(<< "'" << path << "' (" << out->format_name() << ") cannot hold "
@@ -222,7 +189,10 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* image)
   }
   catch (const std::exception& e)
   {
-    vtksys::SystemTools::RemoveFile(path);
+    if (opened)
+    {
+      vtksys::SystemTools::RemoveFile(path);
+    }
     return fail(vtkErrorCode::UnknownError, std::string("OpenImageIO failed: ") + e.what());
   }
   return true;
@@ -233,4 +203,5 @@ void vtkOIIOImageWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FloatPrecision: " << this->GetFloatPrecisionAsString() << "\n";
+  os << indent << "CompressionLevel: " << this->CompressionLevel << "\n";
 }

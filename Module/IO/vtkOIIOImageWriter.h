@@ -54,6 +54,15 @@ public:
   const char* GetFloatPrecisionAsString() const;
   ///@}
 
+  ///@{
+  /**
+   * zlib compression level for PNG files, 0 (none, fastest) to 9 (smallest, slowest);
+   * default 5, as vtkPNGWriter. Other formats ignore it.
+   */
+  vtkSetClampMacro(CompressionLevel, int, 0, 9);
+  vtkGetMacro(CompressionLevel, int);
+  ///@}
+
   /**
    * Writes the input's whole extent to FileName.
    */
@@ -67,6 +76,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int FloatPrecision = Single;
+  int CompressionLevel = 5;
 
 private:
   vtkOIIOImageWriter(const vtkOIIOImageWriter&) = delete;

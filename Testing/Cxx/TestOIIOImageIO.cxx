@@ -27,9 +27,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -301,11 +304,14 @@ TEST(TestOIIOImageIO, ReadsJPEGFromCjpegUpright)
     }
   }
   vtksys::SystemTools::RemoveFile(jpg);
-  const std::string command = "cjpeg -quality 95 -outfile '" + jpg + "' '" + ppm + "'";
-  if (std::system(command.c_str()) != 0)
-  {
-    GTEST_SKIP() << "cjpeg (libjpeg-turbo-progs) is missing; scripts/install-deps.sh installs it";
-  }
+  // A hard failure, not a skip: ctest counts a skipped gtest as passed, and the JPEG path
+  // would then go unchecked without anyone noticing.
+  const std::string cjpeg = vtksys::SystemTools::FindProgram("cjpeg");
+  ASSERT_FALSE(cjpeg.empty())
+    << "cjpeg (Debian package libjpeg-turbo-progs) is not on the PATH: run "
+       "scripts/install-deps.sh";
+  const std::string command = "'" + cjpeg + "' -quality 95 -outfile '" + jpg + "' '" + ppm + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
 
   vtkNew<vtkOIIOImageReader> reader;
   reader->SetFileName(jpg.c_str());
@@ -424,6 +430,7 @@ TEST(TestOIIOImageIO, PrintSelf)
   writer->Print(text);
   EXPECT_NE(text.str().find("ColorSpace"), std::string::npos);
   EXPECT_NE(text.str().find("FloatPrecision: Half"), std::string::npos);
+  EXPECT_NE(text.str().find("CompressionLevel: 5"), std::string::npos);
 }
 
 TEST(TestOIIOImageIO, ReaderRejectsMissingFile)
@@ -548,6 +555,61 @@ TEST(TestOIIOImageIO, WriterRejectsUnsupportedType)
   ExpectWriteFails(image, TempPath("longlong.tif"), "scalar type");
 }
 
+// A write that fails before the writer has opened the file must leave a file already at
+// that path as it was: it is the user's, not a partial file of the writer's.
+TEST(TestOIIOImageIO, WriterFailingBeforeOpenKeepsExistingFile)
+{
+  const std::string original = "the user's file, not an image";
+  auto makeExisting = [&original](const std::string& path)
+  {
+    std::ofstream(path, std::ios::binary) << original;
+    return path;
+  };
+  auto contents = [](const std::string& path)
+  {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  };
+  auto fiveComponents = RandomImage(VTK_UNSIGNED_CHAR, 5, 4, 4, 1u);
+  auto rgb = RandomImage(VTK_UNSIGNED_CHAR, 3, 4, 4, 1u);
+
+  // Layouts rejected before OpenImageIO is asked, and an extension it has no writer for.
+  const std::string rejected = makeExisting(TempPath("existing_five.png"));
+  const std::string unknown = makeExisting(TempPath("existing.notaformat"));
+  for (const auto& job :
+    { std::make_pair(fiveComponents.Get(), rejected), std::make_pair(rgb.Get(), unknown) })
+  {
+    vtkNew<vtkOIIOImageWriter> writer;
+    vtkNew<ErrorObserver> observer;
+    writer->AddObserver(vtkCommand::ErrorEvent, observer);
+    writer->SetInputData(job.first);
+    writer->SetFileName(job.second.c_str());
+    writer->Write();
+    EXPECT_EQ(observer->Errors, 1) << job.second;
+    EXPECT_NE(writer->GetErrorCode(), vtkErrorCode::NoError);
+    EXPECT_EQ(contents(job.second), original) << job.second;
+  }
+
+  // An exception before open() (here from an ErrorEvent observer that throws, as
+  // applications that turn VTK errors into exceptions have) must not delete the file either.
+  class ThrowingObserver : public vtkCommand
+  {
+  public:
+    static ThrowingObserver* New() { return new ThrowingObserver; }
+    void Execute(vtkObject*, unsigned long, void*) override
+    {
+      throw std::runtime_error("error turned into an exception");
+    }
+  };
+  vtkNew<vtkOIIOImageWriter> writer;
+  vtkNew<ThrowingObserver> thrower;
+  writer->AddObserver(vtkCommand::ErrorEvent, thrower);
+  writer->SetInputData(rgb);
+  writer->SetFileName(unknown.c_str());
+  EXPECT_THROW(writer->Write(), std::runtime_error);
+  EXPECT_EQ(contents(unknown), original);
+}
+
 TEST(TestOIIOImageIO, WriterWithoutInputOrFileName)
 {
   vtkNew<vtkOIIOImageWriter> writer;
@@ -606,4 +668,29 @@ TEST(TestOIIOImageIO, WriterWarnsWhenFormatCannotHoldType)
   writer->SetFileName(TempPath("float.exr").c_str());
   writer->Write();
   EXPECT_EQ(observer->Warnings, 0) << observer->Message;
+}
+
+// The level reaches zlib: no compression makes a larger file than the strongest, and both
+// hold the same pixels.
+TEST(TestOIIOImageIO, WriterCompressionLevel)
+{
+  auto image = RandomImage(VTK_UNSIGNED_CHAR, 3, 64, 64, 6u);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+  {
+    values->SetVariantValue(i, (i / 97) % 256); // Compressible.
+  }
+  std::vector<unsigned long> sizes;
+  for (int level : { 0, 9 })
+  {
+    vtkNew<vtkOIIOImageWriter> writer;
+    writer->SetInputData(image);
+    writer->SetCompressionLevel(level);
+    const std::string path = TempPath("level" + std::to_string(level) + ".png");
+    writer->SetFileName(path.c_str());
+    writer->Write();
+    ExpectIdentical(image, Read(path));
+    sizes.push_back(vtksys::SystemTools::FileLength(path));
+  }
+  EXPECT_GT(sizes[0], 2 * sizes[1]);
 }

@@ -19,6 +19,7 @@
 #include <vtkParametricRectangle.h>
 #include <vtkParametricRevolution.h>
 #include <vtkParametricSphere.h>
+#include <vtkParametricSuperEllipsoid.h>
 #include <vtkParametricSurfaceSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPointData.h>
@@ -412,6 +413,39 @@ TEST(ParametricSurfaceAccuracy, VTKEllipsoidIsOutwardWithPoleLimits)
   }
 }
 
+TEST(ParametricSurfaceAccuracy, VTKFunctionWithoutDerivativesUsesDifferences)
+{
+  // vtkParametricSuperEllipsoid has no derivatives (DerivativesAvailable off); with both
+  // exponents 1 it is the ellipsoid x = a cos v sin u, y = b cos v cos u, z = c sin v.
+  vtkNew<vtkParametricSuperEllipsoid> superEllipsoid;
+  ASSERT_EQ(superEllipsoid->GetDerivativesAvailable(), 0);
+  superEllipsoid->SetN1(1);
+  superEllipsoid->SetN2(1);
+  superEllipsoid->SetXRadius(1);
+  superEllipsoid->SetYRadius(2);
+  superEllipsoid->SetZRadius(3);
+  Expectation e;
+  e.Surface = [](double s, double t) -> Vec
+  {
+    const double u = -Pi + 2 * Pi * s, v = -Pi / 2 + Pi * t;
+    return { std::cos(v) * std::sin(u), 2 * std::cos(v) * std::cos(u), 3 * std::sin(v) };
+  };
+  e.Length = 3;
+  e.Orientation = -1;
+  e.PositionTolerance = 1e-15;
+  const int U = 24, V = 12;
+  EXPECT_EQ(CheckAgainstClosedForm(superEllipsoid, U, V, e), (U + 1) * (V - 1));
+  vtkSmartPointer<vtkPolyData> out = Generate(superEllipsoid, U, V, e);
+  for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+  {
+    const Vec p = Tuple(out->GetPoints()->GetData(), id);
+    const Vec grad = { 2 * p[0], p[1] / 2, 2 * p[2] / 9 }; // outward
+    EXPECT_LT(Angle(Tuple(out->GetPointData()->GetNormals(), id), grad),
+      id <= U || id >= V * (U + 1) ? 1e-4 : 1e-6)
+      << "point " << id;
+  }
+}
+
 TEST(ParametricSurfaceAccuracy, SinglePrecisionPointsRoundOnce)
 {
   vtkNew<vtkParametricSphere> sphere;
@@ -709,5 +743,83 @@ TEST(ParametricSurfaceAccuracy, LovePillarMatchesSeed004Extrusion)
     EXPECT_NEAR(n[1], 0, 1e-7);
     EXPECT_FALSE(inside(p[0] + 0.01 * n[0], p[2] + 0.01 * n[2])) << "column " << i;
     EXPECT_TRUE(inside(p[0] - 0.01 * n[0], p[2] - 0.01 * n[2])) << "column " << i;
+  }
+}
+
+TEST(ParametricSurfaceAccuracy, BezierProfileBadInput)
+{
+  vtkNew<vtkBezierProfile> profile;
+  vtkNew<ParametricErrorObserver> observer;
+  observer->Observe(profile);
+  double p[2] = { 7, 7 }, d1[2] = { 7, 7 }, d2[2] = { 7, 7 };
+  // Empty, then 5 points (not 3k+1): not evaluable, zeros, no length.
+  for (int n : { 0, 5 })
+  {
+    profile->RemoveAllControlPoints();
+    for (int i = 0; i < n; ++i)
+    {
+      profile->AddControlPoint(i, i);
+    }
+    std::string reason;
+    EXPECT_FALSE(profile->IsValid(&reason));
+    EXPECT_NE(reason.find("3k+1"), std::string::npos);
+    EXPECT_EQ(profile->GetNumberOfSegments(), 0);
+    EXPECT_FALSE(profile->Evaluate(0.5, p, d1, d2));
+    EXPECT_EQ(p[0], 0.0);
+    EXPECT_EQ(d1[1], 0.0);
+    EXPECT_EQ(d2[0], 0.0);
+    EXPECT_EQ(profile->GetLength(), 0.0);
+  }
+  // Out-of-range control point indices are errors that change nothing.
+  profile->RemoveAllControlPoints();
+  profile->SetToVase();
+  const vtkMTimeType before = profile->GetMTime();
+  profile->SetControlPoint(10, 1, 1);
+  profile->GetControlPoint(-1, p);
+  EXPECT_EQ(observer->ErrorCount, 2);
+  EXPECT_NE(observer->Errors.find("does not exist"), std::string::npos);
+  EXPECT_EQ(profile->GetMTime(), before);
+  EXPECT_EQ(profile->GetNumberOfControlPoints(), 10);
+  // Parameters outside [0,1] are clamped to the ends; NaN is refused.
+  profile->Evaluate(-3, p, nullptr, nullptr);
+  EXPECT_EQ(p[0], 0.0);
+  EXPECT_EQ(p[1], 0.0);
+  profile->Evaluate(3, p, nullptr, nullptr);
+  EXPECT_EQ(p[0], 0.5);
+  EXPECT_EQ(p[1], 2.0);
+  EXPECT_FALSE(profile->Evaluate(vtkMath::Nan(), p, nullptr, nullptr));
+  std::ostringstream printed;
+  profile->Print(printed);
+  EXPECT_NE(printed.str().find("NumberOfControlPoints: 10"), std::string::npos);
+}
+
+TEST(ParametricSurfaceAccuracy, ConeApexTakesEachColumnsLimit)
+{
+  // A cone rising from (r, y) = (1, 0) to its apex (0, 1). Along column theta the surface
+  // normal is (cos theta, 1, -sin theta)/sqrt(2) everywhere, so at the apex, where Du
+  // vanishes, the limit differs per column; the tangent there is (-sin theta, 0, -cos theta).
+  vtkNew<vtkParametricRevolution> cone;
+  vtkBezierProfile* profile = cone->GetProfile();
+  profile->RemoveAllControlPoints();
+  profile->AddControlPoint(1, 0);
+  profile->AddControlPoint(2.0 / 3, 1.0 / 3);
+  profile->AddControlPoint(1.0 / 3, 2.0 / 3);
+  profile->AddControlPoint(0, 1);
+  Expectation e;
+  const int U = 12, V = 4;
+  vtkSmartPointer<vtkPolyData> out = Generate(cone, U, V, e);
+  for (int j = 0; j <= V; ++j)
+  {
+    for (int i = 0; i <= U; ++i)
+    {
+      const double theta = 2 * Pi * i / U;
+      const vtkIdType id = j * (U + 1) + i;
+      const Vec n = { std::cos(theta) / std::sqrt(2.0), 1 / std::sqrt(2.0),
+        -std::sin(theta) / std::sqrt(2.0) };
+      const Vec t = { -std::sin(theta), 0, -std::cos(theta) };
+      const double tolerance = j == V ? 1e-4 : 1e-6;
+      EXPECT_LT(Angle(Tuple(out->GetPointData()->GetNormals(), id), n), tolerance) << id;
+      EXPECT_LT(Angle(Tuple(out->GetPointData()->GetArray("Tangents"), id), t), tolerance) << id;
+    }
   }
 }

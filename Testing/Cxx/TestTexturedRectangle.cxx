@@ -3,19 +3,11 @@
 // top-left blue, top-right white). With --flip the texture is turned upside down, which
 // the harness must catch (TestTexturedRectangleFlippedIsCaught).
 
-#include <vtkActor.h>
-#include <vtkCamera.h>
+#include "TexturedSquareTestHelpers.h"
+
 #include <vtkImageData.h>
 #include <vtkNew.h>
-#include <vtkPlaneSource.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
-#include <vtkRegressionTestImage.h>
-#include <vtkRenderWindow.h>
-#include <vtkRenderWindowInteractor.h>
-#include <vtkRenderer.h>
 #include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <cstring>
 
@@ -50,45 +42,8 @@ int main(int argc, char* argv[])
     }
   }
 
-  vtkNew<vtkPlaneSource> plane; // (0,0) bottom-left, texture coordinates 0..1
-  plane->SetOrigin(-1, -1, 0);
-  plane->SetPoint1(1, -1, 0);
-  plane->SetPoint2(-1, 1, 0);
-
   vtkNew<vtkTexture> texture;
   texture->SetInputData(card);
   texture->InterpolateOff();
-
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->SetTexture(texture);
-  actor->GetProperty()->SetAmbient(1.0);
-  actor->GetProperty()->SetDiffuse(0.0);
-
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.1, 0.1, 0.1);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetPosition(0, 0, 5);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetParallelScale(1.0);
-
-  vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetSize(256, 256);
-  window->AddRenderer(renderer);
-  vtkNew<vtkRenderWindowInteractor> interactor;
-  interactor->SetRenderWindow(window);
-  window->Render();
-
-  const int result = vtkRegressionTestImageThreshold(window, 0.05);
-  if (result == vtkRegressionTester::DO_INTERACTOR)
-  {
-    interactor->Start();
-  }
-  return !result;
+  return RenderTexturedSquareAndCompare(argc, argv, texture);
 }

@@ -1,14 +1,19 @@
 // Uses SurfaceDetail::IO and SurfaceDetail::Filters from an installed package: writes an
 // OpenEXR image with vtkOIIOImageWriter, reads it back through vtkImageReader2Factory
-// (which must hand out vtkOIIOImageReader, registered by loading the library), samples it
-// with the wrap convention of SurfaceDetail::Filters, and checks every value.
+// (which must hand out vtkOIIOImageReader, registered by loading the shared library or, for
+// a static one, by RegisterWithImageReader2Factory()), samples it with the wrap convention
+// of SurfaceDetail::Filters, and checks every value; then turns a flat height map into a
+// normal map with vtkHeightMapToNormalMap (a compiled Filters class), which must be +z.
 
+#include <vtkDataArray.h>
+#include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkImageReader2.h>
 #include <vtkImageReader2Factory.h>
 #include <vtkNew.h>
 #include <vtkOIIOImageReader.h>
 #include <vtkOIIOImageWriter.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkSurfaceDetailConventions.h>
 
@@ -45,6 +50,9 @@ int main(int argc, char* argv[])
     return 1;
   }
 
+#ifdef SURFACEDETAIL_STATIC
+  vtkOIIOImageReader::RegisterWithImageReader2Factory();
+#endif
   vtkSmartPointer<vtkImageReader2> reader;
   reader.TakeReference(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
   if (!vtkOIIOImageReader::SafeDownCast(reader))
@@ -69,5 +77,22 @@ int main(int argc, char* argv[])
   }
   std::cout << "downstream: read " << back->GetNumberOfPoints() << " texels back from " << path
             << ", " << wrong << " wrong\n";
-  return wrong == 0 && back->GetNumberOfPoints() == width * height ? 0 : 1;
+
+  // A flat surface's normal is +z, stored as 0.5*n + 0.5 = (0.5, 0.5, 1).
+  vtkNew<vtkImageData> flat;
+  flat->SetDimensions(8, 8, 1);
+  flat->AllocateScalars(VTK_FLOAT, 1);
+  flat->GetPointData()->GetScalars()->Fill(0.5);
+  vtkNew<vtkHeightMapToNormalMap> normals;
+  normals->SetInputData(flat);
+  normals->SetOutputScalarTypeToFloat();
+  normals->Update();
+  vtkImageData* map = normals->GetOutput();
+  const bool flatIsUp = map->GetNumberOfPoints() == 64 &&
+    map->GetScalarComponentAsDouble(3, 4, 0, 0) == 0.5 &&
+    map->GetScalarComponentAsDouble(3, 4, 0, 1) == 0.5 &&
+    map->GetScalarComponentAsDouble(3, 4, 0, 2) == 1.0;
+  std::cout << "downstream: the normal map of a flat height map is " << (flatIsUp ? "+z" : "WRONG")
+            << "\n";
+  return wrong == 0 && back->GetNumberOfPoints() == width * height && flatIsUp ? 0 : 1;
 }

@@ -1,0 +1,36 @@
+// Parallax mapping with offset limiting (Welsh 2004). The height map's first channel is the
+// height h; the surface seen at a fragment lies DepthScale*(1 - h) below the mesh along its
+// normal (DESIGN.md: depth in object units, the top of the relief is the mesh itself). The
+// texture coordinate moves by that depth times the tangential part of the view vector,
+// without the 1/(V.N) that makes plain parallax swim at grazing angles. The texture frame
+// (dP/ds, dP/dt) comes from screen-space derivatives, so no tangent array is needed.
+uniform float sdDepthScale;
+uniform int sdCameraParallel;
+
+vec2 sdParallaxTCoord(vec2 tc, vec3 posVC, vec3 N, vec3 normalDirVC)
+{
+  vec3 sigmaS = dFdx(posVC);
+  vec3 sigmaT = dFdy(posVC);
+  vec2 tcdx = dFdx(tc);
+  vec2 tcdy = dFdy(tc);
+  float tcDet = tcdx.x * tcdy.y - tcdx.y * tcdy.x;
+  float h = texture(sdHeightMap, tc).r;
+  if (!(abs(tcDet) > 1e-30))
+  {
+    return tc;
+  }
+  vec3 dPds = (sigmaS * tcdy.y - sigmaT * tcdx.y) / tcDet;
+  vec3 dPdt = (sigmaT * tcdx.x - sigmaS * tcdy.x) / tcDet;
+  vec3 V = sdCameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-posVC);
+  vec3 Vt = V - N * dot(N, V);
+  mat3 frame = mat3(dPds, dPdt, N);
+  if (!(abs(determinant(frame)) > 1e-30))
+  {
+    return tc;
+  }
+  // normalDirVC is the mesh's unit object-space normal taken to view coordinates: its
+  // length turns object units of depth into view units under any actor scale.
+  float depthVC = sdDepthScale * (1.0 - h) * length(normalDirVC);
+  vec3 shift = inverse(frame) * Vt;
+  return tc - depthVC * shift.xy;
+}

@@ -1,0 +1,649 @@
+#include "vtkSurfaceDetailMapper.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLTexture.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
+#include "vtkTexture.h"
+#include "vtkTextureObject.h"
+
+#include "vtkSurfaceDetailBumpFS.h"
+#include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailNormalCoding.h"
+#include "vtkSurfaceDetailNormalMapFS.h"
+#include "vtkSurfaceDetailParallaxFS.h"
+#include "vtkSurfaceDetailTangentFrameFS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkSurfaceDetailMapper);
+vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, NormalMap, vtkTexture);
+vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, HeightMap, vtkTexture);
+
+namespace
+{
+// Our tags sit just before VTK's, so VTK's tags stay where the superclass expects them.
+const char* const DecTag = "//VTK::SurfaceDetail::Dec";
+const char* const VSImplTag = "//VTK::SurfaceDetail::Impl";
+const char* const TCoordImplTag = "//VTK::SurfaceDetail::TCoord::Impl";
+const char* const NormalImplTag = "//VTK::SurfaceDetail::Normal::Impl";
+const char* const TangentAttribute = "sdTangentMC";
+
+// The image behind a texture, brought up to date; nullptr if there is none.
+vtkImageData* TextureImage(vtkTexture* texture)
+{
+  if (!texture)
+  {
+    return nullptr;
+  }
+  if (vtkAlgorithm* producer = texture->GetInputAlgorithm())
+  {
+    producer->UpdateWholeExtent();
+  }
+  return texture->GetInput();
+}
+
+int TextureUnit(vtkTexture* texture)
+{
+  auto* glTexture = vtkOpenGLTexture::SafeDownCast(texture);
+  return glTexture ? glTexture->GetTextureUnit() : -1;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSurfaceDetailMapper::~vtkSurfaceDetailMapper()
+{
+  this->SetNormalMap(nullptr);
+  this->SetHeightMap(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSurfaceDetailMapper::GetTechniqueAsString(int technique)
+{
+  switch (technique)
+  {
+    case None:
+      return "None";
+    case NormalMapping:
+      return "NormalMapping";
+    case BumpMapping:
+      return "BumpMapping";
+    case ParallaxMapping:
+      return "ParallaxMapping";
+    case ReliefMapping:
+      return "ReliefMapping";
+    default:
+      return "Unknown";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
+{
+  this->ActiveTechnique = None;
+  this->ActiveUsesTangents = false;
+  this->ActiveUsesNormalMap = false;
+  this->ActiveUsesHeightMap = false;
+
+  int technique = this->Technique;
+  std::string problem;
+  bool warningOnly = false;
+  if (technique == ReliefMapping)
+  {
+    problem = "ReliefMapping is not implemented yet: rendering with ParallaxMapping instead.";
+    warningOnly = true;
+    technique = ParallaxMapping;
+  }
+
+  const bool usesNormalMap =
+    technique == NormalMapping || (technique == ParallaxMapping && this->NormalMap != nullptr);
+  const bool usesHeightMap = technique == BumpMapping || technique == ParallaxMapping;
+  const bool usesTangents = usesNormalMap || (technique == BumpMapping && !this->TangentFree);
+
+  vtkPolyData* input = this->CurrentInput;
+  vtkPointData* pd = input ? input->GetPointData() : nullptr;
+  vtkDataArray* tangents = nullptr;
+  if (technique != None && pd)
+  {
+    tangents = pd->GetTangents() ? pd->GetTangents() : pd->GetArray("Tangents");
+    vtkDataArray* tcoords = pd->GetTCoords();
+    vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
+    vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
+    std::ostringstream err;
+    const char* name = GetTechniqueAsString(technique);
+    if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
+    {
+      err << name << " needs smooth shading; the actor's property has flat interpolation. "
+          << "Use SetInterpolationToGouraud() or SetInterpolationToPhong().";
+    }
+    else if (!pd->GetNormals())
+    {
+      err << name << " needs point normals; the input has none. Generate them first "
+          << "(vtkPolyDataNormals, or the source's GenerateNormals).";
+    }
+    else if (!tcoords || tcoords->GetNumberOfComponents() != 2)
+    {
+      err << name << " needs 2-component texture coordinates; the input has "
+          << (tcoords ? "texture coordinates with another number of components" : "none")
+          << ". Generate them first (e.g. vtkParametricSurfaceSource).";
+    }
+    else if (usesTangents &&
+      (!tangents || !tangents->GetName() ||
+        (tangents->GetNumberOfComponents() != 3 && tangents->GetNumberOfComponents() != 4)))
+    {
+      err << name << " needs a \"Tangents\" point array (4 components with handedness, or 3)"
+          << "; the input has none. Generate tangents first (vtkParametricSurfaceSource with "
+          << "GenerateTangents, or vtkMikkTSpaceTangents)"
+          << (technique == BumpMapping ? ", or turn TangentFree on." : ".");
+    }
+    else if (usesNormalMap && !this->NormalMap)
+    {
+      err << name << " needs a normal map: call SetNormalMap().";
+    }
+    else if (usesNormalMap &&
+      (!normalImage || !normalImage->GetPointData()->GetScalars() ||
+        normalImage->GetPointData()->GetScalars()->GetNumberOfComponents() < 3))
+    {
+      err << "The normal map must be an image with 3 or 4 components (RGB = 0.5*n + 0.5); "
+          << "this one has "
+          << (normalImage && normalImage->GetPointData()->GetScalars()
+                 ? normalImage->GetPointData()->GetScalars()->GetNumberOfComponents()
+                 : 0)
+          << ".";
+    }
+    else if (usesHeightMap && !this->HeightMap)
+    {
+      err << name << " needs a height map: call SetHeightMap().";
+    }
+    else if (usesHeightMap && (!heightImage || !heightImage->GetPointData()->GetScalars()))
+    {
+      err << "The height map texture has no image scalars: give it an input image.";
+    }
+    if (!err.str().empty())
+    {
+      problem = err.str() + " Rendering without surface detail.";
+      warningOnly = false;
+      technique = None;
+    }
+  }
+
+  if (problem != this->ReportedProblem)
+  {
+    this->ReportedProblem = problem;
+    if (!problem.empty())
+    {
+      if (warningOnly)
+      {
+        vtkWarningMacro(<< problem);
+      }
+      else
+      {
+        vtkErrorMacro(<< problem);
+      }
+    }
+  }
+
+  // Lighting off means no normal is ever read: nothing to do but draw as VTK does.
+  if (technique == None || !act->GetProperty()->GetLighting())
+  {
+    technique = None;
+  }
+  this->ActiveTechnique = technique;
+  if (technique != None)
+  {
+    this->ActiveUsesTangents = usesTangents;
+    this->ActiveUsesNormalMap = usesNormalMap;
+    this->ActiveUsesHeightMap = usesHeightMap;
+  }
+
+  // The tangent attribute is uploaded only while a technique reads it.
+  const std::string wanted = this->ActiveUsesTangents ? tangents->GetName() : "";
+  if (wanted != this->MappedTangentArray)
+  {
+    if (wanted.empty())
+    {
+      this->RemoveVertexAttributeMapping(TangentAttribute);
+    }
+    else
+    {
+      this->MapDataArrayToVertexAttribute(
+        TangentAttribute, wanted.c_str(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+    this->MappedTangentArray = wanted;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkSurfaceDetailMapper::AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act)
+{
+  if (this->ActiveTechnique == None || !cellBO ||
+    act->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  {
+    return false;
+  }
+  if (cellBO != &this->Primitives[PrimitiveTris] && cellBO != &this->Primitives[PrimitiveTriStrips])
+  {
+    return false;
+  }
+  // Flat shading uploads no point normals (and then no normalMC to build the frame from).
+  if (this->VBOs->GetNumberOfComponents("normalMC") != 3 ||
+    this->VBOs->GetNumberOfComponents("tcoord") != 2)
+  {
+    return false;
+  }
+  auto info = this->PrimitiveInfo.find(cellBO);
+  return info != this->PrimitiveInfo.end() && info->second.LastLightComplexity > 0;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSurfaceDetailMapper::ShaderKey() const
+{
+  std::ostringstream key;
+  key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesNormalMap
+      << this->ActiveUsesHeightMap;
+  return key.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  this->ResolveTechnique(act);
+  // Our maps are not the actor's or the property's textures, so we bind them ourselves
+  // for the duration of this piece; SetMapperShaderParameters reads their units.
+  if (this->ActiveUsesNormalMap)
+  {
+    this->NormalMap->Render(ren);
+  }
+  if (this->ActiveUsesHeightMap)
+  {
+    this->UploadHeightMap(ren);
+    this->HeightTexture->Activate();
+  }
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkImageData* image = this->HeightMap->GetInput();
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  const vtkMTimeType stamp =
+    std::max({ image->GetMTime(), scalars->GetMTime(), this->HeightMap->GetMTime() });
+  if (!this->HeightTexture)
+  {
+    this->HeightTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp &&
+    this->Differences == this->HeightUploadDifferences)
+  {
+    return;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  // Unsigned integer heights are fractions of their type's range, as 8-bit colours are.
+  const int type = scalars->GetDataType();
+  const bool normalised = type != VTK_FLOAT && type != VTK_DOUBLE;
+  const double scale = normalised ? 1.0 / scalars->GetDataTypeMax() : 1.0;
+  // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
+  std::vector<double> values(static_cast<size_t>(w) * h);
+  vtkIdType nonFinite = 0;
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), 0);
+    nonFinite += std::isfinite(v) ? 0 : 1;
+    values[k] = std::isfinite(v) ? v : 0.0;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< "The height map has " << nonFinite
+                    << " non-finite values (NaN or infinite); they are read as height 0.");
+  }
+  auto height = [&](int i, int j) { return values[static_cast<size_t>(j) * w + i]; };
+  // Texel (i,j) holds (h, dh/ds, dh/dt), the derivatives per unit of texture coordinate
+  // by forward or central differences with the texture's own wrap mode. Differences of
+  // linearly interpolated heights taken one texel apart equal the linear interpolation of
+  // these texel differences (both use the same weights), so one lookup gives exactly what
+  // seed 000's three-lookup Cg code computes, at a third of the texture traffic.
+  const int wrap = this->HeightMap->GetWrap() == vtkTexture::ClampToBorder
+    ? vtkSurfaceDetail::ClampToEdge
+    : this->HeightMap->GetWrap();
+  const bool central = this->Differences == Central;
+  std::vector<float> texels(3 * static_cast<size_t>(w) * h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const int i1 = vtkSurfaceDetail::WrapIndex(i + 1, w, wrap);
+      const int j1 = vtkSurfaceDetail::WrapIndex(j + 1, h, wrap);
+      const int i0 = central ? vtkSurfaceDetail::WrapIndex(i - 1, w, wrap) : i;
+      const int j0 = central ? vtkSurfaceDetail::WrapIndex(j - 1, h, wrap) : j;
+      const double span = central ? 2.0 : 1.0;
+      float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
+      texel[0] = static_cast<float>(height(i, j));
+      texel[1] = static_cast<float>((height(i1, j) - height(i0, j)) * w / span);
+      texel[2] = static_cast<float>((height(i, j1) - height(i, j0)) * h / span);
+    }
+  }
+  this->HeightTexture->SetContext(window);
+  this->HeightTexture->SetRequireTextureFloat(true);
+  this->HeightTexture->Create2DFromRaw(w, h, 3, VTK_FLOAT, texels.data());
+  // vtkTexture and vtkTextureObject number their wrap modes alike.
+  this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
+  this->HeightTexture->SetWrapT(this->HeightMap->GetWrap());
+  const int filter =
+    this->HeightMap->GetInterpolate() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+  this->HeightTexture->SetMinificationFilter(filter);
+  this->HeightTexture->SetMagnificationFilter(filter);
+  this->HeightUploadStamp = stamp;
+  this->HeightUploadDifferences = this->Differences;
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceFinish(ren, act);
+  if (this->ActiveUsesHeightMap)
+  {
+    this->HeightTexture->Deactivate();
+  }
+  if (this->ActiveUsesNormalMap)
+  {
+    this->NormalMap->PostRender(ren);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  if (this->NormalMap)
+  {
+    this->NormalMap->ReleaseGraphicsResources(win);
+  }
+  if (this->HeightTexture)
+  {
+    this->HeightTexture->ReleaseGraphicsResources(win);
+  }
+  this->HeightUploadStamp = 0;
+  this->BuiltShaderKeys.clear();
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSurfaceDetailMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  const std::string key = this->AppliesTo(&cellBO, act) ? this->ShaderKey() : std::string();
+  std::string& built = this->BuiltShaderKeys[&cellBO];
+  if (built != key)
+  {
+    built = key;
+    rebuild = true;
+  }
+  return rebuild;
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  if (this->AppliesTo(this->LastBoundBO, act))
+  {
+    std::string vs = shaders[vtkShader::Vertex]->GetSource();
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Dec", std::string(DecTag) + "\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Impl", std::string(VSImplTag) + "\n  //VTK::Normal::Impl");
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::Normal::Dec", std::string(DecTag) + "\n//VTK::Normal::Dec");
+    // The texture coordinate (parallax) is settled before anything samples a texture, and
+    // the normal after VTK has interpolated it but before its lighting code reads it.
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::Color::Impl", std::string(TCoordImplTag) + "\n  //VTK::Color::Impl");
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::Light::Impl", std::string(NormalImplTag) + "\n  //VTK::Light::Impl");
+    shaders[vtkShader::Vertex]->SetSource(vs);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ReplaceShaderNormal(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderNormal(shaders, ren, act);
+  if (!this->AppliesTo(this->LastBoundBO, act))
+  {
+    return;
+  }
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+
+  // The frame is built per vertex in the mesh's coordinates and sent as normalMatrix*T and
+  // normalMatrix*B (see vtkSurfaceDetailTangentFrameFS.glsl for why not MCVCMatrix*T).
+  std::string vsDec;
+  std::string vsImpl;
+  std::string fsDec;
+  if (this->ActiveUsesTangents)
+  {
+    vsDec +=
+      "in vec4 sdTangentMC;\nout vec3 sdTangentVCVSOutput;\nout vec3 sdBitangentVCVSOutput;\n";
+    vsImpl += "{\n"
+              "    vec3 sdN = normalize(normalMC);\n"
+              "    vec3 sdT = sdTangentMC.xyz - sdN * dot(sdN, sdTangentMC.xyz);\n"
+              "    float sdLen = length(sdT);\n"
+              "    sdT = sdLen > 0.0 ? sdT / sdLen : vec3(0.0);\n"
+              "    vec3 sdB = (sdTangentMC.w < 0.0 ? -1.0 : 1.0) * cross(sdN, sdT);\n"
+              "    float sdNLen = length(normalMatrix * sdN);\n"
+              "    sdTangentVCVSOutput = (normalMatrix * sdT) / sdNLen;\n"
+              "    sdBitangentVCVSOutput = (normalMatrix * sdB) / sdNLen;\n"
+              "  }\n";
+    fsDec += "in vec3 sdTangentVCVSOutput;\nin vec3 sdBitangentVCVSOutput;\n";
+  }
+  if (this->ActiveTechnique == ParallaxMapping)
+  {
+    vsDec += "out vec3 sdNormalDirVCVSOutput;\n";
+    vsImpl += "sdNormalDirVCVSOutput = mat3(MCVCMatrix) * normalize(normalMC);\n";
+    fsDec += "in vec3 sdNormalDirVCVSOutput;\n";
+  }
+  if (this->ActiveUsesTangents)
+  {
+    fsDec += vtkSurfaceDetailTangentFrameFS;
+  }
+  if (this->ActiveUsesNormalMap)
+  {
+    fsDec += vtkSurfaceDetailNormalCoding;
+    fsDec += vtkSurfaceDetailNormalMapFS;
+  }
+  if (this->ActiveUsesHeightMap)
+  {
+    fsDec += vtkSurfaceDetailBumpFS;
+  }
+  if (this->ActiveTechnique == ParallaxMapping)
+  {
+    fsDec += vtkSurfaceDetailParallaxFS;
+  }
+  vtkShaderProgram::Substitute(vs, DecTag, vsDec + DecTag);
+  vtkShaderProgram::Substitute(vs, VSImplTag, vsImpl + VSImplTag);
+  vtkShaderProgram::Substitute(fs, DecTag, fsDec + DecTag);
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderLight(shaders, ren, act);
+  if (!this->AppliesTo(this->LastBoundBO, act))
+  {
+    return;
+  }
+  // VTK's lighting (headlight, light kit, positional and spot lights) reads
+  // normalVCVSOutput: replacing it there is all the lighting needs.
+  std::string nTS;
+  if (this->ActiveUsesNormalMap)
+  {
+    nTS = "sdNormalMapTS(tcoordVCVSOutput)";
+  }
+  else if (this->ActiveUsesTangents)
+  {
+    nTS = "sdBumpTS(tcoordVCVSOutput)";
+  }
+  // VTK has flipped the normal on back faces; the frame is built for the front face and
+  // the result flipped back.
+  std::string impl = "// SurfaceDetail: the detail normal, in view coordinates\n  ";
+  if (!nTS.empty())
+  {
+    impl += "normalVCVSOutput = sdTangentToView(" + nTS +
+      ", gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput, sdTangentVCVSOutput, "
+      "sdBitangentVCVSOutput);\n"
+      "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
+  }
+  else
+  {
+    impl += "normalVCVSOutput = sdBumpSurfaceGradient(normalVCVSOutput, vertexVC.xyz, "
+            "tcoordVCVSOutput, sdHeightGradient(tcoordVCVSOutput));\n";
+  }
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkShaderProgram::Substitute(fs, NormalImplTag, impl);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderTCoord(shaders, ren, act);
+  if (!this->AppliesTo(this->LastBoundBO, act))
+  {
+    return;
+  }
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+
+  // Every texture lookup, VTK's colour texture included, reads tcoordVCVSOutput. We make it
+  // a plain variable fed from our own varying, so that parallax can move it for all of them.
+  // With an actor texture VTK has declared the varying already (and applied any texture
+  // transform); without one we pass the "tcoord" attribute through ourselves.
+  const std::string fsDecl = "in vec2 sdTCoordVCVSOutput;\nvec2 tcoordVCVSOutput;\n";
+  if (vs.find("tcoordVCVSOutput") != std::string::npos)
+  {
+    // Whole identifiers only: VTK's seamless-texture varyings (tcoordVCVSOutputU1, ...) keep
+    // their names.
+    vs = std::regex_replace(vs, std::regex("\\btcoordVCVSOutput\\b"), "sdTCoordVCVSOutput");
+    if (!vtkShaderProgram::Substitute(fs, "in vec2 tcoordVCVSOutput;\n", fsDecl))
+    {
+      // Only a VTK whose shader text differs from 9.1's gets here; say so rather than
+      // leave a shader that does not compile without explanation.
+      vtkErrorMacro("VTK's fragment shader does not declare \"in vec2 tcoordVCVSOutput;\" "
+                    "as VTK 9.1 does; the surface-detail shader will not compile.");
+    }
+    vtkShaderProgram::Substitute(vs, DecTag, "");
+    vtkShaderProgram::Substitute(vs, VSImplTag, "");
+    vtkShaderProgram::Substitute(fs, DecTag, "");
+  }
+  else
+  {
+    vtkShaderProgram::Substitute(vs, DecTag, "in vec2 tcoord;\nout vec2 sdTCoordVCVSOutput;\n");
+    vtkShaderProgram::Substitute(vs, VSImplTag, "sdTCoordVCVSOutput = tcoord;\n");
+    vtkShaderProgram::Substitute(fs, DecTag, fsDecl);
+  }
+
+  std::string impl = "tcoordVCVSOutput = sdTCoordVCVSOutput;\n";
+  if (this->ActiveTechnique == ParallaxMapping)
+  {
+    // VTK has not yet redeclared normalVCVSOutput (normalised, flipped on back faces).
+    impl += "  tcoordVCVSOutput = sdParallaxTCoord(sdTCoordVCVSOutput, vertexVC.xyz,\n"
+            "    normalize(gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput),\n"
+            "    sdNormalDirVCVSOutput);\n";
+  }
+  vtkShaderProgram::Substitute(fs, TCoordImplTag, impl);
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  if (!this->AppliesTo(&cellBO, act) || !cellBO.Program)
+  {
+    return;
+  }
+  vtkShaderProgram* program = cellBO.Program;
+  if (this->ActiveUsesNormalMap)
+  {
+    program->SetUniformi("sdNormalMap", TextureUnit(this->NormalMap));
+    program->SetUniformf("sdNormalStrength", static_cast<float>(this->NormalStrength));
+    program->SetUniformi("sdGreenUp", this->GreenUp ? 1 : 0);
+  }
+  if (this->ActiveUsesHeightMap)
+  {
+    program->SetUniformi("sdHeightMap", this->HeightTexture->GetTextureUnit());
+    program->SetUniformf("sdBumpScale", static_cast<float>(this->BumpScale));
+  }
+  if (this->ActiveTechnique == ParallaxMapping)
+  {
+    program->SetUniformf("sdDepthScale", static_cast<float>(this->DepthScale));
+    program->SetUniformi(
+      "sdCameraParallel", ren->GetActiveCamera()->GetParallelProjection() ? 1 : 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
+{
+  if (auto* other = vtkSurfaceDetailMapper::SafeDownCast(m))
+  {
+    this->SetTechnique(other->GetTechnique());
+    this->SetNormalMap(other->GetNormalMap());
+    this->SetHeightMap(other->GetHeightMap());
+    this->SetNormalStrength(other->GetNormalStrength());
+    this->SetGreenUp(other->GetGreenUp());
+    this->SetBumpScale(other->GetBumpScale());
+    this->SetDifferences(other->GetDifferences());
+    this->SetTangentFree(other->GetTangentFree());
+    this->SetDepthScale(other->GetDepthScale());
+  }
+  this->Superclass::ShallowCopy(m);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Technique: " << GetTechniqueAsString(this->Technique) << "\n";
+  os << indent << "ActiveTechnique: " << GetTechniqueAsString(this->ActiveTechnique) << "\n";
+  os << indent << "NormalMap: " << this->NormalMap << "\n";
+  os << indent << "HeightMap: " << this->HeightMap << "\n";
+  os << indent << "NormalStrength: " << this->NormalStrength << "\n";
+  os << indent << "GreenUp: " << (this->GreenUp ? "On" : "Off") << "\n";
+  os << indent << "BumpScale: " << this->BumpScale << "\n";
+  os << indent << "Differences: " << (this->Differences == Central ? "Central" : "Forward") << "\n";
+  os << indent << "TangentFree: " << (this->TangentFree ? "On" : "Off") << "\n";
+  os << indent << "DepthScale: " << this->DepthScale << "\n";
+}

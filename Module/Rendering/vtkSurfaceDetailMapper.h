@@ -1,0 +1,242 @@
+/**
+ * @class   vtkSurfaceDetailMapper
+ * @brief   Polydata mapper that shades surface detail: normal, bump and parallax mapping.
+ *
+ * vtkSurfaceDetailMapper is a vtkOpenGLPolyDataMapper that perturbs the shading normal
+ * (and, for parallax, the texture coordinate) per fragment, so that a coarse mesh shows
+ * the detail of a normal map or a height map without moving any geometry (seed 000).
+ * Everything else is VTK's own: the actor's ambient, diffuse, specular colours and
+ * specular power, the headlight, light kits, positional and spot lights, actor transforms
+ * and cameras. The detail is applied by computing the perturbed normal in view coordinates
+ * and handing it to VTK's lighting code in place of the interpolated one.
+ *
+ * Techniques (SetTechnique):
+ * - None: exactly the plain mapper (no shader changes, no extra textures or attributes).
+ * - NormalMapping: tangent-space normal map (SetNormalMap; RGB = 0.5*n + 0.5, green up
+ *   by default, see GreenUp) with NormalStrength scaling its tangential part. Needs point
+ *   normals, 2-component texture coordinates and a tangent array with handedness
+ *   ("Tangents", 4 components, w = +-1, as vtkParametricSurfaceSource makes; 3-component
+ *   tangents are taken with w = +1). Unlike vtkProperty::SetNormalTexture, mirrored texture
+ *   coordinates (w = -1) shade correctly.
+ * - BumpMapping: the normal of the surface z = BumpScale*h(s,t) over the unit texture
+ *   square, h the first channel of SetHeightMap, by forward (seed 000) or central
+ *   differences at the height map's own texel size. With TangentFree on, the tangent frame
+ *   comes from screen-space derivatives (Mikkelsen 2010) and no tangent array is needed.
+ * - ParallaxMapping: parallax mapping with offset limiting (Welsh 2004): the texture
+ *   coordinate of every texture, the actor's colour texture included, moves to where the
+ *   view ray meets the height field lying DepthScale*(1 - h) below the mesh (DepthScale in
+ *   the mesh's own units). Shading then uses the normal map if one is set (needs tangents),
+ *   otherwise the height map's bumps (tangent free, BumpScale).
+ * - ReliefMapping: reserved for the relief technique of a later release; it currently
+ *   warns and renders as ParallaxMapping.
+ *
+ * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
+ * input lacks, a normal map with fewer than 3 components) is reported once
+ * with vtkErrorMacro, and the actor is rendered as with Technique None until it is fixed.
+ *
+ * Shader code exists only for what is switched on. The program is rebuilt when the set of
+ * shader features changes (technique, TangentFree, whether parallax shades with the normal
+ * map), never per frame; strengths, scales, GreenUp and the maps themselves are uniforms
+ * and textures (VTK's shader cache hands back the compiled program). The height map is
+ * uploaded as a float texture holding h and its finite differences (Differences), so bump
+ * mapping reads one texel per fragment.
+ *
+ * Flat interpolation, lighting off or a non-surface representation draw as the plain
+ * mapper does (flat interpolation is reported, as it is likely a mistake).
+ *
+ * @sa vtkOpenGLPolyDataMapper vtkProperty::SetNormalTexture vtkHeightMapToNormalMap
+ */
+
+#ifndef vtkSurfaceDetailMapper_h
+#define vtkSurfaceDetailMapper_h
+
+#include "SurfaceDetailRenderingModule.h" // For export macro
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkSmartPointer.h" // For the height texture
+
+#include <map>    // For the per-primitive shader keys
+#include <string> // For the shader keys
+
+class vtkTexture;
+class vtkTextureObject;
+
+class SURFACEDETAILRENDERING_EXPORT vtkSurfaceDetailMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkSurfaceDetailMapper* New();
+  vtkTypeMacro(vtkSurfaceDetailMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum TechniqueType
+  {
+    None = 0,
+    NormalMapping,
+    BumpMapping,
+    ParallaxMapping,
+    ReliefMapping
+  };
+
+  enum DifferenceType
+  {
+    Forward = 0,
+    Central
+  };
+
+  ///@{
+  /**
+   * The surface-detail technique. Default None.
+   */
+  vtkSetClampMacro(Technique, int, None, ReliefMapping);
+  vtkGetMacro(Technique, int);
+  void SetTechniqueToNone() { this->SetTechnique(None); }
+  void SetTechniqueToNormalMapping() { this->SetTechnique(NormalMapping); }
+  void SetTechniqueToBumpMapping() { this->SetTechnique(BumpMapping); }
+  void SetTechniqueToParallaxMapping() { this->SetTechnique(ParallaxMapping); }
+  void SetTechniqueToReliefMapping() { this->SetTechnique(ReliefMapping); }
+  static const char* GetTechniqueAsString(int technique);
+  ///@}
+
+  ///@{
+  /**
+   * Tangent-space normal map (3 or 4 components, RGB = 0.5*n + 0.5). Default none.
+   * Use nearest or linear filtering as you like; 8-bit and float images both work
+   * (float images need vtkTexture::SetColorModeToDirectScalars, values in [0,1]).
+   */
+  virtual void SetNormalMap(vtkTexture*);
+  vtkGetObjectMacro(NormalMap, vtkTexture);
+  ///@}
+
+  ///@{
+  /**
+   * Height map (first component; unsigned integer types are read as [0,1], floats as they
+   * are). It is uploaded as a 32-bit float texture with the vtkTexture's wrap mode and
+   * interpolation (Interpolate on: linear). Default none.
+   */
+  virtual void SetHeightMap(vtkTexture*);
+  vtkGetObjectMacro(HeightMap, vtkTexture);
+  ///@}
+
+  ///@{
+  /**
+   * Scale of the normal map's tangential part (1 = as stored, 0 = flat). Default 1.
+   */
+  vtkSetMacro(NormalStrength, double);
+  vtkGetMacro(NormalStrength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the normal map's green channel points along +t (OpenGL, Blender) or -t
+   * (DirectX). Default true.
+   */
+  vtkSetMacro(GreenUp, bool);
+  vtkGetMacro(GreenUp, bool);
+  vtkBooleanMacro(GreenUp, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Bump height k: the bumps are those of z = k*h(s,t) over the unit texture square.
+   * Negative values sink the bumps. Default 1.
+   */
+  vtkSetMacro(BumpScale, double);
+  vtkGetMacro(BumpScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Finite differences for the height gradient: Forward (seed 000's Cg code, one texel
+   * ahead) or Central (one texel either side, second-order accurate). Default Forward.
+   */
+  vtkSetClampMacro(Differences, int, Forward, Central);
+  vtkGetMacro(Differences, int);
+  void SetDifferencesToForward() { this->SetDifferences(Forward); }
+  void SetDifferencesToCentral() { this->SetDifferences(Central); }
+  ///@}
+
+  ///@{
+  /**
+   * Bump mapping without a tangent array: the frame comes from screen-space derivatives
+   * (Mikkelsen 2010). Default false (use the "Tangents" array).
+   */
+  vtkSetMacro(TangentFree, bool);
+  vtkGetMacro(TangentFree, bool);
+  vtkBooleanMacro(TangentFree, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Depth of the height field for parallax mapping, in the mesh's own (object) units:
+   * height 1 is the mesh, height 0 lies DepthScale below it. Default 0.05.
+   */
+  vtkSetClampMacro(DepthScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DepthScale, double);
+  ///@}
+
+  /**
+   * The technique used in the last render: the requested one, or None when the input
+   * could not support it (see the class documentation).
+   */
+  vtkGetMacro(ActiveTechnique, int);
+
+  /**
+   * Copies the technique, the maps and every setting, then the superclass's state.
+   */
+  void ShallowCopy(vtkAbstractMapper* m) override;
+
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+
+protected:
+  vtkSurfaceDetailMapper() = default;
+  ~vtkSurfaceDetailMapper() override;
+
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderNormal(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderLight(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderTCoord(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  int Technique = None;
+  vtkTexture* NormalMap = nullptr;
+  vtkTexture* HeightMap = nullptr;
+  double NormalStrength = 1.0;
+  bool GreenUp = true;
+  double BumpScale = 1.0;
+  int Differences = Forward;
+  bool TangentFree = false;
+  double DepthScale = 0.05;
+
+private:
+  vtkSurfaceDetailMapper(const vtkSurfaceDetailMapper&) = delete;
+  void operator=(const vtkSurfaceDetailMapper&) = delete;
+
+  // Works out what the input and textures allow; reports a problem once.
+  void ResolveTechnique(vtkActor* act);
+  // Whether the primitive being built or drawn gets the detail shading.
+  bool AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act);
+  std::string ShaderKey() const;
+  // Uploads the height map's first channel and its finite differences as a 32-bit float
+  // RGB texture (integer types scaled to [0,1]): vtkOpenGLTexture would store float images
+  // in 8 bits, too coarse for differences.
+  void UploadHeightMap(vtkRenderer* ren);
+
+  int ActiveTechnique = None;
+  bool ActiveUsesTangents = false;
+  bool ActiveUsesNormalMap = false;
+  bool ActiveUsesHeightMap = false;
+  std::string ReportedProblem;
+  std::string MappedTangentArray;
+  std::map<const vtkOpenGLHelper*, std::string> BuiltShaderKeys;
+  vtkSmartPointer<vtkTextureObject> HeightTexture;
+  vtkMTimeType HeightUploadStamp = 0;
+  int HeightUploadDifferences = Forward;
+};
+
+#endif

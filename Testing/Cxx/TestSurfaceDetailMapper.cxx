@@ -1,0 +1,918 @@
+// Analytic image tests for vtkSurfaceDetailMapper. An orthographic camera looks at a
+// rectangle lit by one directional scene light; the expected picture is computed on the
+// CPU from closed forms: the normal of a known height function h(s,t) in tangent space,
+// taken through the actor's transform as a normal (inverse transpose), and VTK 9.1's Phong
+// formula (vtkOpenGLPolyDataMapper's light-kit shader):
+//   ambient*Ca + diffuse*Cd*max(0, n.-L) + specular*Cs*sign(df)*max(0, r.v)^power,
+//   r = reflect(L, n), v = normalize(-vertexVC).
+// Images must match with PSNR >= 40 dB; each test also shows that a plausible mistake
+// (ignoring handedness, the wrong green direction, no transform, no parallax) is caught.
+
+#include "vtkSurfaceDetailMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+constexpr int WindowSize = 200;
+constexpr double Pi = 3.14159265358979323846;
+using Vec3 = std::array<double, 3>;
+
+Vec3 Normalized(const Vec3& v)
+{
+  const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return { v[0] / l, v[1] / l, v[2] / l };
+}
+double Dot(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// The test surface: h(s,t) = 0.5 + 0.2 sin(2 pi s) + 0.15 sin(4 pi t + 1), periodic on the
+// unit square, with different slopes along s and t so that swapped axes show.
+double Height(double s, double t)
+{
+  return 0.5 + 0.2 * std::sin(2 * Pi * s) + 0.15 * std::sin(4 * Pi * t + 1.0);
+}
+void HeightGradient(double s, double t, double& hs, double& ht)
+{
+  hs = 0.4 * Pi * std::cos(2 * Pi * s);
+  ht = 0.6 * Pi * std::cos(4 * Pi * t + 1.0);
+}
+constexpr double Strength = 0.25; // the normal map is that of z = Strength*h(s,t)
+
+// Tangent-space normal of z = k*h(s,t).
+Vec3 TangentSpaceNormal(double s, double t, double k = Strength)
+{
+  double hs, ht;
+  HeightGradient(s, t, hs, ht);
+  return Normalized({ -k * hs, -k * ht, 1.0 });
+}
+
+// A (cells x cells) grid over [-1,1]^2 at z = 0 with normal +z, texture coordinates
+// (s,t) = ((x+1)/2, (y+1)/2), or s mirrored (s = (1-x)/2, tangent -x, w = -1).
+vtkSmartPointer<vtkPolyData> MakeRectangle(
+  bool mirrored, bool tangents = true, bool tcoords = true, bool normals = true)
+{
+  constexpr int cells = 8;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> n;
+  n->SetNumberOfComponents(3);
+  n->SetName("Normals");
+  vtkNew<vtkFloatArray> tc;
+  tc->SetNumberOfComponents(2);
+  tc->SetName("TCoords");
+  vtkNew<vtkFloatArray> tg;
+  tg->SetNumberOfComponents(4);
+  tg->SetName("Tangents");
+  for (int j = 0; j <= cells; ++j)
+  {
+    for (int i = 0; i <= cells; ++i)
+    {
+      const double x = -1.0 + 2.0 * i / cells, y = -1.0 + 2.0 * j / cells;
+      points->InsertNextPoint(x, y, 0.0);
+      n->InsertNextTuple3(0, 0, 1);
+      tc->InsertNextTuple2(mirrored ? (1.0 - x) / 2 : (x + 1) / 2, (y + 1) / 2);
+      const float t4[4] = { mirrored ? -1.0f : 1.0f, 0, 0, mirrored ? -1.0f : 1.0f };
+      tg->InsertNextTypedTuple(t4);
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int j = 0; j < cells; ++j)
+  {
+    for (int i = 0; i < cells; ++i)
+    {
+      const vtkIdType a = j * (cells + 1) + i, b = a + 1, c = a + cells + 2, d = a + cells + 1;
+      const vtkIdType t1[3] = { a, b, c }, t2[3] = { a, c, d };
+      polys->InsertNextCell(3, t1);
+      polys->InsertNextCell(3, t2);
+    }
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  if (normals)
+  {
+    poly->GetPointData()->SetNormals(n);
+  }
+  if (tcoords)
+  {
+    poly->GetPointData()->SetTCoords(tc);
+  }
+  if (tangents)
+  {
+    poly->GetPointData()->AddArray(tg);
+  }
+  return poly;
+}
+
+// A float texture of f(s,t) sampled at texel centres, linear filtering, repeat.
+vtkSmartPointer<vtkTexture> MakeTexture(
+  int size, int comps, const std::function<void(double, double, double*)>& f)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_FLOAT, comps);
+  auto* p = static_cast<float*>(image->GetScalarPointer());
+  std::vector<double> value(comps);
+  for (int j = 0; j < size; ++j)
+  {
+    for (int i = 0; i < size; ++i)
+    {
+      f((i + 0.5) / size, (j + 0.5) / size, value.data());
+      for (int c = 0; c < comps; ++c)
+      {
+        *p++ = static_cast<float>(value[c]);
+      }
+    }
+  }
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->RepeatOn();
+  texture->SetColorModeToDirectScalars();
+  return texture;
+}
+
+vtkSmartPointer<vtkTexture> MakeNormalMap(bool greenUp = true)
+{
+  return MakeTexture(256, 3,
+    [greenUp](double s, double t, double* rgb)
+    {
+      Vec3 n = TangentSpaceNormal(s, t);
+      rgb[0] = 0.5 * n[0] + 0.5;
+      rgb[1] = 0.5 * (greenUp ? n[1] : -n[1]) + 0.5;
+      rgb[2] = 0.5 * n[2] + 0.5;
+    });
+}
+
+vtkSmartPointer<vtkTexture> MakeHeightMap(double constant = -1.0)
+{
+  return MakeTexture(256, 1,
+    [constant](double s, double t, double* h) { h[0] = constant >= 0 ? constant : Height(s, t); });
+}
+
+struct Material
+{
+  double Ambient = 0.15, Diffuse = 0.8, Specular = 0.0, SpecularPower = 20.0;
+  Vec3 AmbientColor{ 1.0, 1.0, 1.0 };
+  Vec3 DiffuseColor{ 0.9, 0.7, 0.5 };
+  Vec3 SpecularColor{ 1.0, 1.0, 1.0 };
+};
+
+const Vec3 LightPosition{ 1.0, 0.6, 1.2 }; // light travels from here towards the origin
+
+// A positional spot light for the positional-light test (VTK 9.1's positional shader:
+// constant attenuation 1, cone test and pow(cos, exponent) fall-off).
+struct SpotLight
+{
+  bool Enabled = false;
+  Vec3 Position{ 0.6, 0.9, 1.6 };
+  double ConeAngle = 60.0;
+  double Exponent = 3.0;
+};
+SpotLight Spot;
+
+// Everything a scene needs; Render() returns the RGB read-back, row 0 at the bottom.
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkActor> Actor;
+  Material Mat;
+
+  explicit Scene(vtkPolyDataMapper* mapper)
+  {
+    this->Window->SetSize(WindowSize, WindowSize);
+    this->Window->SetMultiSamples(0);
+    this->Window->OffScreenRenderingOn();
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->SetBackground(0, 0, 0);
+    this->Renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(Spot.Enabled);
+    light->SetConeAngle(Spot.ConeAngle);
+    light->SetExponent(Spot.Exponent);
+    light->SetAttenuationValues(1, 0, 0);
+    const Vec3& position = Spot.Enabled ? Spot.Position : LightPosition;
+    light->SetPosition(position[0], position[1], position[2]);
+    light->SetFocalPoint(0, 0, 0);
+    light->SetColor(1, 1, 1);
+    light->SetIntensity(1.0);
+    this->Renderer->AddLight(light);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetPosition(0, 0, 5);
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetParallelScale(1.0);
+    camera->SetClippingRange(1, 10);
+    this->Actor->SetMapper(mapper);
+    this->Renderer->AddActor(this->Actor);
+  }
+
+  std::vector<unsigned char> Render()
+  {
+    vtkProperty* p = this->Actor->GetProperty();
+    p->SetAmbient(this->Mat.Ambient);
+    p->SetDiffuse(this->Mat.Diffuse);
+    p->SetSpecular(this->Mat.Specular);
+    p->SetSpecularPower(this->Mat.SpecularPower);
+    p->SetAmbientColor(this->Mat.AmbientColor.data());
+    p->SetDiffuseColor(this->Mat.DiffuseColor.data());
+    p->SetSpecularColor(this->Mat.SpecularColor.data());
+    this->Renderer->ResetCameraClippingRange(-3, 3, -3, 3, -3, 3);
+    this->Window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(this->Window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    auto* data = static_cast<unsigned char*>(grab->GetOutput()->GetScalarPointer());
+    return std::vector<unsigned char>(data, data + 3 * WindowSize * WindowSize);
+  }
+};
+
+// Where the pixel ray of pixel (i,j) meets the actor's z = 0 plane: model (x,y), the world
+// point, and whether it is inside the rectangle at least one pixel from its edges.
+struct Hit
+{
+  double X, Y;
+  Vec3 World;
+  bool Inside;
+};
+
+Hit PixelHit(int i, int j, vtkMatrix4x4* m)
+{
+  const double wx = -1.0 + 2.0 * (i + 0.5) / WindowSize;
+  const double wy = -1.0 + 2.0 * (j + 0.5) / WindowSize;
+  // Solve m * (x, y, 0, 1) = (wx, wy, *, 1) in x, y.
+  const double a = m->GetElement(0, 0), b = m->GetElement(0, 1);
+  const double c = m->GetElement(1, 0), d = m->GetElement(1, 1);
+  const double rx = wx - m->GetElement(0, 3), ry = wy - m->GetElement(1, 3);
+  const double det = a * d - b * c;
+  Hit hit;
+  hit.X = (d * rx - b * ry) / det;
+  hit.Y = (a * ry - c * rx) / det;
+  for (int r = 0; r < 3; ++r)
+  {
+    hit.World[r] = m->GetElement(r, 0) * hit.X + m->GetElement(r, 1) * hit.Y + m->GetElement(r, 3);
+  }
+  // One pixel of margin, measured in model units along each axis.
+  const double marginX = 2.0 * 2.0 / WindowSize / std::sqrt(a * a + c * c);
+  const double marginY = 2.0 * 2.0 / WindowSize / std::sqrt(b * b + d * d);
+  hit.Inside = std::abs(hit.X) < 1.0 - marginX && std::abs(hit.Y) < 1.0 - marginY;
+  return hit;
+}
+
+// VTK's Phong for one directional light, view coordinates = world shifted by the camera
+// (the camera looks down -z from z = 5 with y up).
+Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
+{
+  Vec3 L = Normalized({ -LightPosition[0], -LightPosition[1], -LightPosition[2] });
+  double attenuation = 1.0;
+  if (Spot.Enabled)
+  {
+    const Vec3 axis = Normalized({ -Spot.Position[0], -Spot.Position[1], -Spot.Position[2] });
+    L = Normalized(
+      { world[0] - Spot.Position[0], world[1] - Spot.Position[1], world[2] - Spot.Position[2] });
+    const double coneDot = Dot(L, axis);
+    attenuation =
+      coneDot >= std::cos(Spot.ConeAngle * Pi / 180) ? std::pow(coneDot, Spot.Exponent) : 0.0;
+  }
+  const Vec3 n = Normalized(nWorld);
+  const double df = std::max(0.0, attenuation * -Dot(n, L));
+  const double nl = Dot(n, L);
+  const Vec3 r{ L[0] - 2 * nl * n[0], L[1] - 2 * nl * n[1], L[2] - 2 * nl * n[2] };
+  const Vec3 v = Normalized({ -world[0], -world[1], -(world[2] - 5.0) });
+  const double sf =
+    (df > 0 ? 1.0 : 0.0) * attenuation * std::pow(std::max(0.0, Dot(r, v)), mat.SpecularPower);
+  Vec3 c;
+  for (int k = 0; k < 3; ++k)
+  {
+    c[k] = mat.Ambient * mat.AmbientColor[k] + mat.Diffuse * mat.DiffuseColor[k] * df +
+      mat.Specular * mat.SpecularColor[k] * sf;
+  }
+  return c;
+}
+
+// The expected picture for a model-space normal field, and the PSNR of an image against it
+// over the pixels well inside the rectangle.
+using NormalField = std::function<Vec3(double x, double y)>;
+
+double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
+  const Material& mat)
+{
+  vtkMatrix4x4* m = actor->GetMatrix();
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(m, inverse);
+  double sum = 0.0;
+  long count = 0;
+  for (int j = 0; j < WindowSize; ++j)
+  {
+    for (int i = 0; i < WindowSize; ++i)
+    {
+      const Hit hit = PixelHit(i, j, m);
+      if (!hit.Inside)
+      {
+        continue;
+      }
+      const Vec3 nm = field(hit.X, hit.Y);
+      // Normals transform with the inverse transpose of the model matrix.
+      Vec3 nw;
+      for (int r = 0; r < 3; ++r)
+      {
+        nw[r] = inverse->GetElement(0, r) * nm[0] + inverse->GetElement(1, r) * nm[1] +
+          inverse->GetElement(2, r) * nm[2];
+      }
+      const Vec3 expected = Shade(nw, hit.World, mat);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double e = 255.0 * std::min(1.0, std::max(0.0, expected[k]));
+        const double diff = e - image[3 * (j * WindowSize + i) + k];
+        sum += diff * diff;
+        ++count;
+      }
+    }
+  }
+  EXPECT_GT(count, 3 * 1000) << "too few pixels inside the rectangle";
+  const double mse = sum / std::max(count, 1L);
+  const double psnr = mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 99.0;
+  std::cout << "PSNR " << psnr << " dB over " << count / 3 << " pixels\n";
+  return psnr;
+}
+
+// The model-space normal of the detail surface at model point (x,y) of the rectangle,
+// through the frame T = (tx,0,0), B = (0,1,0), N = +z.
+NormalField DetailNormal(bool mirrored, double k = Strength)
+{
+  return [mirrored, k](double x, double y)
+  {
+    const double s = mirrored ? (1.0 - x) / 2 : (x + 1) / 2, t = (y + 1) / 2;
+    const Vec3 n = TangentSpaceNormal(s, t, k);
+    return Vec3{ mirrored ? -n[0] : n[0], n[1], n[2] };
+  };
+}
+
+NormalField FlatNormal()
+{
+  return [](double, double) { return Vec3{ 0, 0, 1 }; };
+}
+
+struct ErrorCounter : public vtkCommand
+{
+  static ErrorCounter* New() { return new ErrorCounter; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)++;
+    this->Last = data ? static_cast<const char*>(data) : "";
+  }
+  int Errors = 0;
+  int Warnings = 0;
+  std::string Last;
+};
+
+vtkSmartPointer<vtkSurfaceDetailMapper> MakeMapper(vtkPolyData* poly)
+{
+  auto mapper = vtkSmartPointer<vtkSurfaceDetailMapper>::New();
+  mapper->SetInputData(poly);
+  return mapper;
+}
+} // namespace
+
+TEST(vtkSurfaceDetailMapper, NormalMapMatchesAnalyticShading)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  const auto image = scene.Render();
+  EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::NormalMapping);
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  // The flat rectangle is a different picture: the test can see the detail.
+  EXPECT_LT(PSNR(image, scene.Actor, FlatNormal(), scene.Mat), 30.0);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapMirroredUsesHandedness)
+{
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+  // What a frame that ignores w (B = cross(N,T)) would show: bumps lit from below in t.
+  NormalField ignoringW = [](double x, double y)
+  {
+    const Vec3 n = TangentSpaceNormal((1.0 - x) / 2, (y + 1) / 2);
+    return Vec3{ -n[0], -n[1], n[2] };
+  };
+  EXPECT_LT(PSNR(image, scene.Actor, ignoringW, scene.Mat), 30.0);
+}
+
+// Three-component tangents, set as the point data's active tangents, are taken with w = +1.
+TEST(vtkSurfaceDetailMapper, NormalMapThreeComponentTangents)
+{
+  auto poly = MakeRectangle(false, false);
+  vtkNew<vtkFloatArray> t3;
+  t3->SetName("T3");
+  t3->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    t3->InsertNextTuple3(1, 0, 0);
+  }
+  poly->GetPointData()->SetTangents(t3);
+  auto mapper = MakeMapper(poly);
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::NormalMapping);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapGreenDown)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap(false));
+  mapper->GreenUpOff();
+  Scene scene(mapper);
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  mapper->GreenUpOn(); // reading the same map green-up must be wrong
+  const auto wrong = scene.Render();
+  EXPECT_LT(PSNR(wrong, scene.Actor, DetailNormal(false), scene.Mat), 30.0);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapStrength)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  mapper->SetNormalStrength(2.0); // the map of z = 2k*h
+  Scene scene(mapper);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false, 2 * Strength), scene.Mat), 40.0);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapSpecular)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  scene.Mat.Diffuse = 0.6;
+  scene.Mat.Specular = 0.6;
+  scene.Mat.SpecularPower = 12.0;
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  Material noSpecular = scene.Mat;
+  noSpecular.Specular = 0.0;
+  EXPECT_LT(PSNR(image, scene.Actor, DetailNormal(false), noSpecular), 30.0);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapRotatedNonUniformScale)
+{
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  scene.Actor->SetScale(0.8, 0.45, 1.7);
+  scene.Actor->RotateZ(25);
+  scene.Actor->RotateX(-35);
+  scene.Actor->RotateY(20);
+  scene.Mat.Specular = 0.4;
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+}
+
+TEST(vtkSurfaceDetailMapper, NormalMapPositionalSpotLight)
+{
+  Spot.Enabled = true;
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  scene.Mat.Specular = 0.5;
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+  Spot.Enabled = false; // the directional light's picture is another one
+  EXPECT_LT(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 30.0);
+}
+
+TEST(vtkSurfaceDetailMapper, BumpForwardDifferences)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  const auto image = scene.Render();
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  mapper->SetBumpScale(-Strength); // sunk instead of raised is another picture
+  EXPECT_LT(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 30.0);
+}
+
+TEST(vtkSurfaceDetailMapper, BumpCentralDifferencesMirroredSpecular)
+{
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferencesToCentral();
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  scene.Mat.Specular = 0.5;
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+}
+
+TEST(vtkSurfaceDetailMapper, BumpTangentFree)
+{
+  // No tangent array at all: the frame comes from screen-space derivatives.
+  auto mapper = MakeMapper(MakeRectangle(true, false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->TangentFreeOn();
+  mapper->SetDifferencesToCentral();
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  scene.Actor->RotateX(-30);
+  scene.Actor->RotateZ(15);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+  EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::BumpMapping);
+}
+
+TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
+{
+  auto poly = MakeRectangle(false);
+  auto mapper = MakeMapper(poly);
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  scene.Mat.Specular = 0.3;
+  const auto ours = scene.Render();
+  vtkNew<vtkOpenGLPolyDataMapper> plain;
+  plain->SetInputData(poly);
+  Scene reference(plain);
+  reference.Mat = scene.Mat;
+  EXPECT_EQ(ours, reference.Render());
+  EXPECT_GE(PSNR(ours, scene.Actor, FlatNormal(), scene.Mat), 40.0);
+}
+
+// Parallax with offset limiting over a constant depth d: every texture lookup moves by
+// -d * (tangential part of the view vector) in texture units, the colour texture included.
+// DepthScale is in the mesh's units, so scaling the actor by z along the rectangle's normal
+// makes the field z*d deep in the world. Returns the PSNR against that expectation with the
+// shift multiplied by shiftScale (1: the right picture).
+std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shiftScales)
+{
+  auto mapper = MakeMapper(MakeRectangle(false, false));
+  mapper->SetTechniqueToParallaxMapping();
+  constexpr double depth = 0.3;
+  mapper->SetHeightMap(MakeHeightMap(0.0)); // height 0: the whole field lies DepthScale deep
+  mapper->SetDepthScale(depth);
+  auto colour = MakeTexture(256, 3,
+    [](double s, double t, double* rgb)
+    {
+      rgb[0] = 0.5 + 0.4 * std::sin(2 * Pi * s);
+      rgb[1] = 0.5 + 0.4 * std::sin(2 * Pi * t);
+      rgb[2] = 0.5;
+    });
+  Scene scene(mapper);
+  scene.Actor->SetTexture(colour);
+  scene.Actor->RotateY(40);
+  scene.Actor->RotateX(-25);
+  scene.Actor->SetScale(1.0, 1.0, zScale);
+  scene.Mat.Ambient = 1.0;
+  scene.Mat.Diffuse = 0.0;
+  const auto image = scene.Render();
+
+  // The view vector (0,0,1) against the world images of the model's x and y axes (unit
+  // vectors: the scale is along z only), over dP/ds = dP/dt = 2 units per texture unit.
+  vtkMatrix4x4* m = scene.Actor->GetMatrix();
+  const double vx = m->GetElement(2, 0), vy = m->GetElement(2, 1);
+  std::vector<double> result;
+  for (double shiftScale : shiftScales)
+  {
+    double sum = 0;
+    long count = 0;
+    for (int j = 0; j < WindowSize; ++j)
+    {
+      for (int i = 0; i < WindowSize; ++i)
+      {
+        const Hit hit = PixelHit(i, j, m);
+        if (!hit.Inside)
+        {
+          continue;
+        }
+        const double shift = shiftScale * zScale * depth;
+        const double s = (hit.X + 1) / 2 - shift * vx / 2;
+        const double t = (hit.Y + 1) / 2 - shift * vy / 2;
+        const double e[3] = { 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t),
+          0.5 };
+        for (int k = 0; k < 3; ++k)
+        {
+          const double diff = 255.0 * e[k] - image[3 * (j * WindowSize + i) + k];
+          sum += diff * diff;
+          ++count;
+        }
+      }
+    }
+    result.push_back(10.0 * std::log10(255.0 * 255.0 / std::max(sum / std::max(count, 1L), 1e-9)));
+    std::cout << "parallax z-scale " << zScale << ", shift x" << shiftScale << ": PSNR "
+              << result.back() << " dB\n";
+  }
+  return result;
+}
+
+TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
+{
+  const auto psnr = ParallaxPSNRs(1.0, { 1.0, 0.0 });
+  EXPECT_GE(psnr[0], 40.0);
+  EXPECT_LT(psnr[1], 30.0); // without the shift the picture is clearly different
+}
+
+TEST(vtkSurfaceDetailMapper, ParallaxDepthInObjectUnits)
+{
+  // Scaled 2.5x along its normal, the field is 2.5 times deeper in the world.
+  const auto psnr = ParallaxPSNRs(2.5, { 1.0, 1.0 / 2.5 });
+  EXPECT_GE(psnr[0], 40.0);
+  EXPECT_LT(psnr[1], 30.0); // depth taken in world units instead
+}
+
+TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
+{
+  struct Case
+  {
+    const char* Name;
+    vtkSmartPointer<vtkPolyData> Poly;
+    int Technique;
+    vtkSmartPointer<vtkTexture> NormalMap;
+    vtkSmartPointer<vtkTexture> HeightMap;
+  };
+  auto twoChannel = MakeTexture(8, 2, [](double, double, double* v) { v[0] = v[1] = 0.5; });
+  const std::vector<Case> cases = {
+    { "no tangents", MakeRectangle(false, false), vtkSurfaceDetailMapper::NormalMapping,
+      MakeNormalMap(), nullptr },
+    { "no tcoords", MakeRectangle(false, true, false), vtkSurfaceDetailMapper::BumpMapping, nullptr,
+      MakeHeightMap() },
+    { "no normals", MakeRectangle(false, true, true, false), vtkSurfaceDetailMapper::NormalMapping,
+      MakeNormalMap(), nullptr },
+    { "no normal map", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping, nullptr,
+      nullptr },
+    { "no height map", MakeRectangle(false), vtkSurfaceDetailMapper::BumpMapping, nullptr,
+      nullptr },
+    { "two-channel normal map", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
+      twoChannel, nullptr },
+    { "flat interpolation", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
+      MakeNormalMap(), nullptr },
+  };
+  // One window for all cases: X servers under test do not like windows made in a burst.
+  Scene scene(nullptr);
+  for (const auto& c : cases)
+  {
+    SCOPED_TRACE(c.Name);
+    auto mapper = MakeMapper(c.Poly);
+    mapper->SetTechnique(c.Technique);
+    mapper->SetNormalMap(c.NormalMap);
+    mapper->SetHeightMap(c.HeightMap);
+    vtkNew<ErrorCounter> errors;
+    mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+    mapper->AddObserver(vtkCommand::WarningEvent, errors);
+    scene.Actor->SetMapper(mapper);
+    scene.Actor->GetProperty()->SetInterpolation(
+      std::string(c.Name) == "flat interpolation" ? VTK_FLAT : VTK_GOURAUD);
+    const auto image = scene.Render();
+    scene.Render(); // reported once, not every frame
+    EXPECT_EQ(errors->Errors, 1) << errors->Last;
+    EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::None);
+    if (c.Poly->GetPointData()->GetNormals())
+    {
+      EXPECT_GE(PSNR(image, scene.Actor, FlatNormal(), scene.Mat), 40.0);
+    }
+    else
+    {
+      // VTK's own fallback for meshes without normals still draws the lit rectangle.
+      EXPECT_GE(PSNR(image, scene.Actor, FlatNormal(), scene.Mat), 30.0);
+    }
+  }
+}
+
+TEST(vtkSurfaceDetailMapper, NonFiniteHeightsWarnOnce)
+{
+  auto heights = MakeHeightMap();
+  auto* image = vtkImageData::SafeDownCast(heights->GetInputDataObject(0, 0));
+  image->GetPointData()->GetScalars()->SetComponent(3 * 256 + 7, 0, std::nan(""));
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetHeightMap(heights);
+  mapper->SetBumpScale(Strength);
+  vtkNew<ErrorCounter> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  mapper->AddObserver(vtkCommand::WarningEvent, errors);
+  Scene scene(mapper);
+  const auto image1 = scene.Render();
+  scene.Render();
+  EXPECT_EQ(errors->Warnings, 1) << errors->Last;
+  EXPECT_EQ(errors->Errors, 0);
+  EXPECT_NE(errors->Last.find("non-finite"), std::string::npos);
+  // One bad texel spoils a few pixels around it, not the picture.
+  EXPECT_GE(PSNR(image1, scene.Actor, DetailNormal(false), scene.Mat), 35.0);
+}
+
+TEST(vtkSurfaceDetailMapper, ReliefFallsBackToParallaxWithWarning)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToReliefMapping();
+  mapper->SetHeightMap(MakeHeightMap());
+  vtkNew<ErrorCounter> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  mapper->AddObserver(vtkCommand::WarningEvent, errors);
+  Scene scene(mapper);
+  scene.Render();
+  EXPECT_EQ(errors->Errors, 0);
+  EXPECT_EQ(errors->Warnings, 1);
+  EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
+}
+
+// A 16-bit height map (read as value/65535) gives the same picture as the float one.
+TEST(vtkSurfaceDetailMapper, BumpUnsignedShortHeights)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(256, 256, 1);
+  image->AllocateScalars(VTK_UNSIGNED_SHORT, 1);
+  auto* p = static_cast<unsigned short*>(image->GetScalarPointer());
+  for (int j = 0; j < 256; ++j)
+  {
+    for (int i = 0; i < 256; ++i)
+    {
+      p[j * 256 + i] =
+        static_cast<unsigned short>(65535 * Height((i + 0.5) / 256, (j + 0.5) / 256) + 0.5);
+    }
+  }
+  vtkNew<vtkTexture> heights;
+  heights->SetInputData(image);
+  heights->InterpolateOn();
+  heights->RepeatOn();
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferencesToCentral();
+  mapper->SetHeightMap(heights);
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+}
+
+// The shader program is built once, not per frame; a technique change rebuilds it, and a
+// uniform (the strength) reuses the compiled program.
+class CountingMapper : public vtkSurfaceDetailMapper
+{
+public:
+  static CountingMapper* New();
+  vtkTypeMacro(CountingMapper, vtkSurfaceDetailMapper);
+  int Builds = 0;
+  vtkShaderProgram* TrianglesProgram() { return this->Primitives[PrimitiveTris].Program; }
+
+protected:
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    ++this->Builds;
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  }
+};
+vtkStandardNewMacro(CountingMapper);
+
+TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
+{
+  vtkNew<CountingMapper> mapper;
+  mapper->SetInputData(MakeRectangle(false));
+  mapper->SetNormalMap(MakeNormalMap());
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetTechniqueToNormalMapping();
+  Scene scene(mapper);
+  scene.Render();
+  const int first = mapper->Builds;
+  EXPECT_GE(first, 1);
+  scene.Render();
+  scene.Render();
+  EXPECT_EQ(mapper->Builds, first) << "rebuilt in a frame where nothing changed";
+  vtkShaderProgram* program = mapper->TrianglesProgram();
+  mapper->SetNormalStrength(0.5);
+  scene.Render();
+  EXPECT_EQ(mapper->TrianglesProgram(), program) << "a uniform change compiled a new program";
+  const int beforeSwitch = mapper->Builds;
+  mapper->SetTechniqueToBumpMapping();
+  scene.Render();
+  EXPECT_GT(mapper->Builds, beforeSwitch);
+  EXPECT_NE(mapper->TrianglesProgram(), program);
+  const int afterSwitch = mapper->Builds;
+  scene.Render();
+  EXPECT_EQ(mapper->Builds, afterSwitch);
+}
+
+TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
+{
+  vtkNew<vtkSurfaceDetailMapper> source;
+  source->SetTechniqueToParallaxMapping();
+  auto heights = MakeHeightMap();
+  source->SetHeightMap(heights);
+  source->SetNormalStrength(0.5);
+  source->GreenUpOff();
+  source->SetBumpScale(0.25);
+  source->SetDifferencesToCentral();
+  source->TangentFreeOn();
+  source->SetDepthScale(0.2);
+  vtkNew<vtkSurfaceDetailMapper> copy;
+  copy->ShallowCopy(source);
+  EXPECT_EQ(copy->GetTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
+  EXPECT_EQ(copy->GetHeightMap(), heights.Get());
+  EXPECT_EQ(copy->GetNormalMap(), nullptr);
+  EXPECT_EQ(copy->GetNormalStrength(), 0.5);
+  EXPECT_FALSE(copy->GetGreenUp());
+  EXPECT_EQ(copy->GetBumpScale(), 0.25);
+  EXPECT_EQ(copy->GetDifferences(), vtkSurfaceDetailMapper::Central);
+  EXPECT_TRUE(copy->GetTangentFree());
+  EXPECT_EQ(copy->GetDepthScale(), 0.2);
+}
+
+// With Technique None the triangles' program is VTK's own, to the character.
+class PlainMapperProbe : public vtkOpenGLPolyDataMapper
+{
+public:
+  static PlainMapperProbe* New();
+  vtkTypeMacro(PlainMapperProbe, vtkOpenGLPolyDataMapper);
+  vtkShaderProgram* TrianglesProgram() { return this->Primitives[PrimitiveTris].Program; }
+};
+vtkStandardNewMacro(PlainMapperProbe);
+
+TEST(vtkSurfaceDetailMapper, NoneShaderIsThePlainShader)
+{
+  auto poly = MakeRectangle(false);
+  vtkNew<CountingMapper> ours;
+  ours->SetInputData(poly);
+  ours->SetNormalMap(MakeNormalMap());
+  ours->SetHeightMap(MakeHeightMap());
+  Scene scene(ours);
+  scene.Actor->SetTexture(MakeNormalMap());
+  scene.Render();
+  vtkNew<PlainMapperProbe> plain;
+  plain->SetInputData(poly);
+  scene.Actor->SetMapper(plain);
+  scene.Render();
+  ASSERT_NE(ours->TrianglesProgram(), nullptr);
+  ASSERT_NE(plain->TrianglesProgram(), nullptr);
+  EXPECT_EQ(ours->TrianglesProgram()->GetVertexShader()->GetSource(),
+    plain->TrianglesProgram()->GetVertexShader()->GetSource());
+  EXPECT_EQ(ours->TrianglesProgram()->GetFragmentShader()->GetSource(),
+    plain->TrianglesProgram()->GetFragmentShader()->GetSource());
+  // And with a technique on, our code is there.
+  ours->SetTechniqueToNormalMapping();
+  scene.Actor->SetMapper(ours);
+  scene.Render();
+  EXPECT_NE(ours->TrianglesProgram()->GetFragmentShader()->GetSource().find("sdNormalMapTS"),
+    std::string::npos);
+}
+
+TEST(vtkSurfaceDetailMapper, PrintSelf)
+{
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetDepthScale(0.125);
+  std::ostringstream os;
+  mapper->Print(os);
+  EXPECT_NE(os.str().find("Technique: BumpMapping"), std::string::npos);
+  EXPECT_NE(os.str().find("DepthScale: 0.125"), std::string::npos);
+  EXPECT_NE(os.str().find("TangentFree: Off"), std::string::npos);
+}

@@ -1,0 +1,298 @@
+// Regression scenes for vtkSurfaceDetailMapper: one technique on one brick-textured surface
+// from vtkParametricSurfaceSource, seen head-on or obliquely, under the headlight or a
+// positional light. Arguments:
+//   --technique none|normal|bump|bump-tangent-free|parallax
+//   --surface rectangle|sphere|torus|vase
+//   --view head-on|oblique                  --light headlight|positional|spot|lightkit
+// The bricks are a procedural height field (bricks at height 1, mortar joints at 0 with a
+// bevel), a colour texture of the same layout, and the normal map vtkHeightMapToNormalMap
+// makes from the heights, so all techniques show the same raised bricks.
+
+#include "vtkSurfaceDetailMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkHeightMapToNormalMap.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightKit.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkParametricDonut.h>
+#include <vtkParametricRectangle.h>
+#include <vtkParametricRevolution.h>
+#include <vtkParametricSphere.h>
+#include <vtkParametricSurfaceSource.h>
+#include <vtkProperty.h>
+#include <vtkRegressionTestImage.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+namespace
+{
+constexpr int TextureSize = 256;
+
+// Distance (texture units) from (s,t) to the nearest brick edge, and the brick's index.
+// 4 courses of 2 bricks per texture square, every other course offset by half a brick.
+double BrickEdgeDistance(double s, double t, int& brick)
+{
+  const double rows = 4.0, perRow = 2.0;
+  const double row = std::floor(t * rows);
+  const double tr = t * rows - row;
+  const double shifted = (s + (static_cast<int>(row) % 2 ? 0.5 / perRow : 0.0)) * perRow;
+  const double col = std::floor(shifted);
+  const double sc = shifted - col;
+  brick = static_cast<int>(row) * 7 + static_cast<int>(col) % static_cast<int>(perRow);
+  const double dx = std::min(sc, 1.0 - sc) / perRow;
+  const double dy = std::min(tr, 1.0 - tr) / rows;
+  return std::min(dx, dy);
+}
+
+double BrickHeight(double s, double t)
+{
+  int brick;
+  const double d = BrickEdgeDistance(s, t, brick);
+  const double mortar = 0.008, bevel = 0.02;
+  const double x = std::min(1.0, std::max(0.0, (d - mortar) / bevel));
+  return x * x * (3 - 2 * x);
+}
+
+vtkSmartPointer<vtkImageData> MakeImage(int type, int comps)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(TextureSize, TextureSize, 1);
+  image->AllocateScalars(type, comps);
+  return image;
+}
+
+vtkSmartPointer<vtkImageData> BrickHeights()
+{
+  auto image = MakeImage(VTK_FLOAT, 1);
+  auto* h = static_cast<float*>(image->GetScalarPointer());
+  for (int j = 0; j < TextureSize; ++j)
+  {
+    for (int i = 0; i < TextureSize; ++i)
+    {
+      h[j * TextureSize + i] =
+        static_cast<float>(BrickHeight((i + 0.5) / TextureSize, (j + 0.5) / TextureSize));
+    }
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkImageData> BrickColours()
+{
+  auto image = MakeImage(VTK_UNSIGNED_CHAR, 3);
+  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int j = 0; j < TextureSize; ++j)
+  {
+    for (int i = 0; i < TextureSize; ++i)
+    {
+      const double s = (i + 0.5) / TextureSize, t = (j + 0.5) / TextureSize;
+      int brick;
+      BrickEdgeDistance(s, t, brick);
+      const double h = BrickHeight(s, t);
+      const double shade = 0.85 + 0.15 * std::sin(brick * 2.3);
+      const double brickRGB[3] = { 0.70 * shade, 0.30 * shade, 0.20 * shade };
+      const double mortarRGB[3] = { 0.80, 0.78, 0.72 };
+      for (int c = 0; c < 3; ++c)
+      {
+        const double v = h * brickRGB[c] + (1 - h) * mortarRGB[c];
+        rgb[3 * (j * TextureSize + i) + c] = static_cast<unsigned char>(255 * v + 0.5);
+      }
+    }
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+const char* Arg(int argc, char* argv[], const char* name, const char* fallback)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], name) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return fallback;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string technique = Arg(argc, argv, "--technique", "normal");
+  const std::string surface = Arg(argc, argv, "--surface", "rectangle");
+  const std::string view = Arg(argc, argv, "--view", "head-on");
+  const std::string lightName = Arg(argc, argv, "--light", "headlight");
+
+  vtkNew<vtkParametricSurfaceSource> source;
+  source->SetUResolution(64);
+  source->SetVResolution(64);
+  source->GenerateTangentsOn();
+  double depth = 0.03;     // parallax depth, object units
+  double strength = 0.012; // z = k*h over the unit texture square
+  if (surface == "rectangle")
+  {
+    vtkNew<vtkParametricRectangle> f; // seed 004's wall: x in [-2,2], y in [0,3.5]
+    source->SetParametricFunction(f);
+    source->SetTextureRepeat(2, 2);
+    depth = 0.08;
+  }
+  else if (surface == "sphere")
+  {
+    vtkNew<vtkParametricSphere> f;
+    source->SetParametricFunction(f);
+    source->SetTextureRepeat(4, 2);
+  }
+  else if (surface == "torus")
+  {
+    vtkNew<vtkParametricDonut> f;
+    source->SetParametricFunction(f);
+    source->SetTextureRepeat(6, 2);
+    source->SetUResolution(96);
+    strength = 0.008;
+    depth = 0.02;
+  }
+  else if (surface == "vase")
+  {
+    vtkNew<vtkParametricRevolution> f;
+    source->SetParametricFunction(f);
+    source->SetTextureRepeat(4, 3);
+  }
+  else
+  {
+    std::cerr << "unknown surface " << surface << "\n";
+    return 1;
+  }
+  source->Update();
+
+  auto heights = BrickHeights();
+  vtkNew<vtkHeightMapToNormalMap> toNormals;
+  toNormals->SetInputData(heights);
+  toNormals->SetStrength(strength);
+  toNormals->SetSchemeToCentral();
+  toNormals->SetWrap(vtkHeightMapToNormalMap::Repeat);
+  toNormals->Update();
+
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  mapper->SetNormalMap(MakeTexture(toNormals->GetOutput()));
+  mapper->SetHeightMap(MakeTexture(heights));
+  mapper->SetBumpScale(strength);
+  mapper->SetDifferencesToCentral();
+  mapper->SetDepthScale(depth);
+  if (technique == "normal")
+  {
+    mapper->SetTechniqueToNormalMapping();
+  }
+  else if (technique == "bump" || technique == "bump-tangent-free")
+  {
+    mapper->SetTechniqueToBumpMapping();
+    mapper->SetTangentFree(technique == "bump-tangent-free");
+  }
+  else if (technique == "parallax")
+  {
+    mapper->SetTechniqueToParallaxMapping();
+  }
+  else if (technique != "none")
+  {
+    std::cerr << "unknown technique " << technique << "\n";
+    return 1;
+  }
+
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->SetTexture(MakeTexture(BrickColours()));
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(0.85);
+  actor->GetProperty()->SetSpecular(0.25);
+  actor->GetProperty()->SetSpecularPower(30);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.18, 0.2, 0.24);
+  renderer->ResetCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (surface == "torus")
+  {
+    camera->Elevation(-55); // the donut is z up: look at it from the side, a little above
+    camera->OrthogonalizeViewUp();
+  }
+  if (view == "oblique")
+  {
+    camera->Azimuth(40);
+    camera->Elevation(20);
+    camera->OrthogonalizeViewUp();
+  }
+  if (lightName == "lightkit")
+  {
+    renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLightKit> kit; // key light upper left, fill, back lights and headlight
+    kit->AddLightsToRenderer(renderer);
+  }
+  if (lightName == "positional" || lightName == "spot")
+  {
+    // A point light above, right of and in front of the object as the camera sees it, at
+    // twice the object's size: the lit side of every brick faces up and to the right.
+    renderer->AutomaticLightCreationOff();
+    double bounds[6], centre[3], right[3], up[3], front[3];
+    source->GetOutput()->GetBounds(bounds);
+    const double size = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+      std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+    camera->GetViewUp(up);
+    camera->GetDirectionOfProjection(front);
+    vtkMath::Cross(front, up, right);
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->PositionalOn();
+    // The spot's cone (8 degrees, fall-off exponent 4) lights a disc in the middle.
+    light->SetConeAngle(lightName == "spot" ? 8 : 180);
+    light->SetExponent(4);
+    double position[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+      position[k] = centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
+    }
+    light->SetPosition(position);
+    light->SetFocalPoint(centre);
+    renderer->AddLight(light);
+  }
+  renderer->ResetCamera();
+  camera->Zoom(surface == "rectangle" && view == "head-on" ? 1.6 : 1.3);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(300, 300);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  const int result = vtkRegressionTestImageThreshold(window, 0.05);
+  if (result == vtkRegressionTester::DO_INTERACTOR)
+  {
+    // Only on request (-I): an interactor opens one more X connection per test.
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    interactor->SetRenderWindow(window);
+    interactor->Start();
+  }
+  return !result;
+}
