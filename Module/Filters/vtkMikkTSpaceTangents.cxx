@@ -212,6 +212,12 @@ void Weld(MikkMesh& mesh)
     }
     const vtkIdType i = keys[k].second;
     mesh.Weld[i] = i;
+    // NaN equals nothing, and all-NaN points would share a hash: no quadratic scan.
+    if (!(Equal(mesh.P[i], mesh.P[i]) && Equal(mesh.N[i], mesh.N[i]) &&
+          mesh.T[i][0] == mesh.T[i][0] && mesh.T[i][1] == mesh.T[i][1]))
+    {
+      continue;
+    }
     for (vtkIdType j = runStart; j < k; ++j)
     {
       const vtkIdType o = keys[j].second;

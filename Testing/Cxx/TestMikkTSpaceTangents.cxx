@@ -568,6 +568,23 @@ TEST(vtkMikkTSpaceTangents, StressNonFiniteCoordinates)
   ExpectValidFrames(run.Output());
 }
 
+// Many NaN points at once (they must not be compared with each other, nor hang the weld).
+TEST(vtkMikkTSpaceTangents, StressManyNaNPoints)
+{
+  auto plane = MakePlane(300);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); i += 2)
+  {
+    plane->GetPoints()->SetPoint(i, nan, nan, nan);
+    plane->GetPointData()->GetNormals()->SetTuple3(i, nan, nan, nan);
+    plane->GetPointData()->GetTCoords()->SetTuple2(i, nan, nan);
+  }
+  FilterRun run(plane);
+  EXPECT_EQ(run.Errors->Count, 0);
+  EXPECT_GT(run.Warnings->Count, 0);
+  ExpectValidFrames(run.Output());
+}
+
 // A random triangle soup over few distinct values: duplicates, degenerate and
 // non-manifold triangles, shared edges used in the same direction, mixed orientation.
 TEST(vtkMikkTSpaceTangents, StressRandomNonManifoldSoup)
