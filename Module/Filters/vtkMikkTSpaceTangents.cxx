@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,11 @@ inline bool NotZero(double x)
 
 // A few units of single-precision rounding, relative.
 constexpr double CancellationEps = 4.0 * FLT_EPSILON;
+
+// Fans up to this many triangles use quadratic scans (faster when small); larger ones sort.
+constexpr size_t SmallFan = 32;
+// Groups larger than this are not split into sub-groups (see EvaluateVertices).
+constexpr size_t MaxSubGroupTest = 256;
 
 inline V3 Sub(const V3& a, const V3& b)
 {
@@ -625,10 +631,11 @@ private:
   /// The triangles around one vertex and how they connect there.
   struct Fan
   {
-    std::vector<vtkIdType> Tri;        // good triangles, increasing
-    std::vector<int> Corner;           // the vertex's corner in each
-    std::vector<vtkIdType> Next, Prev; // the other two vertices, in winding order
-    std::vector<int> Out, In;          // neighbour across (v, next) and (prev, v), or -1
+    std::vector<vtkIdType> Tri;                  // good triangles, increasing
+    std::vector<int> Corner;                     // the vertex's corner in each
+    std::vector<vtkIdType> Next, Prev;           // the other two vertices, in winding order
+    std::vector<int> Out, In;                    // neighbour across (v, next) and (prev, v), or -1
+    std::vector<std::array<vtkIdType, 3>> Slots; // large fans: (other vertex, entry, direction)
   };
 
   // Triangles are neighbours across an edge they use in opposite directions. Where more
@@ -653,24 +660,63 @@ private:
       fan.Next[a] = w[i < 2 ? i + 1 : 0];
       fan.Prev[a] = w[i > 0 ? i - 1 : 2];
     }
+    if (k <= SmallFan)
+    {
+      for (size_t a = 0; a < k; ++a)
+      {
+        for (size_t b = a + 1; b < k && fan.Out[a] < 0; ++b)
+        {
+          if (fan.In[b] < 0 && fan.Prev[b] == fan.Next[a])
+          {
+            fan.Out[a] = static_cast<int>(b);
+            fan.In[b] = static_cast<int>(a);
+          }
+        }
+        for (size_t b = a + 1; b < k && fan.In[a] < 0; ++b)
+        {
+          if (fan.Out[b] < 0 && fan.Next[b] == fan.Prev[a])
+          {
+            fan.In[a] = static_cast<int>(b);
+            fan.Out[b] = static_cast<int>(a);
+          }
+        }
+      }
+      return;
+    }
+    // Large fans: the same greedy pairing, per edge in triangle order, is a first-in
+    // first-out match of the two directions (the earliest unpaired triangle running the
+    // other way takes the current one).
+    fan.Slots.clear();
     for (size_t a = 0; a < k; ++a)
     {
-      for (size_t b = a + 1; b < k && fan.Out[a] < 0; ++b)
+      fan.Slots.push_back({ fan.Next[a], static_cast<vtkIdType>(a), 0 });
+      fan.Slots.push_back({ fan.Prev[a], static_cast<vtkIdType>(a), 1 });
+    }
+    std::sort(fan.Slots.begin(), fan.Slots.end());
+    std::vector<int> pending[2];
+    size_t head[2];
+    for (size_t g = 0; g < fan.Slots.size();)
+    {
+      size_t e = g;
+      pending[0].clear();
+      pending[1].clear();
+      head[0] = head[1] = 0;
+      for (; e < fan.Slots.size() && fan.Slots[e][0] == fan.Slots[g][0]; ++e)
       {
-        if (fan.In[b] < 0 && fan.Prev[b] == fan.Next[a])
+        const int a = static_cast<int>(fan.Slots[e][1]);
+        const int d = static_cast<int>(fan.Slots[e][2]);
+        if (head[1 - d] < pending[1 - d].size())
         {
-          fan.Out[a] = static_cast<int>(b);
-          fan.In[b] = static_cast<int>(a);
+          const int b = pending[1 - d][head[1 - d]++];
+          (d == 0 ? fan.Out[a] : fan.In[a]) = b;
+          (d == 0 ? fan.In[b] : fan.Out[b]) = a;
+        }
+        else
+        {
+          pending[d].push_back(a);
         }
       }
-      for (size_t b = a + 1; b < k && fan.In[a] < 0; ++b)
-      {
-        if (fan.Out[b] < 0 && fan.Next[b] == fan.Prev[a])
-        {
-          fan.In[a] = static_cast<int>(b);
-          fan.Out[b] = static_cast<int>(a);
-        }
-      }
+      g = e;
     }
   }
 
@@ -703,7 +749,9 @@ private:
       return;
     }
     std::vector<char> assigned(3 * n, 0);
-    Fan fan;
+    // A vertex seeds many groups; large fans are built once and kept.
+    Fan small;
+    std::unordered_map<vtkIdType, Fan> large;
     std::vector<int> stack;
     for (vtkIdType g = 0; g < n; ++g)
     {
@@ -714,7 +762,13 @@ private:
         {
           continue;
         }
-        this->BuildFan(v, fan);
+        const bool big = this->VertexTriOffsets[v + 1] - this->VertexTriOffsets[v] >
+          static_cast<vtkIdType>(SmallFan);
+        Fan& fan = big ? large[v] : small;
+        if (!big || fan.Tri.empty())
+        {
+          this->BuildFan(v, fan);
+        }
         const bool orient = this->Orient(g);
         stack.assign(1,
           static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), g) - fan.Tri.begin()));
@@ -770,6 +824,22 @@ private:
     return NormalizeSafe(sum);
   }
 
+  // A quad's diagonal corner gets a space from each of its triangles: the reference
+  // averages them unless equal, and the later group's orientation wins.
+  static void Merge(TSpace& out, const TSpace& in)
+  {
+    if (!Equal(out.Os, in.Os))
+    {
+      out.Os =
+        NormalizeSafe(V3{ out.Os[0] + in.Os[0], out.Os[1] + in.Os[1], out.Os[2] + in.Os[2] });
+    }
+    if (in.Group > out.Group)
+    {
+      out.Orient = in.Orient;
+      out.Group = in.Group;
+    }
+  }
+
   // Per vertex: groups are the linked triangles of one orientation that contain a
   // triangle with usable derivatives (the group's seed: its first triangle); each member's
   // frame is the average over its sub-group (the members whose projected directions are
@@ -781,7 +851,8 @@ private:
       [&](vtkIdType begin, vtkIdType end)
       {
         Fan fan;
-        std::vector<int> comp, members, subset;
+        std::vector<int> comp, members, subset, byComponent;
+        std::vector<size_t> bucket;
         std::vector<V3> os, ot;
         std::vector<double> angle;
         std::vector<char> contributes;
@@ -845,23 +916,38 @@ private:
           {
             comp[a] = root(static_cast<int>(a));
           }
-          for (size_t r = 0; r < k; ++r)
+          // Members of each component in triangle order (a counting sort by root, which
+          // is the component's first entry).
+          bucket.assign(k + 1, 0);
+          for (size_t a = 0; a < k; ++a)
+          {
+            ++bucket[comp[a] + 1];
+          }
+          for (size_t a = 0; a < k; ++a)
+          {
+            bucket[a + 1] += bucket[a];
+          }
+          byComponent.resize(k);
+          for (size_t a = 0; a < k; ++a)
+          {
+            byComponent[bucket[comp[a]]++] = static_cast<int>(a);
+          }
+          for (size_t r = 0, first = 0; r < k; ++r)
           {
             if (comp[r] != static_cast<int>(r))
             {
               continue;
             }
-            members.clear();
+            // bucket[r] is now the end of r's members; they start where the last root ended
+            members.assign(byComponent.begin() + first, byComponent.begin() + bucket[r]);
+            first = bucket[r];
             int seed = -1;
-            for (size_t a = r; a < k; ++a)
+            for (int a : members)
             {
-              if (comp[a] == static_cast<int>(r))
+              if (contributes[a])
               {
-                members.push_back(static_cast<int>(a));
-                if (seed < 0 && contributes[a])
-                {
-                  seed = static_cast<int>(a);
-                }
+                seed = a;
+                break;
               }
             }
             if (seed < 0)
@@ -875,8 +961,13 @@ private:
               return !contributes[f] || !contributes[a] || face[f] == face[a] ||
                 (Dot(os[f], os[a]) > this->ThresholdCos && Dot(ot[f], ot[a]) > this->ThresholdCos);
             };
+            // The pairwise test is quadratic; above MaxSubGroupTest members (a pole shared
+            // by hundreds of triangles) the group is taken whole. At the default 180 degrees
+            // it only separates exactly opposite directions, which at such a pole are
+            // opposite up to rounding, and the reference's choice there is rounding noise.
             bool allJoin = true;
-            for (size_t x = 0; x < members.size() && allJoin; ++x)
+            for (size_t x = 0; x < members.size() && members.size() <= MaxSubGroupTest && allJoin;
+                 ++x)
             {
               for (size_t y = x + 1; y < members.size() && allJoin; ++y)
               {
@@ -899,28 +990,40 @@ private:
                 }
                 result = Average(subset, os, angle, contributes);
               }
-              // A quad's diagonal corner gets a space from each of its triangles: the
-              // reference averages them unless equal; the later group's orientation wins.
               const vtkIdType c = this->Tris[fan.Tri[f]].Corner[fan.Corner[f]];
-              auto same = std::find_if(written.begin(), written.end(),
-                [c](const std::pair<vtkIdType, TSpace>& e) { return e.first == c; });
+              auto same = written.end();
+              if (k <= SmallFan)
+              {
+                same = std::find_if(written.begin(), written.end(),
+                  [c](const std::pair<vtkIdType, TSpace>& e) { return e.first == c; });
+              }
               if (same == written.end())
               {
                 written.push_back({ c, TSpace{ result, orient, key } });
                 continue;
               }
-              TSpace& out = same->second;
-              if (!Equal(out.Os, result))
+              Merge(same->second, TSpace{ result, orient, key });
+            }
+          }
+          if (k > SmallFan)
+          {
+            // Large fans: merge the quads' pairs by sorting rather than searching.
+            std::sort(written.begin(), written.end(),
+              [](const std::pair<vtkIdType, TSpace>& x, const std::pair<vtkIdType, TSpace>& y)
+              { return x.first < y.first; });
+            size_t kept = 0;
+            for (size_t e = 0; e < written.size(); ++e)
+            {
+              if (kept > 0 && written[kept - 1].first == written[e].first)
               {
-                out.Os = NormalizeSafe(
-                  V3{ out.Os[0] + result[0], out.Os[1] + result[1], out.Os[2] + result[2] });
+                Merge(written[kept - 1].second, written[e].second);
               }
-              if (key > out.Group)
+              else
               {
-                out.Orient = orient;
-                out.Group = key;
+                written[kept++] = written[e];
               }
             }
+            written.resize(kept);
           }
           for (const auto& e : written)
           {
@@ -1146,26 +1249,81 @@ int vtkMikkTSpaceTangents::RequestData(
   vtkIdType* cornerPoint = connectivity->GetPointer(0);
   std::copy(mesh.FacePoints.begin(), mesh.FacePoints.end(), cornerPoint);
   std::vector<vtkIdType> extraCount(nPts + 1, 0);
-  auto sameFrame = [&](vtkIdType a, vtkIdType b) {
-    return std::memcmp(cornerTangents[a].data(), cornerTangents[b].data(), 4 * sizeof(float)) == 0;
+  // The distinct frames at point p in order of first appearance: ranks[k] is the frame
+  // number of p's k-th corner, firsts[d] the first corner with frame d.
+  auto rankFrames = [&](vtkIdType p, std::vector<vtkIdType>& ranks, std::vector<vtkIdType>& firsts,
+                      std::vector<vtkIdType>& order, std::vector<vtkIdType>& groups)
+  {
+    const vtkIdType off = pointCornerOffsets[p];
+    const vtkIdType m = pointCornerOffsets[p + 1] - off;
+    auto frame = [&](vtkIdType k) { return cornerTangents[pointCorners[off + k]].data(); };
+    ranks.resize(m);
+    firsts.clear();
+    if (m <= static_cast<vtkIdType>(SmallFan))
+    {
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        size_t d = 0;
+        while (d < firsts.size() &&
+          std::memcmp(frame(k), cornerTangents[firsts[d]].data(), 4 * sizeof(float)) != 0)
+        {
+          ++d;
+        }
+        if (d == firsts.size())
+        {
+          firsts.push_back(pointCorners[off + k]);
+        }
+        ranks[k] = static_cast<vtkIdType>(d);
+      }
+      return;
+    }
+    // Many corners (a pole): sort by frame, then number the frames by first appearance.
+    order.resize(m);
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      order[k] = k;
+    }
+    std::sort(order.begin(), order.end(),
+      [&](vtkIdType x, vtkIdType y)
+      {
+        const int c = std::memcmp(frame(x), frame(y), 4 * sizeof(float));
+        return c < 0 || (c == 0 && x < y);
+      });
+    groups.clear(); // first corner position of each frame, in frame order
+    for (vtkIdType i = 0; i < m; ++i)
+    {
+      if (i == 0 || std::memcmp(frame(order[i - 1]), frame(order[i]), 4 * sizeof(float)) != 0)
+      {
+        groups.push_back(order[i]);
+      }
+      ranks[order[i]] = static_cast<vtkIdType>(groups.size()) - 1;
+    }
+    std::vector<vtkIdType> byFirst(groups.size());
+    for (size_t g = 0; g < groups.size(); ++g)
+    {
+      byFirst[g] = static_cast<vtkIdType>(g);
+    }
+    std::sort(byFirst.begin(), byFirst.end(),
+      [&](vtkIdType x, vtkIdType y) { return groups[x] < groups[y]; });
+    std::vector<vtkIdType> rankOf(groups.size());
+    for (size_t r = 0; r < byFirst.size(); ++r)
+    {
+      rankOf[byFirst[r]] = static_cast<vtkIdType>(r);
+      firsts.push_back(pointCorners[off + groups[byFirst[r]]]);
+    }
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      ranks[k] = rankOf[ranks[k]];
+    }
   };
   vtkSMPTools::For(0, nPts,
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<vtkIdType> distinct;
+      std::vector<vtkIdType> ranks, firsts, order, groups;
       for (vtkIdType p = begin; p < end; ++p)
       {
-        distinct.clear();
-        for (vtkIdType k = pointCornerOffsets[p]; k < pointCornerOffsets[p + 1]; ++k)
-        {
-          const vtkIdType c = pointCorners[k];
-          if (std::none_of(
-                distinct.begin(), distinct.end(), [&](vtkIdType d) { return sameFrame(c, d); }))
-          {
-            distinct.push_back(c);
-          }
-        }
-        extraCount[p + 1] = distinct.empty() ? 0 : static_cast<vtkIdType>(distinct.size()) - 1;
+        rankFrames(p, ranks, firsts, order, groups);
+        extraCount[p + 1] = firsts.empty() ? 0 : static_cast<vtkIdType>(firsts.size()) - 1;
       }
     });
   for (vtkIdType p = 0; p < nPts; ++p)
@@ -1183,34 +1341,30 @@ int vtkMikkTSpaceTangents::RequestData(
   vtkSMPTools::For(0, nPts,
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<vtkIdType> distinct;
+      std::vector<vtkIdType> ranks, firsts, order, groups;
       for (vtkIdType p = begin; p < end; ++p)
       {
-        distinct.clear();
-        for (vtkIdType k = pointCornerOffsets[p]; k < pointCornerOffsets[p + 1]; ++k)
-        {
-          const vtkIdType c = pointCorners[k];
-          size_t d = 0;
-          while (d < distinct.size() && !sameFrame(c, distinct[d]))
-          {
-            ++d;
-          }
-          if (d == distinct.size())
-          {
-            distinct.push_back(c);
-            const vtkIdType id = d == 0 ? p : nPts + extraCount[p] + static_cast<vtkIdType>(d) - 1;
-            std::copy_n(cornerTangents[c].data(), 4, tOut + 4 * id);
-            if (d > 0)
-            {
-              extraSource[id - nPts] = p;
-            }
-          }
-          cornerPoint[c] = d == 0 ? p : nPts + extraCount[p] + static_cast<vtkIdType>(d) - 1;
-        }
-        if (distinct.empty())
+        rankFrames(p, ranks, firsts, order, groups);
+        if (firsts.empty())
         {
           // Not on any polygon: any frame orthogonal to the normal.
           FinalTangent(mesh.N[p], TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, tOut + 4 * p);
+          continue;
+        }
+        auto idOf = [&](vtkIdType d) { return d == 0 ? p : nPts + extraCount[p] + d - 1; };
+        for (size_t d = 0; d < firsts.size(); ++d)
+        {
+          const vtkIdType id = idOf(static_cast<vtkIdType>(d));
+          std::copy_n(cornerTangents[firsts[d]].data(), 4, tOut + 4 * id);
+          if (d > 0)
+          {
+            extraSource[id - nPts] = p;
+          }
+        }
+        const vtkIdType off = pointCornerOffsets[p];
+        for (size_t k = 0; k < ranks.size(); ++k)
+        {
+          cornerPoint[pointCorners[off + k]] = idOf(ranks[k]);
         }
       }
     });

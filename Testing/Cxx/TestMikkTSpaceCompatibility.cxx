@@ -316,7 +316,7 @@ TEST(MikkTSpaceCompatibility, ZeroAreaTextureTrianglesOnMirroredShell)
 // direction (paired greedily in triangle order), duplicate triangles, triangles with a
 // repeated vertex (degenerate), mixed texture orientations. Continuous random values keep
 // the averages well-conditioned; handedness checks the grouping on every corner.
-TEST(MikkTSpaceCompatibility, RandomNonManifoldSoup)
+void ExpectAgreementOnRandomSoup(int nPoints, int nTriangles, const std::string& tag)
 {
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(11);
@@ -330,7 +330,6 @@ TEST(MikkTSpaceCompatibility, RandomNonManifoldSoup)
   vtkNew<vtkFloatArray> normals, tcoords;
   normals->SetNumberOfComponents(3);
   tcoords->SetNumberOfComponents(2);
-  const int nPoints = 300;
   for (int i = 0; i < nPoints; ++i)
   {
     points->InsertNextPoint(uniform(), uniform(), 0.3 * uniform());
@@ -340,7 +339,7 @@ TEST(MikkTSpaceCompatibility, RandomNonManifoldSoup)
     tcoords->InsertNextTuple2(uniform(), uniform());
   }
   vtkNew<vtkCellArray> polys;
-  for (int t = 0; t < 3000; ++t)
+  for (int t = 0; t < nTriangles; ++t)
   {
     vtkIdType ids[3];
     for (auto& id : ids)
@@ -354,7 +353,55 @@ TEST(MikkTSpaceCompatibility, RandomNonManifoldSoup)
   soup->SetPolys(polys);
   soup->GetPointData()->SetNormals(normals);
   soup->GetPointData()->SetTCoords(tcoords);
-  ExpectAgreement(soup, "soup-random");
+  ExpectAgreement(soup, tag);
+}
+
+TEST(MikkTSpaceCompatibility, RandomNonManifoldSoup)
+{
+  ExpectAgreementOnRandomSoup(300, 3000, "soup-random");
+}
+
+// About 90 triangles per vertex: the filter's large-fan path (edges paired by sorting).
+TEST(MikkTSpaceCompatibility, RandomNonManifoldSoupLargeFans)
+{
+  ExpectAgreementOnRandomSoup(100, 3000, "soup-random-large");
+}
+
+// A disc of 600 triangles around one shared centre point, texture bent so that the
+// directions vary around it: a group larger than the sub-group test's limit.
+TEST(MikkTSpaceCompatibility, LargeFan)
+{
+  const int n = 600;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  vtkNew<vtkFloatArray> normals, tcoords;
+  normals->SetNumberOfComponents(3);
+  tcoords->SetNumberOfComponents(2);
+  auto add = [&](double x, double y)
+  {
+    points->InsertNextPoint(x, y, 0.1 * x * y);
+    double nn[3] = { -0.1 * y, -0.1 * x, 1.0 };
+    vtkMath::Normalize(nn);
+    normals->InsertNextTuple(nn);
+    tcoords->InsertNextTuple2(x + 0.2 * y * y, y + 0.1 * x);
+  };
+  add(0.0, 0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    add(std::cos(2 * Pi * i / n), std::sin(2 * Pi * i / n));
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < n; ++i)
+  {
+    const vtkIdType t[3] = { 0, 1 + i, 1 + (i + 1) % n };
+    polys->InsertNextCell(3, t);
+  }
+  vtkNew<vtkPolyData> disc;
+  disc->SetPoints(points);
+  disc->SetPolys(polys);
+  disc->GetPointData()->SetNormals(normals);
+  disc->GetPointData()->SetTCoords(tcoords);
+  ExpectAgreement(disc, "largefan");
 }
 
 // The comparison must be able to fail: VTK's vtkPolyDataTangents (unweighted average, no

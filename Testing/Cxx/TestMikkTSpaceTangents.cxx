@@ -585,6 +585,48 @@ TEST(vtkMikkTSpaceTangents, StressManyNaNPoints)
   ExpectValidFrames(run.Output());
 }
 
+// 200000 triangles around one point, and as many meeting on one edge: no quadratic work.
+TEST(vtkMikkTSpaceTangents, StressHugeFanAndEdge)
+{
+  const int n = 200000;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals, tcoords;
+  normals->SetNumberOfComponents(3);
+  tcoords->SetNumberOfComponents(2);
+  auto add = [&](double x, double y, double z)
+  {
+    points->InsertNextPoint(x, y, z);
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+    tcoords->InsertNextTuple2(x, y);
+    return points->GetNumberOfPoints() - 1;
+  };
+  const vtkIdType centre = add(0.0, 0.0, 0.0);
+  const vtkIdType end = add(1.0, 0.0, 0.0);
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ring;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * Pi * i / n;
+    ring.push_back(add(std::cos(a), std::sin(a), 0.0));
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    const vtkIdType fan[3] = { centre, ring[i], ring[(i + 1) % n] };
+    polys->InsertNextCell(3, fan);
+    // a book of triangles on the edge (centre, end), alternating direction
+    const vtkIdType page[3] = { i % 2 ? end : centre, i % 2 ? centre : end, ring[i] };
+    polys->InsertNextCell(3, page);
+  }
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->SetTCoords(tcoords);
+  FilterRun run(pd);
+  EXPECT_EQ(run.Errors->Count, 0);
+  ExpectValidFrames(run.Output());
+}
+
 // A random triangle soup over few distinct values: duplicates, degenerate and
 // non-manifold triangles, shared edges used in the same direction, mixed orientation.
 TEST(vtkMikkTSpaceTangents, StressRandomNonManifoldSoup)
