@@ -36,13 +36,23 @@ function(_surfacedetail_add_program exe)
 endfunction()
 
 function(surfacedetail_add_gtest exe)
-  cmake_parse_arguments(arg "" "" "SOURCES;MODULES;LIBRARIES;LABELS" ${ARGN})
+  cmake_parse_arguments(arg "" "LABELS;FIXTURES_REQUIRED" "SOURCES;MODULES;LIBRARIES" ${ARGN})
   _surfacedetail_add_program(${exe} SOURCES ${arg_SOURCES} MODULES ${arg_MODULES}
     LIBRARIES GTest::gtest GTest::gtest_main ${arg_LIBRARIES})
+  # gtest_discover_tests flattens PROPERTIES into name/value pairs, so every value must be a
+  # single word (a list would shift the pairs and lose what follows): one label per program.
+  if(arg_LABELS)
+    set(properties LABELS ${arg_LABELS})
+  else()
+    set(properties LABELS unit)
+  endif()
+  if(arg_FIXTURES_REQUIRED)
+    list(APPEND properties FIXTURES_REQUIRED ${arg_FIXTURES_REQUIRED})
+  endif()
   gtest_discover_tests(${exe}
     DISCOVERY_MODE PRE_TEST
     DISCOVERY_TIMEOUT 60
-    PROPERTIES LABELS "unit;${arg_LABELS}")
+    PROPERTIES ${properties})
 endfunction()
 
 function(surfacedetail_add_image_test name)
