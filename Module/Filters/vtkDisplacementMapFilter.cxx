@@ -22,6 +22,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -735,57 +736,55 @@ struct MeshNormalWorker
 };
 
 // Seam candidates: a texture seam cuts the mesh, so its duplicated points lie on the
-// mesh's boundary. A point is a candidate unless every edge around it is shared by exactly
-// two of its polygons (or it has no polygon at all).
-struct BoundaryWorker
+// mesh's boundary. One flat sweep over the polygons' directed edges, no links and no
+// per-point sort: each edge a->b adds a hash of b to a's sum and subtracts a hash of a from
+// b's. Where every edge around a point is shared by two consistently oriented polygons
+// (an interior point), the sums cancel exactly; a boundary edge leaves a non-zero sum
+// (unless 64-bit hashes cancel by chance). Inconsistent orientation or non-manifold edges
+// only add candidates, which the position test then discards. Points without polygons are
+// candidates too. Serial, and integer sums commute: the flags never depend on threads.
+std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
 {
-  const PolyLinks& Mesh;
-  unsigned char* Flags;
-
-  void operator()(vtkIdType begin, vtkIdType end) const
+  // splitmix64's finaliser: neighbouring ids get unrelated hashes.
+  auto hash = [](vtkIdType id)
   {
-    constexpr int maxEdges = 64;
-    vtkIdType neighbours[maxEdges];
-    for (vtkIdType i = begin; i < end; ++i)
+    std::uint64_t z = static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  };
+  std::vector<std::uint64_t> sum(numPts, 0);
+  std::vector<unsigned char> used(numPts, 0);
+  for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
+  {
+    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
+    if (e - b < 2)
     {
-      int count = 0;
-      bool boundary = this->Mesh.LinkOffsets[i] == this->Mesh.LinkOffsets[i + 1];
-      for (vtkIdType l = this->Mesh.LinkOffsets[i]; !boundary && l < this->Mesh.LinkOffsets[i + 1];
-           ++l)
-      {
-        const vtkIdType cell = this->Mesh.Links[l];
-        const vtkIdType b = this->Mesh.Offsets[cell], e = this->Mesh.Offsets[cell + 1];
-        const vtkIdType size = e - b;
-        for (vtkIdType k = b; k < e; ++k)
-        {
-          if (this->Mesh.Conn[k] != i)
-          {
-            continue;
-          }
-          if (count + 2 > maxEdges)
-          {
-            boundary = true;
-            break;
-          }
-          neighbours[count++] = this->Mesh.Conn[b + (k - b + 1) % size];
-          neighbours[count++] = this->Mesh.Conn[b + (k - b + size - 1) % size];
-          break;
-        }
-      }
-      if (!boundary)
-      {
-        // Interior: every neighbour across an edge appears exactly twice.
-        std::sort(neighbours, neighbours + count);
-        for (int a = 0; a < count && !boundary; a += 2)
-        {
-          boundary = a + 1 >= count || neighbours[a] != neighbours[a + 1] ||
-            (a + 2 < count && neighbours[a + 2] == neighbours[a]);
-        }
-      }
-      this->Flags[i] = boundary ? 1 : 0;
+      continue;
+    }
+    vtkIdType from = mesh.Conn[e - 1];
+    std::uint64_t fromHash = hash(from);
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      const vtkIdType to = mesh.Conn[k];
+      const std::uint64_t toHash = hash(to);
+      sum[from] += toHash;
+      sum[to] -= fromHash;
+      used[to] = 1;
+      from = to;
+      fromHash = toHash;
     }
   }
-};
+  std::vector<vtkIdType> candidates;
+  for (vtkIdType i = 0; i < numPts; ++i)
+  {
+    if (sum[i] != 0 || !used[i])
+    {
+      candidates.push_back(i);
+    }
+  }
+  return candidates;
+}
 
 // Groups the points @a ids that lie within @a tol of one another (transitively): returns,
 // per entry of @a ids, the index of its group's first entry. Serial and in id order, so
@@ -1169,7 +1168,7 @@ int vtkDisplacementMapFilter::RequestData(
     PolyLinks mesh;
     if (needLinks || this->MergeSeams || useDerivs)
     {
-      mesh.Build(input->GetPolys(), numPts, needLinks || this->MergeSeams);
+      mesh.Build(input->GetPolys(), numPts, needLinks);
       ctx.Polys = &mesh;
     }
     if (useDerivs)
@@ -1232,17 +1231,7 @@ int vtkDisplacementMapFilter::RequestData(
     std::vector<std::pair<vtkIdType, vtkIdType>> groups;
     if (this->MergeSeams)
     {
-      std::vector<unsigned char> flags(numPts);
-      BoundaryWorker boundary{ mesh, flags.data() };
-      vtkSMPTools::For(0, numPts, Grain, boundary);
-      std::vector<vtkIdType> candidates;
-      for (vtkIdType i = 0; i < numPts; ++i)
-      {
-        if (flags[i])
-        {
-          candidates.push_back(i);
-        }
-      }
+      const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
         const std::vector<vtkIdType> rep =
