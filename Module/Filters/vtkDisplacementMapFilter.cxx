@@ -450,7 +450,6 @@ struct Context
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
-  double* Distance = nullptr;            // d per point, kept for the seam pass
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -591,6 +590,17 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
   }
 }
 
+// The displacement d at point @a i, with the height h and its derivatives in (s,t); one
+// function so that the seam pass sees the very values of pass 1.
+template <typename T, typename R>
+inline double Displacement(
+  const Context<R>& c, const Texels<T>& tex, vtkIdType i, double& h, double& hs, double& ht)
+{
+  SampleHeight(tex, c.Wrap, c.Interpolation, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h, hs, ht);
+  // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
+  return Finite(c.Scale * (h - c.Midlevel));
+}
+
 // Pass 1: displacement, and the analytic normals (Approximate, Exact).
 template <typename T, typename R>
 struct DisplaceWorker
@@ -610,16 +620,10 @@ struct DisplaceWorker
       InputNormal(c, i, n);
       const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
       double h, hs, ht;
-      SampleHeight(this->Tex, c.Wrap, c.Interpolation, s, t, h, hs, ht);
-      // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
-      const double d = Finite(c.Scale * (h - c.Midlevel));
+      const double d = Displacement(c, this->Tex, i, h, hs, ht);
       const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
       const double offset[3] = { d * n[0], d * n[1], d * n[2] };
       WritePoint(c, i, offset);
-      if (c.Distance)
-      {
-        c.Distance[i] = d;
-      }
       if (!analytic)
       {
         continue;
@@ -1200,60 +1204,9 @@ int vtkDisplacementMapFilter::RequestData(
     {
       EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
     }
-    std::unique_ptr<double[]> distance;
-    if (this->MergeSeams)
-    {
-      distance.reset(new double[numPts]);
-      ctx.Distance = distance.get();
-    }
-
-    // Pass 1: points, and the normals of the analytic modes.
-    vtkIdType nonFinite = 0;
-    auto run = [&](auto* data)
-    {
-      using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
-      Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel, true };
-      if (type == VTK_FLOAT || type == VTK_DOUBLE)
-      {
-        const vtkMTimeType changed = std::max(image->GetMTime(), scalars->GetMTime());
-        if (this->NonFiniteScanArray != scalars || this->NonFiniteScanTime != changed ||
-          this->NonFiniteScanComponent != this->Component)
-        {
-          this->NonFiniteCount = CountNonFinite(tex);
-          this->NonFiniteScanArray = scalars;
-          this->NonFiniteScanTime = changed;
-          this->NonFiniteScanComponent = this->Component;
-        }
-        nonFinite = this->NonFiniteCount;
-        tex.Clean = nonFinite == 0;
-      }
-      DisplaceWorker<T, R> worker{ ctx, tex };
-      vtkSMPTools::For(0, numPts, Grain, worker);
-    };
-    switch (type)
-    {
-      case VTK_UNSIGNED_CHAR:
-        run(static_cast<const unsigned char*>(raw));
-        break;
-      case VTK_UNSIGNED_SHORT:
-        run(static_cast<const unsigned short*>(raw));
-        break;
-      case VTK_FLOAT:
-        run(static_cast<const float*>(raw));
-        break;
-      default:
-        run(static_cast<const double*>(raw));
-        break;
-    }
-    if (nonFinite > 0)
-    {
-      vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
-                      << " of the height map are NaN or infinite; they are treated as Midlevel ("
-                      << this->Midlevel << ").");
-    }
-
-    // Coincident points (seams, poles) as groups of (representative, member) in increasing
-    // order, so that every sum over a group has one order whatever the thread count.
+    // Coincident points (seams, poles; from the input points alone) as groups of (representative,
+    // member) in increasing order, so that every sum over a group has one order whatever the thread
+    // count.
     std::vector<std::pair<vtkIdType, vtkIdType>> groups;
     if (this->MergeSeams)
     {
@@ -1294,29 +1247,74 @@ int vtkDisplacementMapFilter::RequestData(
         b = e;
       }
     };
-    // One displacement per group: the mean of the members' own.
-    forEachGroup(
-      [&](size_t b, size_t e)
+    // Pass 1: points, and the normals of the analytic modes.
+    vtkIdType nonFinite = 0;
+    auto run = [&](auto* data)
+    {
+      using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
+      Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel, true };
+      if (type == VTK_FLOAT || type == VTK_DOUBLE)
       {
-        double mean[3] = { 0.0, 0.0, 0.0 };
-        for (size_t g = b; g < e; ++g)
+        const vtkMTimeType changed = std::max(image->GetMTime(), scalars->GetMTime());
+        if (this->NonFiniteScanArray != scalars || this->NonFiniteScanTime != changed ||
+          this->NonFiniteScanComponent != this->Component)
         {
-          double n[3];
-          InputNormal(ctx, groups[g].second, n);
+          this->NonFiniteCount = CountNonFinite(tex);
+          this->NonFiniteScanArray = scalars;
+          this->NonFiniteScanTime = changed;
+          this->NonFiniteScanComponent = this->Component;
+        }
+        nonFinite = this->NonFiniteCount;
+        tex.Clean = nonFinite == 0;
+      }
+      DisplaceWorker<T, R> worker{ ctx, tex };
+      vtkSMPTools::For(0, numPts, Grain, worker);
+      // One displacement per group: the mean of the members' own.
+      forEachGroup(
+        [&](size_t b, size_t e)
+        {
+          double mean[3] = { 0.0, 0.0, 0.0 };
+          for (size_t g = b; g < e; ++g)
+          {
+            double n[3], h, hs, ht;
+            InputNormal(ctx, groups[g].second, n);
+            const double d = Displacement(ctx, tex, groups[g].second, h, hs, ht);
+            for (int k = 0; k < 3; ++k)
+            {
+              mean[k] += d * n[k];
+            }
+          }
           for (int k = 0; k < 3; ++k)
           {
-            mean[k] += distance[groups[g].second] * n[k];
+            mean[k] /= static_cast<double>(e - b);
           }
-        }
-        for (int k = 0; k < 3; ++k)
-        {
-          mean[k] /= static_cast<double>(e - b);
-        }
-        for (size_t g = b; g < e; ++g)
-        {
-          WritePoint(ctx, groups[g].second, mean);
-        }
-      });
+          for (size_t g = b; g < e; ++g)
+          {
+            WritePoint(ctx, groups[g].second, mean);
+          }
+        });
+    };
+    switch (type)
+    {
+      case VTK_UNSIGNED_CHAR:
+        run(static_cast<const unsigned char*>(raw));
+        break;
+      case VTK_UNSIGNED_SHORT:
+        run(static_cast<const unsigned short*>(raw));
+        break;
+      case VTK_FLOAT:
+        run(static_cast<const float*>(raw));
+        break;
+      default:
+        run(static_cast<const double*>(raw));
+        break;
+    }
+    if (nonFinite > 0)
+    {
+      vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
+                      << " of the height map are NaN or infinite; they are treated as Midlevel ("
+                      << this->Midlevel << ").");
+    }
 
     if (this->NormalMode == Mesh)
     {
