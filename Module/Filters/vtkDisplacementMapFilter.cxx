@@ -475,10 +475,9 @@ inline void WritePoint(const Context<R>& c, vtkIdType i, const double offset[3])
   }
 }
 
-// Normalises @a m and writes it (the input normal where @a m has no direction), then the
-// tangent re-orthogonalised to it with its handedness kept.
+// Normalises @a m and writes it (the input normal where @a m has no direction).
 template <typename R>
-inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 {
   if (FastNormalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
   {
@@ -492,10 +491,12 @@ inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
   {
     c.OutNormals->Set(i, k, m[k]);
   }
-  if (!c.OutTangents)
-  {
-    return;
-  }
+}
+
+// The tangent re-orthogonalised to the unit normal @a m, its handedness kept.
+template <typename R>
+inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
+{
   const int tnc = c.OutTangents->NC;
   double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
   for (int k = 0; k < tnc; ++k)
@@ -513,6 +514,16 @@ inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
   for (int k = 0; k < tnc; ++k)
   {
     c.OutTangents->Set(i, k, tg[k]);
+  }
+}
+
+template <typename R>
+inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+{
+  WriteNormal(c, i, m);
+  if (c.OutTangents)
+  {
+    WriteTangent(c, i, m);
   }
 }
 
@@ -614,82 +625,111 @@ struct DisplaceWorker
     const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
-    for (vtkIdType i = begin; i < end; ++i)
+    // Blocks of points, each in three short loops (displace and find the direction; normalise;
+    // the tangents) rather than one long one: the square roots and divisions of neighbouring
+    // points then overlap instead of waiting on one another.
+    constexpr vtkIdType block = 128;
+    double directions[block][3];
+    for (vtkIdType first = begin; first < end; first += block)
     {
-      double n[3];
-      InputNormal(c, i, n);
-      const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
-      double h, hs, ht;
-      const double d = Displacement(c, this->Tex, i, h, hs, ht);
-      const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
-      const double offset[3] = { d * n[0], d * n[1], d * n[2] };
-      WritePoint(c, i, offset);
+      const vtkIdType last = std::min(end, first + block);
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        this->Direction(i, analytic, exact, directions[i - first]);
+      }
       if (!analytic)
       {
         continue;
       }
-      double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-      if (c.DPdu)
+      for (vtkIdType i = first; i < last; ++i)
       {
-        c.DPdu->Get3(i, Ps);
-        c.DPdv->Get3(i, Pt);
-        for (int k = 0; k < 3; ++k)
+        WriteNormal(c, i, directions[i - first]);
+      }
+      if (c.OutTangents)
+      {
+        for (vtkIdType i = first; i < last; ++i)
         {
-          Ps[k] *= c.DerivativeScale[0];
-          Pt[k] *= c.DerivativeScale[1];
+          WriteTangent(c, i, directions[i - first]);
         }
       }
-      if (!c.DPdu || exact)
+    }
+  }
+
+  // Displaces point @a i and, in the analytic modes, returns its new normal's direction.
+  void Direction(vtkIdType i, bool analytic, bool exact, double m[3]) const
+  {
+    const Context<R>& c = this->C;
+    double n[3];
+    InputNormal(c, i, n);
+    const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
+    double h, hs, ht;
+    const double d = Displacement(c, this->Tex, i, h, hs, ht);
+    const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
+    const double offset[3] = { d * n[0], d * n[1], d * n[2] };
+    WritePoint(c, i, offset);
+    if (!analytic)
+    {
+      return;
+    }
+    double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
+    if (c.DPdu)
+    {
+      c.DPdu->Get3(i, Ps);
+      c.DPdv->Get3(i, Pt);
+      for (int k = 0; k < 3; ++k)
       {
-        FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+        Ps[k] *= c.DerivativeScale[0];
+        Pt[k] *= c.DerivativeScale[1];
       }
-      // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
-      RemoveNormalPart(n, Ps);
-      RemoveNormalPart(n, Pt);
-      double base[3];
-      Cross(Ps, Pt, base);
-      const double area = Dot(n, base);
-      const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
-      double m[3];
-      if (exact)
+    }
+    if (!c.DPdu || exact)
+    {
+      FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+    }
+    // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
+    RemoveNormalPart(n, Ps);
+    RemoveNormalPart(n, Pt);
+    double base[3];
+    Cross(Ps, Pt, base);
+    const double area = Dot(n, base);
+    const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
+    if (exact)
+    {
+      RemoveNormalPart(n, Ns);
+      RemoveNormalPart(n, Nt);
+      double qs[3], qt[3];
+      for (int k = 0; k < 3; ++k)
       {
-        RemoveNormalPart(n, Ns);
-        RemoveNormalPart(n, Nt);
-        double qs[3], qt[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
-          qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
-        }
-        // Only the direction matters: scaling first keeps the cross product finite.
-        ScaleToUnitMax(qs);
-        ScaleToUnitMax(qt);
-        Cross(qs, qt, m);
+        qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
+        qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
       }
-      else
+      // Only the direction matters: scaling first keeps the cross product finite.
+      ScaleToUnitMax(qs);
+      ScaleToUnitMax(qt);
+      Cross(qs, qt, m);
+    }
+    else
+    {
+      double nxPs[3], nxPt[3];
+      Cross(n, Ps, nxPs);
+      Cross(n, Pt, nxPt);
+      const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
+      const double a = area * inv, bs = ds * inv, bt = dt * inv;
+      for (int k = 0; k < 3; ++k)
       {
-        double nxPs[3], nxPt[3];
-        Cross(n, Ps, nxPs);
-        Cross(n, Pt, nxPt);
-        const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
-        const double a = area * inv, bs = ds * inv, bt = dt * inv;
-        for (int k = 0; k < 3; ++k)
-        {
-          m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
-        }
+        m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
       }
-      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
-      if (degenerate)
-      {
-        std::copy(n, n + 3, m);
-      }
-      else if (area < 0.0)
-      {
-        m[0] = -m[0];
-        m[1] = -m[1];
-        m[2] = -m[2];
-      }
-      WriteNormalAndTangent(c, i, m);
+    }
+    const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
+    if (degenerate)
+    {
+      std::copy(n, n + 3, m);
+    }
+    else if (area < 0.0)
+    {
+      m[0] = -m[0];
+      m[1] = -m[1];
+      m[2] = -m[2];
     }
   }
 };
