@@ -551,7 +551,17 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
       }
     }
   }
-  std::sort(neighbours, neighbours + count);
+  // Insertion sort: a dozen entries, mostly in order already.
+  for (int a = 1; a < count; ++a)
+  {
+    const vtkIdType x = neighbours[a];
+    int b = a;
+    for (; b > 0 && neighbours[b - 1] > x; --b)
+    {
+      neighbours[b] = neighbours[b - 1];
+    }
+    neighbours[b] = x;
+  }
 
   double pi[3], ni[3];
   c.Points->Get3(i, pi);
