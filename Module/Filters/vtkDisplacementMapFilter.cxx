@@ -745,12 +745,13 @@ struct DisplaceWorker
 };
 
 // Mesh normals: area-weighted sum of the displaced polygons around each point, each
-// polygon oriented as its points' input normals.
+// polygon oriented as its points' input normals. The polygons' normals first, each once.
 template <typename R>
-struct MeshNormalWorker
+struct MeshPolygonNormalWorker
 {
   const Context<R>& C;
   const ArrayReader<R>& Moved;
+  double* CellNormals;
 
   void PolygonNormal(vtkIdType cell, double out[3]) const
   {
@@ -795,6 +796,23 @@ struct MeshNormalWorker
     }
   }
 
+  // Each polygon's normal, once.
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      this->PolygonNormal(cell, this->CellNormals + 3 * cell);
+    }
+  }
+};
+
+// Each point's normal: the sum of its polygons' in increasing polygon order.
+template <typename R>
+struct MeshPointNormalWorker
+{
+  const Context<R>& C;
+  const double* CellNormals;
+
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     const PolyLinks& mesh = *this->C.Polys;
@@ -803,8 +821,7 @@ struct MeshNormalWorker
       double sum[3] = { 0.0, 0.0, 0.0 };
       for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
       {
-        double x[3];
-        this->PolygonNormal(mesh.Links[l], x);
+        const double* x = this->CellNormals + 3 * mesh.Links[l];
         sum[0] += x[0];
         sum[1] += x[1];
         sum[2] += x[2];
@@ -1369,7 +1386,10 @@ int vtkDisplacementMapFilter::RequestData(
     if (this->NormalMode == Mesh)
     {
       ArrayReader<R> moved(outPoints->GetData());
-      MeshNormalWorker<R> worker{ ctx, moved };
+      std::vector<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
+      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
+      vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
+      MeshPointNormalWorker<R> worker{ ctx, cellNormals.data() };
       vtkSMPTools::For(0, numPts, Grain, worker);
     }
 
