@@ -16,6 +16,11 @@ packages=(
   # issue 5: the displacement benchmark's time-vs-error plot
   python3-matplotlib
 )
+# issue 4: node runs the reference MikkTSpace (npm package "mikktspace") in the tests. Only
+# when the commands are missing: a node from elsewhere (e.g. NodeSource, which bundles npm
+# and conflicts with Debian's npm package) is fine.
+if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 
 missing=()
 for p in "${packages[@]}"; do

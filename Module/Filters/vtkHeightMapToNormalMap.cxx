@@ -2,6 +2,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkEndian.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -45,25 +48,24 @@ void HeightNormalisation(double& scale, double& offset)
   offset = -lo * scale;
 }
 
-// Output encoding: floats keep 0.5*n + 0.5, integers round it to nearest on their full range.
-template <typename OutT, typename Real>
-inline OutT Quantise(Real e)
-{
-  if (std::is_floating_point<OutT>::value)
-  {
-    return static_cast<OutT>(e);
-  }
-  const Real top = static_cast<Real>(std::numeric_limits<OutT>::max());
-  const Real q = e * top + Real(0.5);
-  return static_cast<OutT>(std::min(std::max(q, Real(0)), top));
-}
-
 template <typename Real>
 struct RowCache
 {
   std::array<std::vector<Real>, 3> Rows;
   std::array<int, 3> Tags{ { -1, -1, -1 } };
-  std::vector<Real> Gx, Gy;
+  std::vector<Real> Gx, Gy, B, A;
+  std::vector<uint32_t> Words32; // packed quantised texels (8-bit outputs)
+  std::vector<uint64_t> Words64; // packed quantised texels (16-bit outputs)
+  // What this thread saw: non-finite heights in the rows it read, and (floating-point input
+  // with OutputRelief) heights outside [0,1] among the texels it wrote.
+  bool NonFinite = false;
+  vtkIdType OutOfRange = 0;
+};
+
+struct KernelReport
+{
+  bool NonFinite = false;
+  vtkIdType OutOfRange = 0;
 };
 
 template <typename InT, typename Real, typename OutT>
@@ -92,6 +94,10 @@ struct NormalMapKernel
     const size_t n = static_cast<size_t>(this->I1 - this->I0 + 1);
     c.Gx.resize(n);
     c.Gy.resize(n);
+    c.B.resize(n);
+    c.A.resize(this->OutComps == 4 ? n : 0);
+    c.Words32.resize(sizeof(OutT) == 1 ? n : 0);
+    c.Words64.resize(sizeof(OutT) == 2 ? n : 0);
   }
 
   // Row r of the height map as Real, padded with the wrapped texel on each side so that the
@@ -113,9 +119,27 @@ struct NormalMapKernel
     Real* row = c.Rows[b].data();
     const InT* src = this->In + static_cast<size_t>(r) * this->W * this->InStride;
     const int stride = this->InStride;
-    for (int k = 0; k < this->W; ++k)
+    if (stride == 1)
     {
-      row[k + 1] = static_cast<Real>(src[static_cast<size_t>(k) * stride]);
+      std::copy(src, src + this->W, row + 1); // vectorised conversion of the common case
+    }
+    else
+    {
+      for (int k = 0; k < this->W; ++k)
+      {
+        row[k + 1] = static_cast<Real>(src[static_cast<size_t>(k) * stride]);
+      }
+    }
+    if constexpr (std::is_floating_point<InT>::value)
+    {
+      // NaN fails the comparison too; a count (not a branch) keeps the loop vectorised.
+      const Real big = std::numeric_limits<Real>::max();
+      int bad = 0;
+      for (int k = 1; k <= this->W; ++k)
+      {
+        bad += std::abs(row[k]) <= big ? 0 : 1;
+      }
+      c.NonFinite = c.NonFinite || bad > 0;
     }
     row[0] = row[vtkSurfaceDetail::WrapIndex(-1, this->W, this->Wrap) + 1];
     row[this->W + 1] = row[vtkSurfaceDetail::WrapIndex(this->W, this->W, this->Wrap) + 1];
@@ -142,7 +166,7 @@ struct NormalMapKernel
         : this->Row(c, keep[0], keep) + 1 + this->I0;
       this->Slopes(m, c0, p, n, gx, gy);
       OutT* out = this->Out + static_cast<size_t>(j - this->J0) * n * this->OutComps;
-      this->Encode(c0, gx, gy, n, out);
+      this->Encode(c, c0, n, out);
     }
   }
 
@@ -190,59 +214,109 @@ struct NormalMapKernel
     }
   }
 
-  void Encode(const Real* c0, const Real* gx, const Real* gy, int n, OutT* out) const
+  // Two passes so that the arithmetic vectorises: unit normals into planar scratch rows,
+  // then quantisation into the interleaved output.
+  void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
   {
     const Real lim = static_cast<Real>(MaxSlope);
     const Real half = Real(0.5);
     const Real ySign = this->GreenUp ? Real(-1) : Real(1);
-    const int nc = this->OutComps;
+    Real* r = c.Gx.data(); // the slopes are overwritten by the colours, texel by texel
+    Real* g = c.Gy.data();
+    Real* b = c.B.data();
     for (int i = 0; i < n; ++i)
     {
-      const Real x = -std::min(std::max(gx[i], -lim), lim);
-      const Real y = ySign * std::min(std::max(gy[i], -lim), lim);
-      const Real len = std::sqrt(x * x + y * y + Real(1));
-      out[static_cast<size_t>(i) * nc] = Quantise<OutT>(half * (x / len) + half);
-      out[static_cast<size_t>(i) * nc + 1] = Quantise<OutT>(half * (y / len) + half);
-      out[static_cast<size_t>(i) * nc + 2] = Quantise<OutT>(half * (Real(1) / len) + half);
+      const Real x = -std::min(std::max(r[i], -lim), lim);
+      const Real y = ySign * std::min(std::max(g[i], -lim), lim);
+      // One division per texel, as GPUs normalise (v * 1/|v|): the three divisions of
+      // v/|v| cost more than everything else in the loop.
+      const Real inv = Real(1) / std::sqrt(x * x + y * y + Real(1));
+      r[i] = half * (x * inv) + half;
+      g[i] = half * (y * inv) + half;
+      b[i] = half * inv + half;
     }
+    const int nc = this->OutComps;
+    Real* planes[4] = { r, g, b, c.A.data() };
     if (nc == 4)
     {
+      vtkIdType outside = 0;
       for (int i = 0; i < n; ++i)
       {
         const Real depth = Real(1) - (c0[i] * this->HScale + this->HOffset);
-        out[static_cast<size_t>(i) * 4 + 3] =
-          Quantise<OutT>(std::min(std::max(depth, Real(0)), Real(1)));
+        outside += (depth < Real(0) || depth > Real(1)) ? 1 : 0;
+        planes[3][i] = std::min(std::max(depth, Real(0)), Real(1));
+      }
+      c.OutOfRange += outside;
+    }
+    if constexpr (std::is_floating_point<OutT>::value)
+    {
+      for (int k = 0; k < nc; ++k)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          out[nc * i + k] = static_cast<OutT>(planes[k][i]);
+        }
+      }
+    }
+    else
+    {
+      // Round to nearest on the type's range (values are in [0,1]: adding 0.5 and
+      // truncating rounds), packing each texel's components into one word so that both the
+      // conversion and the packing vectorise and the interleaved store is one per texel.
+      using Word = typename std::conditional<sizeof(OutT) == 1, uint32_t, uint64_t>::type;
+      constexpr int bits = 8 * sizeof(OutT);
+      const Real top = static_cast<Real>(std::numeric_limits<OutT>::max());
+      Word* words = nullptr;
+      if constexpr (sizeof(OutT) == 1)
+      {
+        words = c.Words32.data();
+      }
+      else
+      {
+        words = c.Words64.data();
+      }
+      for (int i = 0; i < n; ++i)
+      {
+        words[i] = 0;
+      }
+      for (int k = 0; k < nc; ++k)
+      {
+        const Real* src = planes[k];
+        for (int i = 0; i < n; ++i)
+        {
+          words[i] |= static_cast<Word>(static_cast<int32_t>(src[i] * top + Real(0.5)))
+            << (bits * k);
+        }
+      }
+      this->Interleave(words, n, out);
+    }
+  }
+
+  // Stores packed texels: a whole word per texel; with three components that word also
+  // covers the next texel's first component, which the next store rewrites, so the last
+  // texel is stored component by component.
+  template <typename Word>
+  void Interleave(const Word* words, int n, OutT* out) const
+  {
+    const int nc = this->OutComps;
+    int first = 0; // the texels before it were stored whole
+#ifndef VTK_WORDS_BIGENDIAN
+    // Little-endian: component k is the k-th OutT of the word, in memory order.
+    first = std::max(nc == 4 ? n : n - 1, 0);
+    for (int i = 0; i < first; ++i)
+    {
+      std::memcpy(out + static_cast<size_t>(nc) * i, words + i, sizeof(Word));
+    }
+#endif
+    for (int i = first; i < n; ++i)
+    {
+      for (int k = 0; k < nc; ++k)
+      {
+        out[static_cast<size_t>(nc) * i + k] =
+          static_cast<OutT>(words[i] >> (8 * sizeof(OutT) * k));
       }
     }
   }
-};
-
-// Counts the non-finite heights and the finite ones outside [0,1].
-template <typename Real>
-struct HeightCensus
-{
-  const Real* In;
-  int Stride;
-  vtkSMPThreadLocal<vtkIdType> NonFinite, OutOfRange;
-
-  void Initialize()
-  {
-    this->NonFinite.Local() = 0;
-    this->OutOfRange.Local() = 0;
-  }
-  void operator()(vtkIdType begin, vtkIdType end)
-  {
-    vtkIdType bad = 0, outside = 0;
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      const Real v = this->In[k * this->Stride];
-      bad += std::isfinite(v) ? 0 : 1;
-      outside += (v < Real(0) || v > Real(1)) ? 1 : 0;
-    }
-    this->NonFinite.Local() += bad;
-    this->OutOfRange.Local() += outside;
-  }
-  void Reduce() {}
 };
 
 // Replaces each non-finite height by the mean of the finite ones among the eight texels its
@@ -313,7 +387,7 @@ struct Job
 };
 
 template <typename InT, typename OutT>
-void RunKernel(const InT* in, int stride, const Job& job)
+KernelReport RunKernel(const InT* in, int stride, const Job& job)
 {
   using Real = typename std::conditional<std::is_same<InT, double>::value, double, float>::type;
   double scale, offset;
@@ -338,66 +412,60 @@ void RunKernel(const InT* in, int stride, const Job& job)
   kernel.HScale = static_cast<Real>(scale);
   kernel.HOffset = static_cast<Real>(offset);
   vtkSMPTools::For(job.OutExt[2], job.OutExt[3] + 1, kernel);
+  KernelReport report;
+  for (const RowCache<Real>& c : kernel.Cache)
+  {
+    report.NonFinite = report.NonFinite || c.NonFinite;
+    report.OutOfRange += c.OutOfRange;
+  }
+  return report;
 }
 
 template <typename InT>
-void DispatchOutput(const InT* in, int stride, const Job& job)
+KernelReport DispatchOutput(const InT* in, int stride, const Job& job)
 {
   switch (job.OutputScalarType)
   {
     case VTK_FLOAT:
-      RunKernel<InT, float>(in, stride, job);
-      break;
+      return RunKernel<InT, float>(in, stride, job);
     case VTK_UNSIGNED_SHORT:
-      RunKernel<InT, unsigned short>(in, stride, job);
-      break;
+      return RunKernel<InT, unsigned short>(in, stride, job);
     default:
-      RunKernel<InT, unsigned char>(in, stride, job);
-      break;
+      return RunKernel<InT, unsigned char>(in, stride, job);
   }
 }
 
-// Floating-point heights are checked first: non-finite ones are repaired in a copy (the
-// input stays untouched), and out-of-range ones are reported when they would be clamped.
+// Floating-point heights: the kernel notes non-finite heights as it reads them. Only then
+// (rarely) are they counted, repaired in a copy (the input stays untouched) and the map
+// computed again; heights clamped into the relief's [0,1] are reported.
 template <typename Real>
 void RunFloating(
   vtkHeightMapToNormalMap* self, const Real* in, int stride, const Job& job, bool relief)
 {
-  HeightCensus<Real> census;
-  census.In = in;
-  census.Stride = stride;
-  const vtkIdType n = static_cast<vtkIdType>(job.W) * job.H;
-  vtkSMPTools::For(0, n, census);
-  vtkIdType nonFinite = 0, outside = 0;
-  for (vtkIdType v : census.NonFinite)
+  KernelReport report = DispatchOutput(in, stride, job);
+  if (report.NonFinite)
   {
-    nonFinite += v;
+    const vtkIdType n = static_cast<vtkIdType>(job.W) * job.H;
+    std::vector<Real> repaired(static_cast<size_t>(n));
+    vtkIdType nonFinite = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      repaired[k] = in[k * stride];
+      nonFinite += std::isfinite(repaired[k]) ? 0 : 1;
+    }
+    vtkWarningWithObjectMacro(
+      self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
+            << "finite neighbours.");
+    RepairHeights(repaired, job.W, job.H, job.Wrap);
+    report = DispatchOutput(repaired.data(), 1, job);
   }
-  for (vtkIdType v : census.OutOfRange)
-  {
-    outside += v;
-  }
-  if (relief && outside > 0)
+  if (relief && report.OutOfRange > 0)
   {
     vtkWarningWithObjectMacro(
-      self, << outside << " height(s) lie outside [0,1]; their relief depth 1 - h is clamped to "
-            << "[0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength instead.");
+      self, << report.OutOfRange << " height(s) lie outside [0,1]; their relief depth 1 - h is "
+            << "clamped to [0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength "
+            << "instead.");
   }
-  if (nonFinite == 0)
-  {
-    DispatchOutput(in, stride, job);
-    return;
-  }
-  vtkWarningWithObjectMacro(
-    self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
-          << "finite neighbours.");
-  std::vector<Real> repaired(static_cast<size_t>(n));
-  for (vtkIdType k = 0; k < n; ++k)
-  {
-    repaired[k] = in[k * stride];
-  }
-  RepairHeights(repaired, job.W, job.H, job.Wrap);
-  DispatchOutput(repaired.data(), 1, job);
 }
 
 template <typename InT>
@@ -497,6 +565,9 @@ int vtkHeightMapToNormalMap::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
+  // The previous map's memory is reused when nobody else holds it (as
+  // vtkImageData::AllocateScalars does): a fresh 4096^2 array costs page faults every run.
+  vtkSmartPointer<vtkDataArray> previous = output->GetPointData()->GetScalars();
   output->Initialize();
   if (!input)
   {
@@ -558,8 +629,14 @@ int vtkHeightMapToNormalMap::RequestData(
   }
   output->SetExtent(outExt);
   const int comps = this->OutputRelief ? 4 : 3;
-  vtkSmartPointer<vtkDataArray> map =
-    vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(this->OutputScalarType));
+  const bool reuse = previous && previous->GetReferenceCount() == 1 &&
+    previous->GetDataType() == this->OutputScalarType && previous->HasStandardMemoryLayout();
+  vtkSmartPointer<vtkDataArray> map = reuse ? previous.Get() : nullptr;
+  previous = nullptr;
+  if (!map)
+  {
+    map.TakeReference(vtkDataArray::CreateDataArray(this->OutputScalarType));
+  }
   map->SetName(this->OutputRelief ? "ReliefMap" : "NormalMap");
   map->SetNumberOfComponents(comps);
   map->SetNumberOfTuples(output->GetNumberOfPoints());

@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
+#include <vtkSOADataArrayTemplate.h>
 #include <vtkSignedCharArray.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
@@ -347,7 +348,8 @@ TEST(TestHeightMapToNormalMap, PlaneIsExactAtEverySizeAndScheme)
 //   (0,2): ddx = 4*(0.5 - 1.0) = -2,       ddy = 4*(0.5 - 1.0) = -2
 //   (3,2): ddx wraps to column 0: 4*(1.0 - 0.5) = 2, ddy = 0
 //   every other texel: ddx = ddy = 0.
-// n = (-ddx, -ddy, 1)/|(-ddx, -ddy, 1)|, stored as 0.5*n + 0.5, all in float as the Cg does:
+// n = (-ddx, -ddy, 1) normalised as Cg's normalize does, v * (1/|v|), stored as 0.5*n + 0.5,
+// all in float:
 //   (1,0): (0.75, 0, 1)/1.25 = (3/5, 0, 4/5)      (2,3): (0, 0.75, 1)/1.25 = (0, 3/5, 4/5)
 //   (0,2): (2, 2, 1)/3 = (2/3, 2/3, 1/3)          (0,1): (0, -2, 1)/sqrt(5)
 //   (2,0): (-0.75, -0.75, 1)/sqrt(2.125)          (3,2): (-2, 0, 1)/sqrt(5)
@@ -358,21 +360,40 @@ TEST(TestHeightMapToNormalMap, ForwardIsTheSeedsFormulaToTheBit)
       1.0, 0.5, 0.5, 0.5, //
       0.5, 0.5, 0.5, 0.5, //
       0.5, 0.5, 0.3125, 0.5 });
-  const float r5 = std::sqrt(5.0f), r2125 = std::sqrt(2.125f);
-  // {i, j, nx, ny, nz}: the unit normals above, each component rounded once to float.
+  // {i, j, ddx, ddy} from the hand working above; every other texel has ddx = ddy = 0.
   struct Texel
   {
     int I, J;
-    float N[3];
+    float Ddx, Ddy;
   };
-  const std::vector<Texel> special = {
-    { 1, 0, { 3.0f / 5.0f, 0.0f, 4.0f / 5.0f } },
-    { 2, 0, { -0.75f / r2125, -0.75f / r2125, 1.0f / r2125 } },
-    { 2, 3, { 0.0f, 3.0f / 5.0f, 4.0f / 5.0f } },
-    { 0, 1, { 0.0f, -2.0f / r5, 1.0f / r5 } },
-    { 0, 2, { 2.0f / 3.0f, 2.0f / 3.0f, 1.0f / 3.0f } },
-    { 3, 2, { -2.0f / r5, 0.0f, 1.0f / r5 } },
+  const std::vector<Texel> slopes = { { 1, 0, -0.75f, 0.0f }, { 2, 0, 0.75f, 0.75f },
+    { 2, 3, 0.0f, -0.75f }, { 0, 1, 0.0f, 2.0f }, { 0, 2, -2.0f, -2.0f }, { 3, 2, 2.0f, 0.0f } };
+  auto normal = [&](int i, int j, float n[3])
+  {
+    float ddx = 0.0f, ddy = 0.0f;
+    for (const Texel& t : slopes)
+    {
+      if (t.I == i && t.J == j)
+      {
+        ddx = t.Ddx;
+        ddy = t.Ddy;
+      }
+    }
+    const float inv = 1.0f / std::sqrt(ddx * ddx + ddy * ddy + 1.0f);
+    n[0] = -ddx * inv;
+    n[1] = -ddy * inv;
+    n[2] = inv;
   };
+  // The worked fractions, to float precision: the table above is what the arithmetic gives.
+  float n[3];
+  normal(1, 0, n);
+  EXPECT_FLOAT_EQ(n[0], 3.0f / 5.0f);
+  EXPECT_FLOAT_EQ(n[2], 4.0f / 5.0f);
+  normal(0, 2, n);
+  EXPECT_FLOAT_EQ(n[1], 2.0f / 3.0f);
+  EXPECT_FLOAT_EQ(n[2], 1.0f / 3.0f);
+  normal(0, 1, n);
+  EXPECT_FLOAT_EQ(n[1], -2.0f / std::sqrt(5.0f));
   Settings s;
   s.Scheme = vtkHeightMapToNormalMap::Forward;
   auto map = MakeMap(image, s);
@@ -382,14 +403,7 @@ TEST(TestHeightMapToNormalMap, ForwardIsTheSeedsFormulaToTheBit)
   {
     for (int i = 0; i < 4; ++i)
     {
-      float n[3] = { 0.0f, 0.0f, 1.0f };
-      for (const Texel& t : special)
-      {
-        if (t.I == i && t.J == j)
-        {
-          std::memcpy(n, t.N, sizeof(n));
-        }
-      }
+      normal(i, j, n);
       for (int c = 0; c < 3; ++c)
       {
         EXPECT_EQ(out->GetTypedComponent(j * 4 + i, c), 0.5f * n[c] + 0.5f)
@@ -625,6 +639,22 @@ TEST(TestHeightMapToNormalMap, ReliefAlphaIsDepth)
   for (vtkIdType id = 0; id < rgba->GetNumberOfTuples(); ++id)
   {
     EXPECT_EQ(rgba->GetTypedComponent(id, 3), 255 - in->GetValue(id));
+  }
+
+  // 16 bits: depth (255 - v)/255 is exactly 257*(255 - v)/65535.
+  s.Type = VTK_UNSIGNED_SHORT;
+  auto map16 = MakeMap(bytes, s);
+  auto* rgba16 = vtkUnsignedShortArray::SafeDownCast(map16->GetPointData()->GetScalars());
+  ASSERT_NE(rgba16, nullptr);
+  for (vtkIdType id = 0; id < rgba16->GetNumberOfTuples(); ++id)
+  {
+    EXPECT_EQ(rgba16->GetTypedComponent(id, 3), 257 * (255 - in->GetValue(id)));
+    for (int c = 0; c < 3; ++c)
+    {
+      // The same normal as the 8-bit map, to within the 8-bit map's half step.
+      EXPECT_NEAR(rgba16->GetTypedComponent(id, c) / 65535.0,
+        rgba->GetTypedComponent(id, c) / 255.0, 0.5 / 255 + 1e-6);
+    }
   }
 
   auto floats = FromRows(3, 1, { 0.25, 1.5, -0.5 });
@@ -939,5 +969,92 @@ TEST(TestHeightMapToNormalMap, SettersAndPrintSelf)
          "GreenUp: Off", "OutputScalarType: unsigned short", "OutputRelief: On" })
   {
     EXPECT_NE(text.find(expect), std::string::npos) << expect << "\n" << text;
+  }
+}
+
+// The map lies where the heights lie: origin, spacing and extent come from the input.
+TEST(TestHeightMapToNormalMap, OutputKeepsTheInputGeometry)
+{
+  auto image = Sample<vtkFloatArray>(6, 5, [](double s, double t) { return s * t; });
+  image->SetOrigin(1.0, 2.0, 0.0);
+  image->SetSpacing(0.5, 0.25, 1.0);
+  auto map = MakeMap(image, Settings());
+  double origin[3], spacing[3];
+  map->GetOrigin(origin);
+  map->GetSpacing(spacing);
+  int dims[3];
+  map->GetDimensions(dims);
+  EXPECT_EQ(origin[0], 1.0);
+  EXPECT_EQ(origin[1], 2.0);
+  EXPECT_EQ(spacing[0], 0.5);
+  EXPECT_EQ(spacing[1], 0.25);
+  EXPECT_EQ(dims[0], 6);
+  EXPECT_EQ(dims[1], 5);
+  EXPECT_EQ(dims[2], 1);
+  EXPECT_STREQ(map->GetPointData()->GetScalars()->GetName(), "NormalMap");
+}
+
+// A second run reuses the map's memory only when nobody else holds the previous map: a map
+// kept by the caller is never overwritten by the next execution.
+TEST(TestHeightMapToNormalMap, KeptOutputIsNotOverwritten)
+{
+  auto first = Sample<vtkFloatArray>(8, 8, [](double s, double) { return s; });
+  auto second = Sample<vtkFloatArray>(8, 8, [](double, double t) { return t; });
+  vtkNew<vtkHeightMapToNormalMap> filter;
+  filter->SetInputData(first);
+  filter->SetOutputScalarTypeToFloat();
+  filter->Update();
+  vtkSmartPointer<vtkDataArray> kept = filter->GetOutput()->GetPointData()->GetScalars();
+  const double red = kept->GetComponent(9, 0);
+  EXPECT_LT(red, 0.5); // h = s rises to the right: the normal leans left
+  filter->SetInputData(second);
+  filter->Update();
+  EXPECT_NE(filter->GetOutput()->GetPointData()->GetScalars(), kept.Get());
+  EXPECT_EQ(kept->GetComponent(9, 0), red);
+  EXPECT_EQ(filter->GetOutput()->GetPointData()->GetScalars()->GetComponent(9, 0), 0.5);
+}
+
+// Only the first component is the height, whatever the array's layout: an interleaved
+// two-component array and a struct-of-arrays one give the map of their first component.
+TEST(TestHeightMapToNormalMap, OnlyTheFirstComponentIsRead)
+{
+  auto f = [](double s, double t) { return 0.5 + 0.3 * std::sin(6 * s) * std::cos(5 * t); };
+  auto single = Sample<vtkFloatArray>(17, 11, f);
+  vtkDataArray* h = single->GetPointData()->GetScalars();
+
+  auto interleaved = vtkSmartPointer<vtkImageData>::New();
+  interleaved->SetDimensions(17, 11, 1);
+  vtkNew<vtkFloatArray> two;
+  two->SetNumberOfComponents(2);
+  two->SetNumberOfTuples(h->GetNumberOfTuples());
+  auto soa = vtkSmartPointer<vtkImageData>::New();
+  soa->SetDimensions(17, 11, 1);
+  vtkNew<vtkSOADataArrayTemplate<float>> planar;
+  planar->SetNumberOfComponents(2);
+  planar->SetNumberOfTuples(h->GetNumberOfTuples());
+  for (vtkIdType id = 0; id < h->GetNumberOfTuples(); ++id)
+  {
+    two->SetTypedComponent(id, 0, static_cast<float>(h->GetComponent(id, 0)));
+    two->SetTypedComponent(id, 1, static_cast<float>((id * 7919) % 13));
+    planar->SetTypedComponent(id, 0, static_cast<float>(h->GetComponent(id, 0)));
+    planar->SetTypedComponent(id, 1, -static_cast<float>(id));
+  }
+  interleaved->GetPointData()->SetScalars(two);
+  soa->GetPointData()->SetScalars(planar);
+
+  Settings s;
+  s.Scheme = vtkHeightMapToNormalMap::Scharr;
+  s.Relief = true;
+  auto want = MakeMap(single, s);
+  for (vtkImageData* image : { interleaved.Get(), soa.Get() })
+  {
+    auto got = MakeMap(image, s);
+    vtkDataArray* a = got->GetPointData()->GetScalars();
+    vtkDataArray* b = want->GetPointData()->GetScalars();
+    ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues());
+    for (vtkIdType v = 0; v < a->GetNumberOfValues(); ++v)
+    {
+      EXPECT_EQ(a->GetVariantValue(v).ToFloat(), b->GetVariantValue(v).ToFloat()) << v;
+    }
   }
 }

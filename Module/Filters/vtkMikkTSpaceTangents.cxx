@@ -1,0 +1,1450 @@
+#include "vtkMikkTSpaceTangents.h"
+
+#include "vtkSurfaceDetailConventions.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolygon.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkMikkTSpaceTangents);
+
+namespace
+{
+using V3 = std::array<double, 3>;
+
+// Triangle flags, with the meaning of the reference implementation's.
+constexpr int OrientPreserving = 1;  // signed texture area > 0
+constexpr int GroupWithAny = 2;      // no usable texture derivatives: joins any group
+constexpr int MarkDegenerate = 4;    // two corners at the same position
+constexpr int QuadOneDegenerate = 8; // a quad whose other triangle is degenerate
+
+// MikkTSpace works in float and calls a value zero when it is below FLT_MIN; the same test
+// in double keeps the same triangles "good". NaN is zero here, which keeps it out.
+inline bool NotZero(double x)
+{
+  return std::abs(x) > FLT_MIN;
+}
+
+// A few units of single-precision rounding, relative.
+constexpr double CancellationEps = 4.0 * FLT_EPSILON;
+
+// Fans up to this many triangles use quadratic scans (faster when small); larger ones sort.
+constexpr size_t SmallFan = 32;
+// Groups larger than this are not split into sub-groups (see EvaluateVertices).
+constexpr size_t MaxSubGroupTest = 256;
+
+inline V3 Sub(const V3& a, const V3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+inline V3 Scale(double s, const V3& a)
+{
+  return { s * a[0], s * a[1], s * a[2] };
+}
+
+inline double Dot(const V3& a, const V3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline V3 NormalizeSafe(const V3& v)
+{
+  if (!(NotZero(v[0]) || NotZero(v[1]) || NotZero(v[2])))
+  {
+    return v;
+  }
+  return Scale(1.0 / std::sqrt(Dot(v, v)), v);
+}
+
+inline V3 ProjectNormalize(const V3& v, const V3& n)
+{
+  return NormalizeSafe(Sub(v, Scale(Dot(n, v), n)));
+}
+
+// Exact equality of values, as the reference's veq: NaN equals nothing.
+inline bool Equal(const V3& a, const V3& b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+inline std::uint64_t HashDouble(std::uint64_t h, double v)
+{
+  // 0 and -0 compare equal, so they must hash equal.
+  if (v == 0.0)
+  {
+    v = 0.0;
+  }
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof(bits));
+  h ^= bits + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+  return h;
+}
+
+/// Everything the algorithm needs, indexed by input point, face corner or triangle.
+struct MikkMesh
+{
+  vtkIdType NumberOfPoints = 0;
+  std::vector<V3> P;
+  std::vector<V3> N; // normalised
+  std::vector<std::array<double, 2>> T;
+  std::vector<vtkIdType> Weld; // the vertex a point is (same P, N and T: same vertex)
+
+  // Output polygons ("faces"), in output order, with the input cell each came from.
+  std::vector<vtkIdType> FaceOffsets{ 0 };
+  std::vector<vtkIdType> FacePoints;
+  std::vector<vtkIdType> FaceCell;
+
+  // Triangles of the faces with 3 or 4 corners, in face order.
+  std::vector<vtkIdType> FaceFirstTri; // per face, size faces+1
+  std::vector<vtkIdType> TriFace;
+  std::vector<std::array<unsigned char, 3>> TriVert; // corner numbers within the face
+  std::vector<int> TriFlag;
+
+  vtkIdType CornerPoint(vtkIdType tri, int k) const
+  {
+    return this->FacePoints[this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k]];
+  }
+  vtkIdType CornerVertex(vtkIdType tri, int k) const
+  {
+    return this->Weld[this->CornerPoint(tri, k)];
+  }
+  vtkIdType FaceCorner(vtkIdType tri, int k) const
+  {
+    return this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k];
+  }
+};
+
+/// The part of a tangent space the output needs.
+struct TSpace
+{
+  V3 Os{ { 1.0, 0.0, 0.0 } }; // the reference's default for corners no group reaches
+  bool Orient = false;
+  vtkIdType Group = -1;
+};
+
+// Normals are read as they are (the weld compares them so) and normalised after welding.
+void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoords, MikkMesh& mesh)
+{
+  const vtkIdType n = mesh.NumberOfPoints;
+  mesh.P.resize(n);
+  mesh.N.resize(n);
+  mesh.T.resize(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetPoint(i, mesh.P[i].data());
+        normals->GetTuple(i, mesh.N[i].data());
+        mesh.T[i] = { tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1) };
+      }
+    });
+}
+
+void NormalizeNormals(MikkMesh& mesh)
+{
+  vtkSMPTools::For(0, mesh.NumberOfPoints,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double len = std::sqrt(Dot(mesh.N[i], mesh.N[i]));
+        if (len > 0.0 && std::isfinite(len))
+        {
+          mesh.N[i] = Scale(1.0 / len, mesh.N[i]);
+        }
+      }
+    });
+}
+
+// MikkTSpace welds corners whose position, normal and texture coordinates are identical,
+// so two input points with the same values are one vertex even if the cells do not share
+// them. Hash, sort (parallel, total order on (hash, id)), then compare within equal hashes.
+void Weld(MikkMesh& mesh)
+{
+  const vtkIdType n = mesh.NumberOfPoints;
+  std::vector<std::pair<std::uint64_t, vtkIdType>> keys(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        std::uint64_t h = 1469598103934665603ULL;
+        for (int c = 0; c < 3; ++c)
+        {
+          h = HashDouble(h, mesh.P[i][c]);
+          h = HashDouble(h, mesh.N[i][c]);
+        }
+        h = HashDouble(h, mesh.T[i][0]);
+        h = HashDouble(h, mesh.T[i][1]);
+        keys[i] = { h, i };
+      }
+    });
+  vtkSMPTools::Sort(keys.begin(), keys.end());
+
+  mesh.Weld.resize(n);
+  vtkIdType runStart = 0;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (keys[k].first != keys[runStart].first)
+    {
+      runStart = k;
+    }
+    const vtkIdType i = keys[k].second;
+    mesh.Weld[i] = i;
+    // NaN equals nothing, and all-NaN points would share a hash: no quadratic scan.
+    if (!(Equal(mesh.P[i], mesh.P[i]) && Equal(mesh.N[i], mesh.N[i]) &&
+          mesh.T[i][0] == mesh.T[i][0] && mesh.T[i][1] == mesh.T[i][1]))
+    {
+      continue;
+    }
+    for (vtkIdType j = runStart; j < k; ++j)
+    {
+      const vtkIdType o = keys[j].second;
+      if (mesh.Weld[o] == o && Equal(mesh.P[i], mesh.P[o]) && Equal(mesh.N[i], mesh.N[o]) &&
+        mesh.T[i][0] == mesh.T[o][0] && mesh.T[i][1] == mesh.T[o][1])
+      {
+        mesh.Weld[i] = o;
+        break;
+      }
+    }
+  }
+}
+
+// Output polygons: triangles and quads as they are, larger polygons triangulated (ear
+// cutting, fan if that fails), polygons with fewer than 3 points kept, strips split.
+void BuildFaces(vtkPolyData* input, MikkMesh& mesh)
+{
+  const vtkIdType polyCellBase = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  mesh.FacePoints.reserve(input->GetPolys()->GetNumberOfConnectivityIds());
+  mesh.FaceOffsets.reserve(input->GetNumberOfPolys() + 1);
+  mesh.FaceCell.reserve(input->GetNumberOfPolys());
+  auto addFace = [&mesh](const vtkIdType* ids, vtkIdType npts, vtkIdType cell)
+  {
+    mesh.FacePoints.insert(mesh.FacePoints.end(), ids, ids + npts);
+    mesh.FaceOffsets.push_back(static_cast<vtkIdType>(mesh.FacePoints.size()));
+    mesh.FaceCell.push_back(cell);
+  };
+
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> triIds;
+  vtkIdType cell = polyCellBase;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    polys->GetCurrentCell(npts, pts);
+    if (npts <= 4)
+    {
+      addFace(pts, npts, cell);
+      continue;
+    }
+    polygon->Initialize(static_cast<int>(npts), pts, input->GetPoints());
+    triIds->Reset();
+    const bool ok = polygon->Triangulate(triIds) != 0 && triIds->GetNumberOfIds() == 3 * (npts - 2);
+    for (vtkIdType t = 0; t < npts - 2; ++t)
+    {
+      vtkIdType tri[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        tri[k] = ok ? pts[triIds->GetId(3 * t + k)] : pts[k == 0 ? 0 : t + k];
+      }
+      addFace(tri, 3, cell);
+    }
+  }
+
+  cell = polyCellBase + input->GetNumberOfPolys();
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    strips->GetCurrentCell(npts, pts);
+    for (vtkIdType k = 0; k + 2 < npts; ++k)
+    {
+      // Every other triangle of a strip is wound the other way round.
+      const vtkIdType tri[3] = { pts[k + (k & 1)], pts[k + 1 - (k & 1)], pts[k + 2] };
+      if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
+      {
+        addFace(tri, 3, cell);
+      }
+    }
+  }
+}
+
+// One triangle per triangle face, two per quad, split along the shorter diagonal in
+// texture space (in position space on a tie) as MikkTSpace does.
+void BuildTriangles(MikkMesh& mesh)
+{
+  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  mesh.FaceFirstTri.resize(nFaces + 1);
+  mesh.FaceFirstTri[0] = 0;
+  for (vtkIdType f = 0; f < nFaces; ++f)
+  {
+    const vtkIdType n = mesh.FaceOffsets[f + 1] - mesh.FaceOffsets[f];
+    mesh.FaceFirstTri[f + 1] = mesh.FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
+  }
+  const vtkIdType nTris = mesh.FaceFirstTri[nFaces];
+  mesh.TriFace.resize(nTris);
+  mesh.TriVert.resize(nTris);
+  mesh.TriFlag.assign(nTris, 0);
+  vtkSMPTools::For(0, nFaces,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        const vtkIdType t = mesh.FaceFirstTri[f];
+        const vtkIdType nt = mesh.FaceFirstTri[f + 1] - t;
+        if (nt == 0)
+        {
+          continue;
+        }
+        mesh.TriFace[t] = f;
+        if (nt == 1)
+        {
+          mesh.TriVert[t] = { 0, 1, 2 };
+          continue;
+        }
+        mesh.TriFace[t + 1] = f;
+        const vtkIdType* c = mesh.FacePoints.data() + mesh.FaceOffsets[f];
+        auto dist2T = [&](int a, int b)
+        {
+          const double ds = mesh.T[c[a]][0] - mesh.T[c[b]][0];
+          const double dt = mesh.T[c[a]][1] - mesh.T[c[b]][1];
+          return ds * ds + dt * dt;
+        };
+        auto dist2P = [&](int a, int b)
+        {
+          const V3 d = Sub(mesh.P[c[a]], mesh.P[c[b]]);
+          return Dot(d, d);
+        };
+        const double t02 = dist2T(0, 2), t13 = dist2T(1, 3);
+        const bool diag02 = t02 < t13 || (!(t13 < t02) && !(dist2P(1, 3) < dist2P(0, 2)));
+        if (diag02)
+        {
+          mesh.TriVert[t] = { 0, 1, 2 };
+          mesh.TriVert[t + 1] = { 0, 2, 3 };
+        }
+        else
+        {
+          mesh.TriVert[t] = { 0, 1, 3 };
+          mesh.TriVert[t + 1] = { 1, 2, 3 };
+        }
+      }
+    });
+}
+
+double TexArea2(const MikkMesh& mesh, vtkIdType tri)
+{
+  const auto& t1 = mesh.T[mesh.CornerPoint(tri, 0)];
+  const auto& t2 = mesh.T[mesh.CornerPoint(tri, 1)];
+  const auto& t3 = mesh.T[mesh.CornerPoint(tri, 2)];
+  return (t2[0] - t1[0]) * (t3[1] - t1[1]) - (t2[1] - t1[1]) * (t3[0] - t1[0]);
+}
+
+// The final frame of a corner: the tangent made exactly orthogonal to the unit normal; if
+// that leaves nothing (degenerate input), any unit vector orthogonal to the normal.
+void FinalTangent(const V3& n, const TSpace& ts, float out[4])
+{
+  double t[4] = { ts.Os[0], ts.Os[1], ts.Os[2], 0.0 };
+  const double nDotT = Dot(n, ts.Os);
+  double tp[3] = { t[0] - nDotT * n[0], t[1] - nDotT * n[1], t[2] - nDotT * n[2] };
+  const double len = vtkSurfaceDetail::Normalize(tp);
+  if (!(len > 1e-6 && std::isfinite(len)))
+  {
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    double nn[3] = { n[0], n[1], n[2] };
+    if (!(std::isfinite(Dot(n, n)) && Dot(n, n) > 0.5))
+    {
+      nn[0] = 0.0;
+      nn[1] = 0.0;
+      nn[2] = 1.0;
+    }
+    vtkSurfaceDetail::MakeTangentFrame(nn, zero, zero, t);
+    tp[0] = t[0];
+    tp[1] = t[1];
+    tp[2] = t[2];
+  }
+  out[0] = static_cast<float>(tp[0]);
+  out[1] = static_cast<float>(tp[1]);
+  out[2] = static_cast<float>(tp[2]);
+  out[3] = ts.Orient ? 1.0f : -1.0f;
+}
+
+/// The algorithm proper, on the triangles of a MikkMesh; fills per face corner tangents.
+class MikkTSpace
+{
+public:
+  MikkTSpace(MikkMesh& mesh, double angularThreshold)
+    : Mesh(mesh)
+    , ThresholdCos(std::cos(vtkMath::RadiansFromDegrees(angularThreshold)))
+  {
+  }
+
+  /// Fills @a tangents for the face corners it can and sets @a set for those.
+  void Run(std::vector<std::array<float, 4>>& tangents, std::vector<char>& set)
+  {
+    const size_t nCorners = this->Mesh.FacePoints.size();
+    tangents.resize(nCorners);
+    set.assign(nCorners, 0);
+    this->Tangents = tangents.data();
+    this->Set = set.data();
+    this->MarkDegenerates();
+    this->InitTriangles();
+    this->ForceQuadOrientation();
+    this->BuildVertexTriangles();
+    this->ResolveGroupWithAnyOrientation();
+    this->EvaluateVertices();
+    this->FixDegenerates();
+  }
+
+private:
+  MikkMesh& Mesh;
+  const double ThresholdCos;
+
+  std::vector<vtkIdType> Good; // good triangles in input order, then the degenerate
+  vtkIdType NumberOfGood = 0;
+  // Per good triangle, everything the per-vertex pass reads, together in memory.
+  struct GoodTriangle
+  {
+    std::array<vtkIdType, 3> W;      // welded vertex of each corner
+    std::array<vtkIdType, 3> Corner; // face corner of each corner
+    V3 Os, Ot;                       // directions of dP/ds and dP/dt
+    vtkIdType Face;
+    int Flag;
+  };
+  std::vector<GoodTriangle> Tris;
+  std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
+  std::array<float, 4>* Tangents = nullptr;            // per face corner
+  char* Set = nullptr;                                 // per face corner: Tangents[c] is set
+
+  void MarkDegenerates()
+  {
+    MikkMesh& m = this->Mesh;
+    const vtkIdType nTris = static_cast<vtkIdType>(m.TriFace.size());
+    vtkSMPTools::For(0, nTris,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType t = begin; t < end; ++t)
+        {
+          const V3& p0 = m.P[m.CornerVertex(t, 0)];
+          const V3& p1 = m.P[m.CornerVertex(t, 1)];
+          const V3& p2 = m.P[m.CornerVertex(t, 2)];
+          if (Equal(p0, p1) || Equal(p0, p2) || Equal(p1, p2))
+          {
+            m.TriFlag[t] |= MarkDegenerate;
+          }
+        }
+      });
+    // A quad with exactly one good triangle gets special treatment at the end.
+    for (vtkIdType t = 0; t + 1 < nTris; ++t)
+    {
+      if (m.TriFace[t] == m.TriFace[t + 1])
+      {
+        if (((m.TriFlag[t] ^ m.TriFlag[t + 1]) & MarkDegenerate) != 0)
+        {
+          m.TriFlag[t] |= QuadOneDegenerate;
+          m.TriFlag[t + 1] |= QuadOneDegenerate;
+        }
+        ++t;
+      }
+    }
+    this->Good.reserve(nTris);
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      if (!(m.TriFlag[t] & MarkDegenerate))
+      {
+        this->Good.push_back(t);
+      }
+    }
+    this->NumberOfGood = static_cast<vtkIdType>(this->Good.size());
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      if (m.TriFlag[t] & MarkDegenerate)
+      {
+        this->Good.push_back(t);
+      }
+    }
+  }
+
+  // Per triangle: the normalised directions of dP/ds and dP/dt (eq. 18, 19 of the
+  // reference's description), the texture orientation, and whether the texture mapping
+  // is usable at all (if not, the triangle joins any group and adds nothing).
+  void InitTriangles()
+  {
+    const MikkMesh& m = this->Mesh;
+    const vtkIdType n = this->NumberOfGood;
+    this->Tris.resize(n);
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType g = begin; g < end; ++g)
+        {
+          const vtkIdType t = this->Good[g];
+          GoodTriangle& tri = this->Tris[g];
+          tri.Face = m.TriFace[t];
+          for (int k = 0; k < 3; ++k)
+          {
+            tri.W[k] = m.CornerVertex(t, k);
+            tri.Corner[k] = m.FaceCorner(t, k);
+          }
+          tri.Os = V3{ 0.0, 0.0, 0.0 };
+          tri.Ot = V3{ 0.0, 0.0, 0.0 };
+          const V3& v1 = m.P[this->Tris[g].W[0]];
+          const V3& v2 = m.P[this->Tris[g].W[1]];
+          const V3& v3 = m.P[this->Tris[g].W[2]];
+          const auto& t1 = m.T[this->Tris[g].W[0]];
+          const auto& t2 = m.T[this->Tris[g].W[1]];
+          const auto& t3 = m.T[this->Tris[g].W[2]];
+          const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
+          const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
+          const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
+          const double area2 = t21x * t31y - t21y * t31x;
+          const V3 os = Sub(Scale(t31y, d1), Scale(t21y, d2));
+          const V3 ot = Sub(Scale(t21x, d2), Scale(t31x, d1));
+          int flag = (m.TriFlag[t] & ~MarkDegenerate) | GroupWithAny;
+          if (area2 > 0.0)
+          {
+            flag |= OrientPreserving;
+          }
+          if (NotZero(area2))
+          {
+            const double absArea = std::abs(area2);
+            // dP/ds and dP/dt are differences of terms as large as the edges; what is left
+            // below single-precision rounding of those terms is cancellation noise (a sliver
+            // whose texture edge runs along a vanishing position edge), not a direction. The
+            // reference, in float, finds zero there; in double we must say so explicitly.
+            const double l1 = std::sqrt(Dot(d1, d1)), l2 = std::sqrt(Dot(d2, d2));
+            double lenOs = std::sqrt(Dot(os, os));
+            double lenOt = std::sqrt(Dot(ot, ot));
+            if (lenOs <= CancellationEps * (std::abs(t31y) * l1 + std::abs(t21y) * l2))
+            {
+              lenOs = 0.0;
+            }
+            if (lenOt <= CancellationEps * (std::abs(t31x) * l1 + std::abs(t21x) * l2))
+            {
+              lenOt = 0.0;
+            }
+            const double sign = area2 > 0.0 ? 1.0 : -1.0;
+            if (NotZero(lenOs))
+            {
+              this->Tris[g].Os = Scale(sign / lenOs, os);
+            }
+            if (NotZero(lenOt))
+            {
+              this->Tris[g].Ot = Scale(sign / lenOt, ot);
+            }
+            if (NotZero(lenOs / absArea) && NotZero(lenOt / absArea))
+            {
+              flag &= ~GroupWithAny;
+            }
+          }
+          this->Tris[g].Flag = flag;
+        }
+      });
+  }
+
+  // The two triangles of a quad must have one orientation; the larger texture area (or
+  // the one with usable derivatives) decides.
+  void ForceQuadOrientation()
+  {
+    const MikkMesh& m = this->Mesh;
+    vtkSMPTools::For(0, std::max<vtkIdType>(this->NumberOfGood - 1, 0),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType g = begin; g < end; ++g)
+        {
+          const vtkIdType a = this->Good[g], b = this->Good[g + 1];
+          if (m.TriFace[a] != m.TriFace[b] ||
+            ((this->Tris[g].Flag ^ this->Tris[g + 1].Flag) & OrientPreserving) == 0)
+          {
+            continue;
+          }
+          const bool first = (this->Tris[g + 1].Flag & GroupWithAny) != 0 ||
+            std::abs(TexArea2(m, a)) >= std::abs(TexArea2(m, b));
+          const vtkIdType from = first ? g : g + 1, to = first ? g + 1 : g;
+          this->Tris[to].Flag =
+            (this->Tris[to].Flag & ~OrientPreserving) | (this->Tris[from].Flag & OrientPreserving);
+        }
+      });
+  }
+
+  // Vertex -> good triangles, each list in increasing triangle order.
+  void BuildVertexTriangles()
+  {
+    const vtkIdType nv = this->Mesh.NumberOfPoints;
+    this->VertexTriOffsets.assign(nv + 1, 0);
+    for (const auto& tri : this->Tris)
+    {
+      for (vtkIdType v : tri.W)
+      {
+        ++this->VertexTriOffsets[v + 1];
+      }
+    }
+    for (vtkIdType v = 0; v < nv; ++v)
+    {
+      this->VertexTriOffsets[v + 1] += this->VertexTriOffsets[v];
+    }
+    this->VertexTris.resize(this->VertexTriOffsets[nv]);
+    std::vector<vtkIdType> fill(this->VertexTriOffsets.begin(), this->VertexTriOffsets.end() - 1);
+    for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
+    {
+      for (vtkIdType v : this->Tris[g].W)
+      {
+        this->VertexTris[fill[v]++] = g;
+      }
+    }
+  }
+
+  static int CornerOf(const std::array<vtkIdType, 3>& w, vtkIdType v)
+  {
+    return w[0] == v ? 0 : (w[1] == v ? 1 : (w[2] == v ? 2 : -1));
+  }
+
+  /// The triangles around one vertex and how they connect there.
+  struct Fan
+  {
+    std::vector<vtkIdType> Tri;                  // good triangles, increasing
+    std::vector<int> Corner;                     // the vertex's corner in each
+    std::vector<vtkIdType> Next, Prev;           // the other two vertices, in winding order
+    std::vector<int> Out, In;                    // neighbour across (v, next) and (prev, v), or -1
+    std::vector<std::array<vtkIdType, 3>> Slots; // large fans: (other vertex, entry, direction)
+  };
+
+  // Triangles are neighbours across an edge they use in opposite directions. Where more
+  // than two triangles share an edge, the reference pairs them greedily in triangle order:
+  // each unpaired one with the first later unpaired one running the other way. All the
+  // triangles on an edge at v are around v, so v's fan alone decides its links.
+  void BuildFan(vtkIdType v, Fan& fan) const
+  {
+    const vtkIdType begin = this->VertexTriOffsets[v], end = this->VertexTriOffsets[v + 1];
+    const size_t k = static_cast<size_t>(end - begin);
+    fan.Tri.assign(this->VertexTris.begin() + begin, this->VertexTris.begin() + end);
+    fan.Corner.resize(k);
+    fan.Next.resize(k);
+    fan.Prev.resize(k);
+    fan.Out.assign(k, -1);
+    fan.In.assign(k, -1);
+    for (size_t a = 0; a < k; ++a)
+    {
+      const auto& w = this->Tris[fan.Tri[a]].W;
+      const int i = CornerOf(w, v);
+      fan.Corner[a] = i;
+      fan.Next[a] = w[i < 2 ? i + 1 : 0];
+      fan.Prev[a] = w[i > 0 ? i - 1 : 2];
+    }
+    if (k <= SmallFan)
+    {
+      for (size_t a = 0; a < k; ++a)
+      {
+        for (size_t b = a + 1; b < k && fan.Out[a] < 0; ++b)
+        {
+          if (fan.In[b] < 0 && fan.Prev[b] == fan.Next[a])
+          {
+            fan.Out[a] = static_cast<int>(b);
+            fan.In[b] = static_cast<int>(a);
+          }
+        }
+        for (size_t b = a + 1; b < k && fan.In[a] < 0; ++b)
+        {
+          if (fan.Out[b] < 0 && fan.Next[b] == fan.Prev[a])
+          {
+            fan.In[a] = static_cast<int>(b);
+            fan.Out[b] = static_cast<int>(a);
+          }
+        }
+      }
+      return;
+    }
+    // Large fans: the same greedy pairing, per edge in triangle order, is a first-in
+    // first-out match of the two directions (the earliest unpaired triangle running the
+    // other way takes the current one).
+    fan.Slots.clear();
+    for (size_t a = 0; a < k; ++a)
+    {
+      fan.Slots.push_back({ fan.Next[a], static_cast<vtkIdType>(a), 0 });
+      fan.Slots.push_back({ fan.Prev[a], static_cast<vtkIdType>(a), 1 });
+    }
+    std::sort(fan.Slots.begin(), fan.Slots.end());
+    std::vector<int> pending[2];
+    size_t head[2];
+    for (size_t g = 0; g < fan.Slots.size();)
+    {
+      size_t e = g;
+      pending[0].clear();
+      pending[1].clear();
+      head[0] = head[1] = 0;
+      for (; e < fan.Slots.size() && fan.Slots[e][0] == fan.Slots[g][0]; ++e)
+      {
+        const int a = static_cast<int>(fan.Slots[e][1]);
+        const int d = static_cast<int>(fan.Slots[e][2]);
+        if (head[1 - d] < pending[1 - d].size())
+        {
+          const int b = pending[1 - d][head[1 - d]++];
+          (d == 0 ? fan.Out[a] : fan.In[a]) = b;
+          (d == 0 ? fan.In[b] : fan.Out[b]) = a;
+        }
+        else
+        {
+          pending[d].push_back(a);
+        }
+      }
+      g = e;
+    }
+  }
+
+  bool Orient(vtkIdType t) const { return (this->Tris[t].Flag & OrientPreserving) != 0; }
+
+  // A triangle without usable texture derivatives takes the orientation of the first group
+  // that reaches it, at any of its vertices: the reference's one order dependency. Replay
+  // its group building (seeds in triangle/corner order, floods across linked neighbours of
+  // the same orientation) at the vertices that have such triangles; elsewhere it cannot
+  // matter, and every other vertex is then independent of the rest.
+  void ResolveGroupWithAnyOrientation()
+  {
+    const vtkIdType n = this->NumberOfGood;
+    const vtkIdType nv = this->Mesh.NumberOfPoints;
+    std::vector<char> anyVertex(nv, 0);
+    bool any = false;
+    for (vtkIdType g = 0; g < n; ++g)
+    {
+      if (this->Tris[g].Flag & GroupWithAny)
+      {
+        any = true;
+        for (vtkIdType v : this->Tris[g].W)
+        {
+          anyVertex[v] = 1;
+        }
+      }
+    }
+    if (!any)
+    {
+      return;
+    }
+    std::vector<char> assigned(3 * n, 0);
+    // A vertex seeds many groups; large fans are built once and kept.
+    Fan small;
+    std::unordered_map<vtkIdType, Fan> large;
+    std::vector<int> stack;
+    for (vtkIdType g = 0; g < n; ++g)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        const vtkIdType v = this->Tris[g].W[i];
+        if (!anyVertex[v] || (this->Tris[g].Flag & GroupWithAny) || assigned[3 * g + i])
+        {
+          continue;
+        }
+        const bool big = this->VertexTriOffsets[v + 1] - this->VertexTriOffsets[v] >
+          static_cast<vtkIdType>(SmallFan);
+        Fan& fan = big ? large[v] : small;
+        if (!big || fan.Tri.empty())
+        {
+          this->BuildFan(v, fan);
+        }
+        const bool orient = this->Orient(g);
+        stack.assign(1,
+          static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), g) - fan.Tri.begin()));
+        while (!stack.empty())
+        {
+          const int a = stack.back();
+          stack.pop_back();
+          const vtkIdType t = fan.Tri[a];
+          char& done = assigned[3 * t + fan.Corner[a]];
+          if (done)
+          {
+            continue;
+          }
+          if ((this->Tris[t].Flag & GroupWithAny) && !assigned[3 * t] && !assigned[3 * t + 1] &&
+            !assigned[3 * t + 2])
+          {
+            this->Tris[t].Flag =
+              (this->Tris[t].Flag & ~OrientPreserving) | (orient ? OrientPreserving : 0);
+          }
+          if (this->Orient(t) != orient)
+          {
+            continue;
+          }
+          done = 1;
+          for (int b : { fan.Out[a], fan.In[a] })
+          {
+            if (b >= 0)
+            {
+              stack.push_back(b);
+            }
+          }
+        }
+      }
+    }
+  }
+
+  // Angle-weighted average of the members' dP/ds directions projected onto the tangent
+  // plane of the vertex normal, summed in increasing triangle order as the reference does.
+  static V3 Average(const std::vector<int>& members, const std::vector<V3>& os,
+    const std::vector<double>& angle, const std::vector<char>& contributes)
+  {
+    V3 sum{ 0.0, 0.0, 0.0 };
+    for (int a : members)
+    {
+      if (contributes[a])
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          sum[c] += angle[a] * os[a][c];
+        }
+      }
+    }
+    return NormalizeSafe(sum);
+  }
+
+  // A quad's diagonal corner gets a space from each of its triangles: the reference
+  // averages them unless equal, and the later group's orientation wins.
+  static void Merge(TSpace& out, const TSpace& in)
+  {
+    if (!Equal(out.Os, in.Os))
+    {
+      out.Os =
+        NormalizeSafe(V3{ out.Os[0] + in.Os[0], out.Os[1] + in.Os[1], out.Os[2] + in.Os[2] });
+    }
+    if (in.Group > out.Group)
+    {
+      out.Orient = in.Orient;
+      out.Group = in.Group;
+    }
+  }
+
+  // Per vertex: groups are the linked triangles of one orientation that contain a
+  // triangle with usable derivatives (the group's seed: its first triangle); each member's
+  // frame is the average over its sub-group (the members whose projected directions are
+  // within the angular threshold of its own; all of them at 180 degrees).
+  void EvaluateVertices()
+  {
+    const MikkMesh& m = this->Mesh;
+    vtkSMPTools::For(0, m.NumberOfPoints,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        Fan fan;
+        std::vector<int> comp, members, subset, byComponent;
+        std::vector<size_t> bucket;
+        std::vector<V3> os, ot;
+        std::vector<double> angle;
+        std::vector<char> contributes;
+        std::vector<vtkIdType> face;
+        std::vector<std::pair<vtkIdType, TSpace>> written; // face corner, its space
+        for (vtkIdType v = begin; v < end; ++v)
+        {
+          if (this->VertexTriOffsets[v] == this->VertexTriOffsets[v + 1])
+          {
+            continue;
+          }
+          this->BuildFan(v, fan);
+          written.clear();
+          const size_t k = fan.Tri.size();
+          const V3& n = m.N[v];
+          const V3& pv = m.P[v];
+          os.resize(k);
+          ot.resize(k);
+          angle.resize(k);
+          contributes.resize(k);
+          face.resize(k);
+          for (size_t a = 0; a < k; ++a)
+          {
+            const vtkIdType t = fan.Tri[a];
+            face[a] = this->Tris[t].Face;
+            os[a] = ProjectNormalize(this->Tris[t].Os, n);
+            ot[a] = ProjectNormalize(this->Tris[t].Ot, n);
+            contributes[a] = (this->Tris[t].Flag & GroupWithAny) == 0;
+            if (contributes[a])
+            {
+              const V3 e1 = ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
+              const V3 e2 = ProjectNormalize(Sub(m.P[fan.Next[a]], pv), n);
+              const double c = std::acos(std::min(1.0, std::max(-1.0, Dot(e1, e2))));
+              angle[a] = std::isfinite(c) ? c : 0.0;
+            }
+          }
+          // Components of the link graph between triangles of one orientation.
+          comp.resize(k);
+          for (size_t a = 0; a < k; ++a)
+          {
+            comp[a] = static_cast<int>(a);
+          }
+          auto root = [&comp](int a)
+          {
+            while (comp[a] != a)
+            {
+              a = comp[a] = comp[comp[a]];
+            }
+            return a;
+          };
+          for (size_t a = 0; a < k; ++a)
+          {
+            const int b = fan.Out[a];
+            if (b >= 0 && this->Orient(fan.Tri[a]) == this->Orient(fan.Tri[b]))
+            {
+              const int ra = root(static_cast<int>(a)), rb = root(b);
+              comp[std::max(ra, rb)] = std::min(ra, rb);
+            }
+          }
+          for (size_t a = 0; a < k; ++a)
+          {
+            comp[a] = root(static_cast<int>(a));
+          }
+          // Members of each component in triangle order (a counting sort by root, which
+          // is the component's first entry).
+          bucket.assign(k + 1, 0);
+          for (size_t a = 0; a < k; ++a)
+          {
+            ++bucket[comp[a] + 1];
+          }
+          for (size_t a = 0; a < k; ++a)
+          {
+            bucket[a + 1] += bucket[a];
+          }
+          byComponent.resize(k);
+          for (size_t a = 0; a < k; ++a)
+          {
+            byComponent[bucket[comp[a]]++] = static_cast<int>(a);
+          }
+          for (size_t r = 0, first = 0; r < k; ++r)
+          {
+            if (comp[r] != static_cast<int>(r))
+            {
+              continue;
+            }
+            // bucket[r] is now the end of r's members; they start where the last root ended
+            members.assign(byComponent.begin() + first, byComponent.begin() + bucket[r]);
+            first = bucket[r];
+            int seed = -1;
+            for (int a : members)
+            {
+              if (contributes[a])
+              {
+                seed = a;
+                break;
+              }
+            }
+            if (seed < 0)
+            {
+              continue; // no triangle to seed a group: the reference leaves these corners
+            }
+            const vtkIdType key = 3 * fan.Tri[seed] + fan.Corner[seed];
+            const bool orient = this->Orient(fan.Tri[seed]);
+            auto joins = [&](int f, int a)
+            {
+              return !contributes[f] || !contributes[a] || face[f] == face[a] ||
+                (Dot(os[f], os[a]) > this->ThresholdCos && Dot(ot[f], ot[a]) > this->ThresholdCos);
+            };
+            // The pairwise test is quadratic; above MaxSubGroupTest members (a pole shared
+            // by hundreds of triangles) the group is taken whole. At the default 180 degrees
+            // it only separates exactly opposite directions, which at such a pole are
+            // opposite up to rounding, and the reference's choice there is rounding noise.
+            bool allJoin = true;
+            for (size_t x = 0; x < members.size() && members.size() <= MaxSubGroupTest && allJoin;
+                 ++x)
+            {
+              for (size_t y = x + 1; y < members.size() && allJoin; ++y)
+              {
+                allJoin = joins(members[x], members[y]);
+              }
+            }
+            const V3 all = Average(members, os, angle, contributes);
+            for (int f : members)
+            {
+              V3 result = all;
+              if (!allJoin)
+              {
+                subset.clear();
+                for (int a : members)
+                {
+                  if (a == f || joins(f, a))
+                  {
+                    subset.push_back(a);
+                  }
+                }
+                result = Average(subset, os, angle, contributes);
+              }
+              const vtkIdType c = this->Tris[fan.Tri[f]].Corner[fan.Corner[f]];
+              auto same = written.end();
+              if (k <= SmallFan)
+              {
+                same = std::find_if(written.begin(), written.end(),
+                  [c](const std::pair<vtkIdType, TSpace>& e) { return e.first == c; });
+              }
+              if (same == written.end())
+              {
+                written.push_back({ c, TSpace{ result, orient, key } });
+                continue;
+              }
+              Merge(same->second, TSpace{ result, orient, key });
+            }
+          }
+          if (k > SmallFan)
+          {
+            // Large fans: merge the quads' pairs by sorting rather than searching.
+            std::sort(written.begin(), written.end(),
+              [](const std::pair<vtkIdType, TSpace>& x, const std::pair<vtkIdType, TSpace>& y)
+              { return x.first < y.first; });
+            size_t kept = 0;
+            for (size_t e = 0; e < written.size(); ++e)
+            {
+              if (kept > 0 && written[kept - 1].first == written[e].first)
+              {
+                Merge(written[kept - 1].second, written[e].second);
+              }
+              else
+              {
+                written[kept++] = written[e];
+              }
+            }
+            written.resize(kept);
+          }
+          for (const auto& e : written)
+          {
+            FinalTangent(n, e.second, this->Tangents[e.first].data());
+            this->Set[e.first] = 1;
+          }
+        }
+      });
+  }
+
+  // Degenerate triangles take the space of the first good corner at the same vertex; a
+  // quad with one good triangle gives its missing corner the space of the corner at the
+  // same position (made orthogonal to its own normal).
+  void FixDegenerates()
+  {
+    const MikkMesh& m = this->Mesh;
+    for (size_t d = static_cast<size_t>(this->NumberOfGood); d < this->Good.size(); ++d)
+    {
+      const vtkIdType t = this->Good[d];
+      if (m.TriFlag[t] & QuadOneDegenerate)
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType v = m.CornerVertex(t, k);
+        if (this->VertexTriOffsets[v] == this->VertexTriOffsets[v + 1])
+        {
+          continue;
+        }
+        const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
+        const vtkIdType src = this->Tris[g].Corner[CornerOf(this->Tris[g].W, v)];
+        const vtkIdType dst = m.FaceCorner(t, k);
+        this->Tangents[dst] = this->Tangents[src];
+        this->Set[dst] = this->Set[src];
+      }
+    }
+    for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
+    {
+      const vtkIdType t = this->Good[g];
+      if (!(m.TriFlag[t] & QuadOneDegenerate))
+      {
+        continue;
+      }
+      const auto& vn = m.TriVert[t];
+      const int used = (1 << vn[0]) | (1 << vn[1]) | (1 << vn[2]);
+      const int missing = !(used & 2) ? 1 : (!(used & 4) ? 2 : (!(used & 8) ? 3 : 0));
+      const vtkIdType base = m.FaceOffsets[m.TriFace[t]];
+      const V3& target = m.P[m.FacePoints[base + missing]];
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType src = base + vn[k];
+        if (Equal(m.P[m.FacePoints[src]], target))
+        {
+          const auto& f = this->Tangents[src];
+          FinalTangent(m.N[m.FacePoints[base + missing]],
+            TSpace{ V3{ f[0], f[1], f[2] }, f[3] > 0.0f, 0 },
+            this->Tangents[base + missing].data());
+          this->Set[base + missing] = this->Set[src];
+          break;
+        }
+      }
+    }
+  }
+};
+
+vtkSmartPointer<vtkIdList> IdRange(vtkIdType n)
+{
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  ids->SetNumberOfIds(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ids->SetId(i, i);
+  }
+  return ids;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+void vtkMikkTSpaceTangents::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AngularThreshold: " << this->AngularThreshold << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkMikkTSpaceTangents::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro("The input must be a vtkPolyData.");
+    return 0;
+  }
+  const vtkIdType nPts = input->GetNumberOfPoints();
+  if (nPts == 0 || !input->GetPoints())
+  {
+    vtkErrorMacro("The input has no points; give it a surface with points, normals and "
+                  "texture coordinates.");
+    return 0;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input has no polygons or triangle strips; tangents need a surface.");
+    return 0;
+  }
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro("The input has no 2-component point texture coordinates; set them as the "
+                  "point data's TCoords (e.g. with vtkTextureMapToPlane or a parametric "
+                  "source) before computing tangents.");
+    return 0;
+  }
+
+  // The point data that goes to the output: the input's, plus normals if we make them.
+  vtkNew<vtkPointData> inPD;
+  inPD->ShallowCopy(input->GetPointData());
+  vtkDataArray* normals = inPD->GetNormals();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    vtkWarningMacro("The input has no 3-component point normals; computing them with "
+                    "vtkPolyDataNormals (no splitting, no reordering).");
+    vtkNew<vtkPolyData> surface;
+    surface->SetPoints(input->GetPoints());
+    surface->SetPolys(input->GetPolys());
+    surface->SetStrips(input->GetStrips());
+    vtkNew<vtkPolyDataNormals> pdn;
+    pdn->SetInputData(surface);
+    pdn->SplittingOff();
+    pdn->ConsistencyOff();
+    pdn->AutoOrientNormalsOff();
+    pdn->ComputeCellNormalsOff();
+    pdn->ComputePointNormalsOn();
+    pdn->Update();
+    vtkDataArray* computed = pdn->GetOutput()->GetPointData()->GetNormals();
+    if (!computed || computed->GetNumberOfTuples() != nPts)
+    {
+      vtkErrorMacro("The input has no point normals and vtkPolyDataNormals could not make "
+                    "them; set the point data's Normals.");
+      return 0;
+    }
+    inPD->SetNormals(computed);
+    normals = computed;
+  }
+  if (tcoords->GetNumberOfTuples() != nPts || normals->GetNumberOfTuples() != nPts)
+  {
+    vtkErrorMacro("The texture coordinates or normals do not have one tuple per point.");
+    return 0;
+  }
+
+  MikkMesh mesh;
+  mesh.NumberOfPoints = nPts;
+  {
+    ReadAttributes(input->GetPoints(), normals, tcoords, mesh);
+    Weld(mesh);
+    NormalizeNormals(mesh);
+  }
+  BuildFaces(input, mesh);
+  BuildTriangles(mesh);
+  this->UpdateProgress(0.2);
+
+  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  const vtkIdType nCorners = static_cast<vtkIdType>(mesh.FacePoints.size());
+  std::vector<std::array<float, 4>> cornerTangents;
+  std::vector<char> cornerSet;
+  {
+    MikkTSpace mikk(mesh, this->AngularThreshold);
+    mikk.Run(cornerTangents, cornerSet);
+  }
+  this->UpdateProgress(0.7);
+
+  // Corners of faces MikkTSpace handles (3 or 4 corners) that no group reached keep the
+  // reference's default space, (1, 0, 0) with w = -1, made orthogonal to the normal.
+  std::vector<char> cornerUsed(nCorners, 0);
+  vtkSMPTools::For(0, nFaces,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        if (mesh.FaceFirstTri[f] == mesh.FaceFirstTri[f + 1])
+        {
+          continue;
+        }
+        for (vtkIdType c = mesh.FaceOffsets[f]; c < mesh.FaceOffsets[f + 1]; ++c)
+        {
+          if (!cornerSet[c])
+          {
+            FinalTangent(mesh.N[mesh.FacePoints[c]], TSpace(), cornerTangents[c].data());
+          }
+          cornerUsed[c] = 1;
+        }
+      }
+    });
+
+  // Point -> its corners, in corner order; a point keeps its first frame, every other
+  // distinct frame at it becomes a new point.
+  std::vector<vtkIdType> pointCornerOffsets(nPts + 1, 0);
+  for (vtkIdType c = 0; c < nCorners; ++c)
+  {
+    pointCornerOffsets[mesh.FacePoints[c] + 1] += cornerUsed[c];
+  }
+  for (vtkIdType p = 0; p < nPts; ++p)
+  {
+    pointCornerOffsets[p + 1] += pointCornerOffsets[p];
+  }
+  std::vector<vtkIdType> pointCorners(pointCornerOffsets[nPts]);
+  {
+    std::vector<vtkIdType> fill(pointCornerOffsets.begin(), pointCornerOffsets.end() - 1);
+    for (vtkIdType c = 0; c < nCorners; ++c)
+    {
+      if (cornerUsed[c])
+      {
+        pointCorners[fill[mesh.FacePoints[c]]++] = c;
+      }
+    }
+  }
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(nCorners);
+  vtkIdType* cornerPoint = connectivity->GetPointer(0);
+  std::copy(mesh.FacePoints.begin(), mesh.FacePoints.end(), cornerPoint);
+  std::vector<vtkIdType> extraCount(nPts + 1, 0);
+  // The distinct frames at point p in order of first appearance: ranks[k] is the frame
+  // number of p's k-th corner, firsts[d] the first corner with frame d.
+  auto rankFrames = [&](vtkIdType p, std::vector<vtkIdType>& ranks, std::vector<vtkIdType>& firsts,
+                      std::vector<vtkIdType>& order, std::vector<vtkIdType>& groups)
+  {
+    const vtkIdType off = pointCornerOffsets[p];
+    const vtkIdType m = pointCornerOffsets[p + 1] - off;
+    auto frame = [&](vtkIdType k) { return cornerTangents[pointCorners[off + k]].data(); };
+    ranks.resize(m);
+    firsts.clear();
+    if (m <= static_cast<vtkIdType>(SmallFan))
+    {
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        size_t d = 0;
+        while (d < firsts.size() &&
+          std::memcmp(frame(k), cornerTangents[firsts[d]].data(), 4 * sizeof(float)) != 0)
+        {
+          ++d;
+        }
+        if (d == firsts.size())
+        {
+          firsts.push_back(pointCorners[off + k]);
+        }
+        ranks[k] = static_cast<vtkIdType>(d);
+      }
+      return;
+    }
+    // Many corners (a pole): sort by frame, then number the frames by first appearance.
+    order.resize(m);
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      order[k] = k;
+    }
+    std::sort(order.begin(), order.end(),
+      [&](vtkIdType x, vtkIdType y)
+      {
+        const int c = std::memcmp(frame(x), frame(y), 4 * sizeof(float));
+        return c < 0 || (c == 0 && x < y);
+      });
+    groups.clear(); // first corner position of each frame, in frame order
+    for (vtkIdType i = 0; i < m; ++i)
+    {
+      if (i == 0 || std::memcmp(frame(order[i - 1]), frame(order[i]), 4 * sizeof(float)) != 0)
+      {
+        groups.push_back(order[i]);
+      }
+      ranks[order[i]] = static_cast<vtkIdType>(groups.size()) - 1;
+    }
+    std::vector<vtkIdType> byFirst(groups.size());
+    for (size_t g = 0; g < groups.size(); ++g)
+    {
+      byFirst[g] = static_cast<vtkIdType>(g);
+    }
+    std::sort(byFirst.begin(), byFirst.end(),
+      [&](vtkIdType x, vtkIdType y) { return groups[x] < groups[y]; });
+    std::vector<vtkIdType> rankOf(groups.size());
+    for (size_t r = 0; r < byFirst.size(); ++r)
+    {
+      rankOf[byFirst[r]] = static_cast<vtkIdType>(r);
+      firsts.push_back(pointCorners[off + groups[byFirst[r]]]);
+    }
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      ranks[k] = rankOf[ranks[k]];
+    }
+  };
+  vtkSMPTools::For(0, nPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkIdType> ranks, firsts, order, groups;
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        rankFrames(p, ranks, firsts, order, groups);
+        extraCount[p + 1] = firsts.empty() ? 0 : static_cast<vtkIdType>(firsts.size()) - 1;
+      }
+    });
+  for (vtkIdType p = 0; p < nPts; ++p)
+  {
+    extraCount[p + 1] += extraCount[p];
+  }
+  const vtkIdType nExtra = extraCount[nPts];
+  const vtkIdType nOutPts = nPts + nExtra;
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(4);
+  tangents->SetNumberOfTuples(nOutPts);
+  float* tOut = tangents->GetPointer(0);
+  std::vector<vtkIdType> extraSource(nExtra);
+  vtkSMPTools::For(0, nPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkIdType> ranks, firsts, order, groups;
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        rankFrames(p, ranks, firsts, order, groups);
+        if (firsts.empty())
+        {
+          // Not on any polygon: any frame orthogonal to the normal.
+          FinalTangent(mesh.N[p], TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, tOut + 4 * p);
+          continue;
+        }
+        auto idOf = [&](vtkIdType d) { return d == 0 ? p : nPts + extraCount[p] + d - 1; };
+        for (size_t d = 0; d < firsts.size(); ++d)
+        {
+          const vtkIdType id = idOf(static_cast<vtkIdType>(d));
+          std::copy_n(cornerTangents[firsts[d]].data(), 4, tOut + 4 * id);
+          if (d > 0)
+          {
+            extraSource[id - nPts] = p;
+          }
+        }
+        const vtkIdType off = pointCornerOffsets[p];
+        for (size_t k = 0; k < ranks.size(); ++k)
+        {
+          cornerPoint[pointCorners[off + k]] = idOf(ranks[k]);
+        }
+      }
+    });
+  this->UpdateProgress(0.9);
+
+  // Points and point data, extended by the split points.
+  if (nExtra == 0)
+  {
+    output->SetPoints(input->GetPoints());
+    output->GetPointData()->PassData(inPD);
+  }
+  else
+  {
+    vtkNew<vtkIdList> src;
+    src->SetNumberOfIds(nOutPts);
+    for (vtkIdType i = 0; i < nPts; ++i)
+    {
+      src->SetId(i, i);
+    }
+    for (vtkIdType i = 0; i < nExtra; ++i)
+    {
+      src->SetId(nPts + i, extraSource[i]);
+    }
+    vtkNew<vtkPoints> points;
+    points->SetDataType(input->GetPoints()->GetDataType());
+    points->SetNumberOfPoints(nOutPts);
+    input->GetPoints()->GetData()->GetTuples(src, points->GetData());
+    output->SetPoints(points);
+    vtkPointData* outPD = output->GetPointData();
+    outPD->CopyAllocate(inPD, nOutPts);
+    outPD->CopyData(inPD, src, IdRange(nOutPts));
+  }
+  // VTK 9.1 accepts only 3-component tangent attributes, so the frame is the named array
+  // DESIGN.md fixes; a stale input array of that name must not survive next to it.
+  output->GetPointData()->RemoveArray("Tangents");
+  output->GetPointData()->AddArray(tangents);
+
+  // Cells: vertices and lines as they are; polygons renumbered; strips as triangles.
+  output->SetVerts(input->GetVerts());
+  output->SetLines(input->GetLines());
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(nFaces + 1);
+  std::copy(mesh.FaceOffsets.begin(), mesh.FaceOffsets.end(), offsets->GetPointer(0));
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+
+  const vtkIdType nLead = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const bool sameCells = input->GetNumberOfStrips() == 0 && nFaces == input->GetNumberOfPolys();
+  if (sameCells)
+  {
+    output->GetCellData()->PassData(input->GetCellData());
+  }
+  else
+  {
+    const vtkIdType nOutCells = nLead + nFaces;
+    vtkNew<vtkIdList> src;
+    src->SetNumberOfIds(nOutCells);
+    for (vtkIdType i = 0; i < nLead; ++i)
+    {
+      src->SetId(i, i);
+    }
+    for (vtkIdType f = 0; f < nFaces; ++f)
+    {
+      src->SetId(nLead + f, mesh.FaceCell[f]);
+    }
+    output->GetCellData()->CopyAllocate(input->GetCellData(), nOutCells);
+    output->GetCellData()->CopyData(input->GetCellData(), src, IdRange(nOutCells));
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+
+  // Non-finite input gives arbitrary (finite) frames: say so.
+  const vtkIdType nonFinite = std::count_if(mesh.P.begin(), mesh.P.end(),
+    [](const V3& p)
+    { return !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])); });
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite
+                    << " points have non-finite coordinates; the tangents "
+                       "around them are arbitrary unit vectors orthogonal to the normal.");
+  }
+  return 1;
+}

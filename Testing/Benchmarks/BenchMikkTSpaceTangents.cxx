@@ -1,0 +1,82 @@
+// vtkMikkTSpaceTangents against VTK's vtkPolyDataTangents on the same 1,000,000-triangle
+// torus, at 1 and 2 threads; then the reference MikkTSpace (npm package "mikktspace", run
+// by node) on the same triangles, for a note of its time. See BENCHMARKS.md.
+#include "MikkTSpaceTestMeshes.h"
+
+#include "vtkMikkTSpaceTangents.h"
+#include "vtkPolyDataTangents.h"
+#include "vtkSMPTools.h"
+
+#include <benchmark/benchmark.h>
+
+#include <iostream>
+
+namespace
+{
+vtkPolyData* Torus()
+{
+  // 1000 x 500 cells, two triangles each
+  static vtkSmartPointer<vtkPolyData> mesh = mikktest::MakeTorus(1000, 500);
+  return mesh;
+}
+
+template <typename Filter>
+void RunFilter(benchmark::State& state)
+{
+  vtkSMPTools::Initialize(static_cast<int>(state.range(0)));
+  vtkPolyData* mesh = Torus();
+  for (auto _ : state)
+  {
+    vtkNew<Filter> filter;
+    filter->SetInputData(mesh);
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
+  }
+  state.counters["triangles"] = static_cast<double>(mesh->GetNumberOfPolys());
+  vtkSMPTools::Initialize(0);
+}
+
+void BM_vtkPolyDataTangents(benchmark::State& state)
+{
+  RunFilter<vtkPolyDataTangents>(state);
+}
+
+void BM_vtkMikkTSpaceTangents(benchmark::State& state)
+{
+  RunFilter<vtkMikkTSpaceTangents>(state);
+}
+} // namespace
+
+BENCHMARK(BM_vtkPolyDataTangents)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_vtkMikkTSpaceTangents)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+int main(int argc, char** argv)
+{
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+  {
+    return 1;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+
+  // The reference on the same triangles, unindexed as it takes them (single-threaded WASM).
+  vtkPolyData* mesh = Torus();
+  mikktest::Corners corners;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      corners.Add(mesh, ids->GetId(k));
+    }
+  }
+  if (mikktest::ReferenceTangents(corners, "bench", 5).empty())
+  {
+    std::cerr << "The reference did not run: build the tests' fixture first (ctest -R "
+                 "MikkTSpaceReferenceInstall) so that " MIKKTSPACE_NPM_DIR " has the package.\n";
+    return 1;
+  }
+  return 0;
+}
