@@ -22,6 +22,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -128,6 +129,7 @@ struct Texels
   const T* Data;
   int W, H, NC, Comp;
   double Norm, Mid;
+  bool Clean; // no non-finite texel: values need no test
 
   // The height at a raw texel, non-finite values replaced (integer maps have none).
   double Value(T raw) const
@@ -218,6 +220,7 @@ void SampleHeight(
   double fx, fy;
   LinearTexels(s, W, i0, fx);
   LinearTexels(t, H, j0, fy);
+  const vtkIdType rowStride = static_cast<vtkIdType>(W) * tex.NC;
   if (interp == vtkDisplacementMapFilter::Linear)
   {
     const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
@@ -234,13 +237,36 @@ void SampleHeight(
   double wx[4], dwx[4], wy[4], dwy[4];
   CatmullRom(fx, wx, dwx);
   CatmullRom(fy, wy, dwy);
+  if (tex.Clean && i0 >= 1 && i0 + 2 < W && j0 >= 1 && j0 + 2 < H)
+  {
+    // The common case, away from the borders of a map without NaN: no wrap, no test.
+    const T* first = tex.Data + (j0 - 1) * rowStride + (i0 - 1) * tex.NC + tex.Comp;
+    const int nc = tex.NC;
+    h = hs = ht = 0.0;
+    for (int l = 0; l < 4; ++l)
+    {
+      const T* rowData = first + l * rowStride;
+      double row = 0.0, drow = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        const double v = tex.Norm * rowData[k * nc];
+        row += wx[k] * v;
+        drow += dwx[k] * v;
+      }
+      h += wy[l] * row;
+      hs += wy[l] * drow;
+      ht += dwy[l] * row;
+    }
+    hs *= W;
+    ht *= H;
+    return;
+  }
   // Offsets of the 4 columns and a pointer per row: 16 reads, no index arithmetic each.
   vtkIdType column[4];
   for (int k = 0; k < 4; ++k)
   {
     column[k] = static_cast<vtkIdType>(Wrapped(i0 - 1 + k, W, wrap)) * tex.NC + tex.Comp;
   }
-  const vtkIdType rowStride = static_cast<vtkIdType>(W) * tex.NC;
   h = hs = ht = 0.0;
   for (int l = 0; l < 4; ++l)
   {
@@ -424,7 +450,6 @@ struct Context
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
-  double* Distance = nullptr;            // d per point, kept for the seam pass
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -450,10 +475,9 @@ inline void WritePoint(const Context<R>& c, vtkIdType i, const double offset[3])
   }
 }
 
-// Normalises @a m and writes it (the input normal where @a m has no direction), then the
-// tangent re-orthogonalised to it with its handedness kept.
+// Normalises @a m and writes it (the input normal where @a m has no direction).
 template <typename R>
-inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 {
   if (FastNormalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
   {
@@ -467,10 +491,12 @@ inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
   {
     c.OutNormals->Set(i, k, m[k]);
   }
-  if (!c.OutTangents)
-  {
-    return;
-  }
+}
+
+// The tangent re-orthogonalised to the unit normal @a m, its handedness kept.
+template <typename R>
+inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
+{
   const int tnc = c.OutTangents->NC;
   double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
   for (int k = 0; k < tnc; ++k)
@@ -488,6 +514,16 @@ inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
   for (int k = 0; k < tnc; ++k)
   {
     c.OutTangents->Set(i, k, tg[k]);
+  }
+}
+
+template <typename R>
+inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+{
+  WriteNormal(c, i, m);
+  if (c.OutTangents)
+  {
+    WriteTangent(c, i, m);
   }
 }
 
@@ -515,7 +551,17 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
       }
     }
   }
-  std::sort(neighbours, neighbours + count);
+  // Insertion sort: a dozen entries, mostly in order already.
+  for (int a = 1; a < count; ++a)
+  {
+    const vtkIdType x = neighbours[a];
+    int b = a;
+    for (; b > 0 && neighbours[b - 1] > x; --b)
+    {
+      neighbours[b] = neighbours[b - 1];
+    }
+    neighbours[b] = x;
+  }
 
   double pi[3], ni[3];
   c.Points->Get3(i, pi);
@@ -565,6 +611,17 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
   }
 }
 
+// The displacement d at point @a i, with the height h and its derivatives in (s,t); one
+// function so that the seam pass sees the very values of pass 1.
+template <typename T, typename R>
+inline double Displacement(
+  const Context<R>& c, const Texels<T>& tex, vtkIdType i, double& h, double& hs, double& ht)
+{
+  SampleHeight(tex, c.Wrap, c.Interpolation, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h, hs, ht);
+  // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
+  return Finite(c.Scale * (h - c.Midlevel));
+}
+
 // Pass 1: displacement, and the analytic normals (Approximate, Exact).
 template <typename T, typename R>
 struct DisplaceWorker
@@ -578,99 +635,123 @@ struct DisplaceWorker
     const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
-    for (vtkIdType i = begin; i < end; ++i)
+    // Blocks of points, each in three short loops (displace and find the direction; normalise;
+    // the tangents) rather than one long one: the square roots and divisions of neighbouring
+    // points then overlap instead of waiting on one another.
+    constexpr vtkIdType block = 128;
+    double directions[block][3];
+    for (vtkIdType first = begin; first < end; first += block)
     {
-      double n[3];
-      InputNormal(c, i, n);
-      const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
-      double h, hs, ht;
-      SampleHeight(this->Tex, c.Wrap, c.Interpolation, s, t, h, hs, ht);
-      // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
-      const double d = Finite(c.Scale * (h - c.Midlevel));
-      const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
-      const double offset[3] = { d * n[0], d * n[1], d * n[2] };
-      WritePoint(c, i, offset);
-      if (c.Distance)
+      const vtkIdType last = std::min(end, first + block);
+      for (vtkIdType i = first; i < last; ++i)
       {
-        c.Distance[i] = d;
+        this->Direction(i, analytic, exact, directions[i - first]);
       }
       if (!analytic)
       {
         continue;
       }
-      double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-      if (c.DPdu)
+      for (vtkIdType i = first; i < last; ++i)
       {
-        c.DPdu->Get3(i, Ps);
-        c.DPdv->Get3(i, Pt);
-        for (int k = 0; k < 3; ++k)
+        WriteNormal(c, i, directions[i - first]);
+      }
+      if (c.OutTangents)
+      {
+        for (vtkIdType i = first; i < last; ++i)
         {
-          Ps[k] *= c.DerivativeScale[0];
-          Pt[k] *= c.DerivativeScale[1];
+          WriteTangent(c, i, directions[i - first]);
         }
       }
-      if (!c.DPdu || exact)
+    }
+  }
+
+  // Displaces point @a i and, in the analytic modes, returns its new normal's direction.
+  void Direction(vtkIdType i, bool analytic, bool exact, double m[3]) const
+  {
+    const Context<R>& c = this->C;
+    double n[3];
+    InputNormal(c, i, n);
+    const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
+    double h, hs, ht;
+    const double d = Displacement(c, this->Tex, i, h, hs, ht);
+    const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
+    const double offset[3] = { d * n[0], d * n[1], d * n[2] };
+    WritePoint(c, i, offset);
+    if (!analytic)
+    {
+      return;
+    }
+    double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
+    if (c.DPdu)
+    {
+      c.DPdu->Get3(i, Ps);
+      c.DPdv->Get3(i, Pt);
+      for (int k = 0; k < 3; ++k)
       {
-        FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+        Ps[k] *= c.DerivativeScale[0];
+        Pt[k] *= c.DerivativeScale[1];
       }
-      // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
-      RemoveNormalPart(n, Ps);
-      RemoveNormalPart(n, Pt);
-      double base[3];
-      Cross(Ps, Pt, base);
-      const double area = Dot(n, base);
-      const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
-      double m[3];
-      if (exact)
+    }
+    if (!c.DPdu || exact)
+    {
+      FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
+    }
+    // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
+    RemoveNormalPart(n, Ps);
+    RemoveNormalPart(n, Pt);
+    double base[3];
+    Cross(Ps, Pt, base);
+    const double area = Dot(n, base);
+    const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
+    if (exact)
+    {
+      RemoveNormalPart(n, Ns);
+      RemoveNormalPart(n, Nt);
+      double qs[3], qt[3];
+      for (int k = 0; k < 3; ++k)
       {
-        RemoveNormalPart(n, Ns);
-        RemoveNormalPart(n, Nt);
-        double qs[3], qt[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
-          qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
-        }
-        // Only the direction matters: scaling first keeps the cross product finite.
-        ScaleToUnitMax(qs);
-        ScaleToUnitMax(qt);
-        Cross(qs, qt, m);
+        qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
+        qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
       }
-      else
+      // Only the direction matters: scaling first keeps the cross product finite.
+      ScaleToUnitMax(qs);
+      ScaleToUnitMax(qt);
+      Cross(qs, qt, m);
+    }
+    else
+    {
+      double nxPs[3], nxPt[3];
+      Cross(n, Ps, nxPs);
+      Cross(n, Pt, nxPt);
+      const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
+      const double a = area * inv, bs = ds * inv, bt = dt * inv;
+      for (int k = 0; k < 3; ++k)
       {
-        double nxPs[3], nxPt[3];
-        Cross(n, Ps, nxPs);
-        Cross(n, Pt, nxPt);
-        const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
-        const double a = area * inv, bs = ds * inv, bt = dt * inv;
-        for (int k = 0; k < 3; ++k)
-        {
-          m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
-        }
+        m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
       }
-      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
-      if (degenerate)
-      {
-        std::copy(n, n + 3, m);
-      }
-      else if (area < 0.0)
-      {
-        m[0] = -m[0];
-        m[1] = -m[1];
-        m[2] = -m[2];
-      }
-      WriteNormalAndTangent(c, i, m);
+    }
+    const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
+    if (degenerate)
+    {
+      std::copy(n, n + 3, m);
+    }
+    else if (area < 0.0)
+    {
+      m[0] = -m[0];
+      m[1] = -m[1];
+      m[2] = -m[2];
     }
   }
 };
 
 // Mesh normals: area-weighted sum of the displaced polygons around each point, each
-// polygon oriented as its points' input normals.
+// polygon oriented as its points' input normals. The polygons' normals first, each once.
 template <typename R>
-struct MeshNormalWorker
+struct MeshPolygonNormalWorker
 {
   const Context<R>& C;
   const ArrayReader<R>& Moved;
+  double* CellNormals;
 
   void PolygonNormal(vtkIdType cell, double out[3]) const
   {
@@ -715,6 +796,23 @@ struct MeshNormalWorker
     }
   }
 
+  // Each polygon's normal, once.
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      this->PolygonNormal(cell, this->CellNormals + 3 * cell);
+    }
+  }
+};
+
+// Each point's normal: the sum of its polygons' in increasing polygon order.
+template <typename R>
+struct MeshPointNormalWorker
+{
+  const Context<R>& C;
+  const double* CellNormals;
+
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     const PolyLinks& mesh = *this->C.Polys;
@@ -723,8 +821,7 @@ struct MeshNormalWorker
       double sum[3] = { 0.0, 0.0, 0.0 };
       for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
       {
-        double x[3];
-        this->PolygonNormal(mesh.Links[l], x);
+        const double* x = this->CellNormals + 3 * mesh.Links[l];
         sum[0] += x[0];
         sum[1] += x[1];
         sum[2] += x[2];
@@ -735,57 +832,55 @@ struct MeshNormalWorker
 };
 
 // Seam candidates: a texture seam cuts the mesh, so its duplicated points lie on the
-// mesh's boundary. A point is a candidate unless every edge around it is shared by exactly
-// two of its polygons (or it has no polygon at all).
-struct BoundaryWorker
+// mesh's boundary. One flat sweep over the polygons' directed edges, no links and no
+// per-point sort: each edge a->b adds a hash of b to a's sum and subtracts a hash of a from
+// b's. Where every edge around a point is shared by two consistently oriented polygons
+// (an interior point), the sums cancel exactly; a boundary edge leaves a non-zero sum
+// (unless 64-bit hashes cancel by chance). Inconsistent orientation or non-manifold edges
+// only add candidates, which the position test then discards. Points without polygons are
+// candidates too. Serial, and integer sums commute: the flags never depend on threads.
+std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
 {
-  const PolyLinks& Mesh;
-  unsigned char* Flags;
-
-  void operator()(vtkIdType begin, vtkIdType end) const
+  // splitmix64's finaliser: neighbouring ids get unrelated hashes.
+  auto hash = [](vtkIdType id)
   {
-    constexpr int maxEdges = 64;
-    vtkIdType neighbours[maxEdges];
-    for (vtkIdType i = begin; i < end; ++i)
+    std::uint64_t z = static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  };
+  std::vector<std::uint64_t> sum(numPts, 0);
+  std::vector<unsigned char> used(numPts, 0);
+  for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
+  {
+    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
+    if (e - b < 2)
     {
-      int count = 0;
-      bool boundary = this->Mesh.LinkOffsets[i] == this->Mesh.LinkOffsets[i + 1];
-      for (vtkIdType l = this->Mesh.LinkOffsets[i]; !boundary && l < this->Mesh.LinkOffsets[i + 1];
-           ++l)
-      {
-        const vtkIdType cell = this->Mesh.Links[l];
-        const vtkIdType b = this->Mesh.Offsets[cell], e = this->Mesh.Offsets[cell + 1];
-        const vtkIdType size = e - b;
-        for (vtkIdType k = b; k < e; ++k)
-        {
-          if (this->Mesh.Conn[k] != i)
-          {
-            continue;
-          }
-          if (count + 2 > maxEdges)
-          {
-            boundary = true;
-            break;
-          }
-          neighbours[count++] = this->Mesh.Conn[b + (k - b + 1) % size];
-          neighbours[count++] = this->Mesh.Conn[b + (k - b + size - 1) % size];
-          break;
-        }
-      }
-      if (!boundary)
-      {
-        // Interior: every neighbour across an edge appears exactly twice.
-        std::sort(neighbours, neighbours + count);
-        for (int a = 0; a < count && !boundary; a += 2)
-        {
-          boundary = a + 1 >= count || neighbours[a] != neighbours[a + 1] ||
-            (a + 2 < count && neighbours[a + 2] == neighbours[a]);
-        }
-      }
-      this->Flags[i] = boundary ? 1 : 0;
+      continue;
+    }
+    vtkIdType from = mesh.Conn[e - 1];
+    std::uint64_t fromHash = hash(from);
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      const vtkIdType to = mesh.Conn[k];
+      const std::uint64_t toHash = hash(to);
+      sum[from] += toHash;
+      sum[to] -= fromHash;
+      used[to] = 1;
+      from = to;
+      fromHash = toHash;
     }
   }
-};
+  std::vector<vtkIdType> candidates;
+  for (vtkIdType i = 0; i < numPts; ++i)
+  {
+    if (sum[i] != 0 || !used[i])
+    {
+      candidates.push_back(i);
+    }
+  }
+  return candidates;
+}
 
 // Groups the points @a ids that lie within @a tol of one another (transitively): returns,
 // per entry of @a ids, the index of its group's first entry. Serial and in id order, so
@@ -1169,80 +1264,20 @@ int vtkDisplacementMapFilter::RequestData(
     PolyLinks mesh;
     if (needLinks || this->MergeSeams || useDerivs)
     {
-      mesh.Build(input->GetPolys(), numPts, needLinks || this->MergeSeams);
+      mesh.Build(input->GetPolys(), numPts, needLinks);
       ctx.Polys = &mesh;
     }
     if (useDerivs)
     {
       EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
     }
-    std::unique_ptr<double[]> distance;
-    if (this->MergeSeams)
-    {
-      distance.reset(new double[numPts]);
-      ctx.Distance = distance.get();
-    }
-
-    // Pass 1: points, and the normals of the analytic modes.
-    vtkIdType nonFinite = 0;
-    auto run = [&](auto* data)
-    {
-      using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
-      const Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel };
-      if (type == VTK_FLOAT || type == VTK_DOUBLE)
-      {
-        const vtkMTimeType changed = std::max(image->GetMTime(), scalars->GetMTime());
-        if (this->NonFiniteScanArray != scalars || this->NonFiniteScanTime != changed ||
-          this->NonFiniteScanComponent != this->Component)
-        {
-          this->NonFiniteCount = CountNonFinite(tex);
-          this->NonFiniteScanArray = scalars;
-          this->NonFiniteScanTime = changed;
-          this->NonFiniteScanComponent = this->Component;
-        }
-        nonFinite = this->NonFiniteCount;
-      }
-      DisplaceWorker<T, R> worker{ ctx, tex };
-      vtkSMPTools::For(0, numPts, Grain, worker);
-    };
-    switch (type)
-    {
-      case VTK_UNSIGNED_CHAR:
-        run(static_cast<const unsigned char*>(raw));
-        break;
-      case VTK_UNSIGNED_SHORT:
-        run(static_cast<const unsigned short*>(raw));
-        break;
-      case VTK_FLOAT:
-        run(static_cast<const float*>(raw));
-        break;
-      default:
-        run(static_cast<const double*>(raw));
-        break;
-    }
-    if (nonFinite > 0)
-    {
-      vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
-                      << " of the height map are NaN or infinite; they are treated as Midlevel ("
-                      << this->Midlevel << ").");
-    }
-
-    // Coincident points (seams, poles) as groups of (representative, member) in increasing
-    // order, so that every sum over a group has one order whatever the thread count.
+    // Coincident points (seams, poles; from the input points alone) as groups of (representative,
+    // member) in increasing order, so that every sum over a group has one order whatever the thread
+    // count.
     std::vector<std::pair<vtkIdType, vtkIdType>> groups;
     if (this->MergeSeams)
     {
-      std::vector<unsigned char> flags(numPts);
-      BoundaryWorker boundary{ mesh, flags.data() };
-      vtkSMPTools::For(0, numPts, Grain, boundary);
-      std::vector<vtkIdType> candidates;
-      for (vtkIdType i = 0; i < numPts; ++i)
-      {
-        if (flags[i])
-        {
-          candidates.push_back(i);
-        }
-      }
+      const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
         const std::vector<vtkIdType> rep =
@@ -1279,34 +1314,82 @@ int vtkDisplacementMapFilter::RequestData(
         b = e;
       }
     };
-    // One displacement per group: the mean of the members' own.
-    forEachGroup(
-      [&](size_t b, size_t e)
+    // Pass 1: points, and the normals of the analytic modes.
+    vtkIdType nonFinite = 0;
+    auto run = [&](auto* data)
+    {
+      using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
+      Texels<T> tex{ data, W, H, nc, this->Component, norm, this->Midlevel, true };
+      if (type == VTK_FLOAT || type == VTK_DOUBLE)
       {
-        double mean[3] = { 0.0, 0.0, 0.0 };
-        for (size_t g = b; g < e; ++g)
+        const vtkMTimeType changed = std::max(image->GetMTime(), scalars->GetMTime());
+        if (this->NonFiniteScanArray != scalars || this->NonFiniteScanTime != changed ||
+          this->NonFiniteScanComponent != this->Component)
         {
-          double n[3];
-          InputNormal(ctx, groups[g].second, n);
+          this->NonFiniteCount = CountNonFinite(tex);
+          this->NonFiniteScanArray = scalars;
+          this->NonFiniteScanTime = changed;
+          this->NonFiniteScanComponent = this->Component;
+        }
+        nonFinite = this->NonFiniteCount;
+        tex.Clean = nonFinite == 0;
+      }
+      DisplaceWorker<T, R> worker{ ctx, tex };
+      vtkSMPTools::For(0, numPts, Grain, worker);
+      // One displacement per group: the mean of the members' own.
+      forEachGroup(
+        [&](size_t b, size_t e)
+        {
+          double mean[3] = { 0.0, 0.0, 0.0 };
+          for (size_t g = b; g < e; ++g)
+          {
+            double n[3], h, hs, ht;
+            InputNormal(ctx, groups[g].second, n);
+            const double d = Displacement(ctx, tex, groups[g].second, h, hs, ht);
+            for (int k = 0; k < 3; ++k)
+            {
+              mean[k] += d * n[k];
+            }
+          }
           for (int k = 0; k < 3; ++k)
           {
-            mean[k] += distance[groups[g].second] * n[k];
+            mean[k] /= static_cast<double>(e - b);
           }
-        }
-        for (int k = 0; k < 3; ++k)
-        {
-          mean[k] /= static_cast<double>(e - b);
-        }
-        for (size_t g = b; g < e; ++g)
-        {
-          WritePoint(ctx, groups[g].second, mean);
-        }
-      });
+          for (size_t g = b; g < e; ++g)
+          {
+            WritePoint(ctx, groups[g].second, mean);
+          }
+        });
+    };
+    switch (type)
+    {
+      case VTK_UNSIGNED_CHAR:
+        run(static_cast<const unsigned char*>(raw));
+        break;
+      case VTK_UNSIGNED_SHORT:
+        run(static_cast<const unsigned short*>(raw));
+        break;
+      case VTK_FLOAT:
+        run(static_cast<const float*>(raw));
+        break;
+      default:
+        run(static_cast<const double*>(raw));
+        break;
+    }
+    if (nonFinite > 0)
+    {
+      vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
+                      << " of the height map are NaN or infinite; they are treated as Midlevel ("
+                      << this->Midlevel << ").");
+    }
 
     if (this->NormalMode == Mesh)
     {
       ArrayReader<R> moved(outPoints->GetData());
-      MeshNormalWorker<R> worker{ ctx, moved };
+      std::vector<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
+      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
+      vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
+      MeshPointNormalWorker<R> worker{ ctx, cellNormals.data() };
       vtkSMPTools::For(0, numPts, Grain, worker);
     }
 

@@ -78,8 +78,10 @@
  * normal (the normalised sum of theirs). Points that coincide but have different input
  * normals (a hard edge) keep their own normals but still move together. A seam cuts the
  * mesh, so its duplicated points are boundary points: only points on an edge that is not
- * shared by exactly two polygons (or in no polygon) are compared, which keeps the cost to
- * the boundary.
+ * shared by two consistently oriented polygons (or in no polygon) are compared. They are
+ * found by one sweep over the polygons' edges (no point links), which keeps the cost of
+ * the search to about that of reading the connectivity once, and to nothing more when
+ * the surface is closed.
  *
  * Precision: when the points and every array the filter reads are float (as VTK's sources
  * make them), the work reads them in place and the output points, normals and tangents are
