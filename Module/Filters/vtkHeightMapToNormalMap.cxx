@@ -389,7 +389,11 @@ struct Job
 template <typename InT, typename OutT>
 KernelReport RunKernel(const InT* in, int stride, const Job& job)
 {
-  using Real = typename std::conditional<std::is_same<InT, double>::value, double, float>::type;
+  // Heights of 4 bytes or more differ by less than a float resolves at their magnitude
+  // (its spacing is 256 near 4e9): difference them in double.
+  using Real = typename std::conditional<std::is_same<InT, double>::value ||
+      (std::is_integral<InT>::value && sizeof(InT) >= 4),
+    double, float>::type;
   double scale, offset;
   HeightNormalisation<InT>(scale, offset);
   NormalMapKernel<InT, Real, OutT> kernel;

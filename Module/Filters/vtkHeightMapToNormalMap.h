@@ -18,7 +18,8 @@
  *
  * Input: the first component of the point scalars of a 2-D image of any scalar type and
  * any size (1xN, Nx1 and non-powers of two included). Integer types are normalised to
- * [0,1] by their type's range; floating-point heights are used as they are. Non-finite
+ * [0,1] by their type's range (those of 4 bytes or more are differenced in double, exact
+ * up to 2^53); floating-point heights are used as they are. Non-finite
  * heights are replaced by the mean of their finite neighbours (one warning with the count).
  *
  * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, the seed's relief map). For

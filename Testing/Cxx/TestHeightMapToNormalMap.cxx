@@ -18,6 +18,9 @@
 #include <vtkSOADataArrayTemplate.h>
 #include <vtkSignedCharArray.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkTypeUInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
 
@@ -29,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace
@@ -711,6 +715,59 @@ TEST(TestHeightMapToNormalMap, IntegerHeightsAreNormalisedByTypeRange)
       EXPECT_NEAR(x->GetValue(v), y->GetValue(v), 1e-5) << c.Integer->GetScalarTypeAsString();
     }
   }
+}
+
+// 32- and 64-bit integer heights keep their precision: a ramp of steps far smaller than a
+// float's spacing at its magnitude (256 near 4e9, 2^27 near 1e15) gives the closed-form
+// normal of a plane, k*W*step/range along s and k*H*stepT/range along t.
+TEST(TestHeightMapToNormalMap, WideIntegerHeightsKeepTheirPrecision)
+{
+  const int w = 8, h = 6;
+  auto check = [&](auto* array, double base, double lo, double hi)
+  {
+    const double range = hi - lo, stepS = 100.0, stepT = 37.0;
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(w, h, 1);
+    array->SetNumberOfTuples(w * h);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        array->SetValue(j * w + i,
+          static_cast<typename std::remove_pointer<decltype(array)>::type::ValueType>(
+            base + stepS * i + stepT * j));
+      }
+    }
+    image->GetPointData()->SetScalars(array);
+    Settings s;
+    s.Wrap = vtkHeightMapToNormalMap::ClampToEdge;
+    s.Strength = range / (stepS * w); // slope 1 along s
+    double want[3] = { -1.0, -s.Strength * h * stepT / range, 1.0 };
+    vtkSurfaceDetail::Normalize(want);
+    for (int scheme = vtkHeightMapToNormalMap::Forward; scheme <= vtkHeightMapToNormalMap::Scharr;
+         ++scheme)
+    {
+      s.Scheme = scheme;
+      auto map = MakeMap(image, s);
+      for (int j = 1; j < h - 1; ++j)
+      {
+        for (int i = 1; i < w - 1; ++i)
+        {
+          double n[3];
+          NormalAt(map, i, j, n);
+          EXPECT_LT(AngleBetween(n, want), 1e-6)
+            << array->GetDataTypeAsString() << " " << SchemeName(scheme) << " texel " << i << ","
+            << j << ": " << n[0] << " " << n[1] << " " << n[2];
+        }
+      }
+    }
+  };
+  vtkNew<vtkTypeUInt32Array> u32;
+  check(u32.Get(), 4e9, 0.0, 4294967295.0);
+  vtkNew<vtkTypeInt32Array> i32;
+  check(i32.Get(), 2e9, -2147483648.0, 2147483647.0);
+  vtkNew<vtkTypeInt64Array> i64;
+  check(i64.Get(), 1e15, -9223372036854775808.0, 9223372036854775807.0);
 }
 
 // 1xN, Nx1, 1x1 and odd sizes work; a single column has no slope along s in any wrap mode.
