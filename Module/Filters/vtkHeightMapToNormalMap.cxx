@@ -164,7 +164,18 @@ struct NormalMapKernel
       const Real* m = this->Scheme == vtkHeightMapToNormalMap::Forward
         ? nullptr
         : this->Row(c, keep[0], keep) + 1 + this->I0;
-      this->Slopes(m, c0, p, n, gx, gy);
+      this->Slopes<false>(m, c0, p, n, gx, gy);
+      // Finite heights near the type's limits can overflow a difference to +inf and another
+      // to -inf (their sum is NaN), or meet Strength 0 (0*inf): rare, so checked, not avoided.
+      int nan = 0;
+      for (int i = 0; i < n; ++i)
+      {
+        nan += (gx[i] == gx[i] && gy[i] == gy[i]) ? 0 : 1;
+      }
+      if (nan > 0)
+      {
+        this->Slopes<true>(m, c0, p, n, gx, gy);
+      }
       OutT* out = this->Out + static_cast<size_t>(j - this->J0) * n * this->OutComps;
       this->Encode(c, c0, n, out);
     }
@@ -172,16 +183,36 @@ struct NormalMapKernel
 
   void Reduce() {}
 
+  // Safe: the heights are scaled by 1/64 first (exact: a power of two), so that no stencil
+  // sum of finite heights overflows, and the slope is scaled back after the multiplication
+  // by Sx or Sy (which may overflow to inf, clamped later, but is never 0*inf).
+  template <bool Safe>
   void Slopes(const Real* m, const Real* c0, const Real* p, int n, Real* gx, Real* gy) const
   {
     const Real sx = this->Sx, sy = this->Sy;
+    auto in = [](Real v)
+    {
+      if constexpr (Safe)
+      {
+        return v * Real(1.0 / 64.0);
+      }
+      return v;
+    };
+    auto out = [](Real v)
+    {
+      if constexpr (Safe)
+      {
+        return v * Real(64);
+      }
+      return v;
+    };
     switch (this->Scheme)
     {
       case vtkHeightMapToNormalMap::Forward:
         for (int i = 0; i < n; ++i)
         {
-          gx[i] = (c0[i + 1] - c0[i]) * sx;
-          gy[i] = (p[i] - c0[i]) * sy;
+          gx[i] = out((in(c0[i + 1]) - in(c0[i])) * sx);
+          gy[i] = out((in(p[i]) - in(c0[i])) * sy);
         }
         break;
       case vtkHeightMapToNormalMap::Central:
@@ -189,8 +220,8 @@ struct NormalMapKernel
         const Real hx = sx * Real(0.5), hy = sy * Real(0.5);
         for (int i = 0; i < n; ++i)
         {
-          gx[i] = (c0[i + 1] - c0[i - 1]) * hx;
-          gy[i] = (p[i] - m[i]) * hy;
+          gx[i] = out((in(c0[i + 1]) - in(c0[i - 1])) * hx);
+          gy[i] = out((in(p[i]) - in(m[i])) * hy);
         }
         break;
       }
@@ -204,10 +235,12 @@ struct NormalMapKernel
         const Real hx = sx * norm, hy = sy * norm;
         for (int i = 0; i < n; ++i)
         {
-          gx[i] =
-            (a * (m[i + 1] - m[i - 1]) + b * (c0[i + 1] - c0[i - 1]) + a * (p[i + 1] - p[i - 1])) *
-            hx;
-          gy[i] = (a * (p[i - 1] - m[i - 1]) + b * (p[i] - m[i]) + a * (p[i + 1] - m[i + 1])) * hy;
+          gx[i] = out((a * (in(m[i + 1]) - in(m[i - 1])) + b * (in(c0[i + 1]) - in(c0[i - 1])) +
+                        a * (in(p[i + 1]) - in(p[i - 1]))) *
+            hx);
+          gy[i] = out((a * (in(p[i - 1]) - in(m[i - 1])) + b * (in(p[i]) - in(m[i])) +
+                        a * (in(p[i + 1]) - in(m[i + 1]))) *
+            hy);
         }
         break;
       }

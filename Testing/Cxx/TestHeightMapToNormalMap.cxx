@@ -31,6 +31,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <type_traits>
 #include <vector>
@@ -949,6 +950,65 @@ TEST(TestHeightMapToNormalMap, NonFiniteHeightsAreRepairedWithOneWarning)
   {
     EXPECT_TRUE(std::isfinite(got->GetValue(v)));
   }
+}
+
+// Heights at the ends of their type's range: one difference overflows to +inf, another to
+// -inf, and a stencil adding them (or Strength 0 times inf) must not make NaN. Strength 0
+// is the plain truth to compare with: a flat map.
+TEST(TestHeightMapToNormalMap, ExtremeHeightsNeverGiveNaN)
+{
+  auto check = [](auto* array, double big)
+  {
+    const int w = 5, h = 4;
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(w, h, 1);
+    array->SetNumberOfTuples(w * h);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        // A checkerboard and a stripe mixed, so that the stencil's terms overflow both ways.
+        array->SetValue(j * w + i, ((i + j) % 2 == 0) != (i % 3 == 0) ? big : -big);
+      }
+    }
+    image->GetPointData()->SetScalars(array);
+    for (double strength : { 1.0, 0.0, -3.0 })
+    {
+      for (int scheme = vtkHeightMapToNormalMap::Forward; scheme <= vtkHeightMapToNormalMap::Scharr;
+           ++scheme)
+      {
+        for (int wrap = vtkHeightMapToNormalMap::ClampToEdge;
+             wrap <= vtkHeightMapToNormalMap::MirroredRepeat; ++wrap)
+        {
+          Settings s;
+          s.Scheme = scheme;
+          s.Wrap = wrap;
+          s.Strength = strength;
+          auto map = MakeMap(image, s);
+          auto* got = vtkFloatArray::SafeDownCast(map->GetPointData()->GetScalars());
+          ASSERT_NE(got, nullptr);
+          for (vtkIdType t = 0; t < got->GetNumberOfTuples(); ++t)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              const float v = got->GetTypedComponent(t, c);
+              ASSERT_TRUE(std::isfinite(v))
+                << array->GetDataTypeAsString() << " " << SchemeName(scheme) << " wrap " << wrap
+                << " strength " << strength << " texel " << t;
+              if (strength == 0.0)
+              {
+                EXPECT_EQ(v, c == 2 ? 1.0f : 0.5f) << SchemeName(scheme) << " texel " << t;
+              }
+            }
+          }
+        }
+      }
+    }
+  };
+  vtkNew<vtkFloatArray> f;
+  check(f.Get(), std::numeric_limits<float>::max());
+  vtkNew<vtkDoubleArray> d;
+  check(d.Get(), std::numeric_limits<double>::max());
 }
 
 // Bad input is reported, the filter fails and its output is empty.
