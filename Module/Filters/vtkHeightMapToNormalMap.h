@@ -20,7 +20,9 @@
  * any size (1xN, Nx1 and non-powers of two included). Integer types are normalised to
  * [0,1] by their type's range (those of 4 bytes or more are differenced in double, exact
  * up to 2^53); floating-point heights are used as they are. Non-finite
- * heights are replaced by the mean of their finite neighbours (one warning with the count).
+ * heights are filled from the finite ones outward, continuing their slope (a hole in a plane
+ * is filled with the plane), within the range of the finite heights; one warning with the
+ * count.
  *
  * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, the seed's relief map). For
  * floating-point input h is the height as given, the same value the normal map and
