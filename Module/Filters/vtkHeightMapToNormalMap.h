@@ -43,6 +43,7 @@
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkSurfaceDetailConventions.h" // For the wrap mode values
 
 class SURFACEDETAILFILTERS_EXPORT vtkHeightMapToNormalMap : public vtkImageAlgorithm
 {
@@ -59,12 +60,12 @@ public:
     Scharr = 3
   };
 
-  /// Wrap modes, with vtkTexture's numbering.
+  /// Wrap modes: vtkSurfaceDetail::WrapMode's values (vtkTexture's numbering), by name.
   enum WrapType
   {
-    ClampToEdge = 0,
-    Repeat = 1,
-    MirroredRepeat = 2
+    ClampToEdge = vtkSurfaceDetail::ClampToEdge,
+    Repeat = vtkSurfaceDetail::Repeat,
+    MirroredRepeat = vtkSurfaceDetail::MirroredRepeat
   };
 
   ///@{
