@@ -167,14 +167,10 @@ struct NormalMapKernel
       this->Slopes<false>(m, c0, p, n, gx, gy);
       // Finite heights near the type's limits can overflow a difference to +inf and another
       // to -inf (their sum is NaN), or meet Strength 0 (0*inf): rare, so checked, not avoided.
-      int nan = 0;
-      for (int i = 0; i < n; ++i)
-      {
-        nan += (gx[i] == gx[i] && gy[i] == gy[i]) ? 0 : 1;
-      }
-      if (nan > 0)
+      if (this->Normals(c, n) > 0)
       {
         this->Slopes<true>(m, c0, p, n, gx, gy);
+        this->Normals(c, n);
       }
       OutT* out = this->Out + static_cast<size_t>(j - this->J0) * n * this->OutComps;
       this->Encode(c, c0, n, out);
@@ -247,9 +243,10 @@ struct NormalMapKernel
     }
   }
 
-  // Two passes so that the arithmetic vectorises: unit normals into planar scratch rows,
-  // then quantisation into the interleaved output.
-  void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
+  // Two passes so that the arithmetic vectorises: unit normals into planar scratch rows
+  // (Normals), then quantisation into the interleaved output (Encode). Normals returns how
+  // many slopes were NaN, counted in the same loop (a NaN passes the clamps).
+  int Normals(RowCache<Real>& c, int n) const
   {
     const Real lim = static_cast<Real>(MaxSlope);
     const Real half = Real(0.5);
@@ -257,6 +254,7 @@ struct NormalMapKernel
     Real* r = c.Gx.data(); // the slopes are overwritten by the colours, texel by texel
     Real* g = c.Gy.data();
     Real* b = c.B.data();
+    int nan = 0;
     for (int i = 0; i < n; ++i)
     {
       const Real x = -std::min(std::max(r[i], -lim), lim);
@@ -264,10 +262,19 @@ struct NormalMapKernel
       // One division per texel, as GPUs normalise (v * 1/|v|): the three divisions of
       // v/|v| cost more than everything else in the loop.
       const Real inv = Real(1) / std::sqrt(x * x + y * y + Real(1));
+      nan += inv == inv ? 0 : 1;
       r[i] = half * (x * inv) + half;
       g[i] = half * (y * inv) + half;
       b[i] = half * inv + half;
     }
+    return nan;
+  }
+
+  void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
+  {
+    Real* r = c.Gx.data();
+    Real* g = c.Gy.data();
+    Real* b = c.B.data();
     const int nc = this->OutComps;
     Real* planes[4] = { r, g, b, c.A.data() };
     if (nc == 4)
@@ -352,7 +359,7 @@ struct NormalMapKernel
   }
 };
 
-// The height texel (i,j) gets to replace a non-finite one, from the finite texels around it
+// The height that replaces non-finite texel (i,j), from the finite texels around it
 // (wrapped as the filter wraps): the mean of the linear extrapolations 2*h(x+d) - h(x+2d)
 // along the eight directions d where both are finite, which continues a plane exactly; or,
 // with no such pair, the mean of the finite neighbours. Texels that wrap onto the texel
