@@ -164,7 +164,14 @@ struct NormalMapKernel
       const Real* m = this->Scheme == vtkHeightMapToNormalMap::Forward
         ? nullptr
         : this->Row(c, keep[0], keep) + 1 + this->I0;
-      this->Slopes(m, c0, p, n, gx, gy);
+      this->Slopes<false>(m, c0, p, n, gx, gy);
+      // Finite heights near the type's limits can overflow a difference to +inf and another
+      // to -inf (their sum is NaN), or meet Strength 0 (0*inf): rare, so checked, not avoided.
+      if (this->Normals(c, n) > 0)
+      {
+        this->Slopes<true>(m, c0, p, n, gx, gy);
+        this->Normals(c, n);
+      }
       OutT* out = this->Out + static_cast<size_t>(j - this->J0) * n * this->OutComps;
       this->Encode(c, c0, n, out);
     }
@@ -172,16 +179,36 @@ struct NormalMapKernel
 
   void Reduce() {}
 
+  // Safe: the heights are scaled by 1/64 first (exact: a power of two), so that no stencil
+  // sum of finite heights overflows, and the slope is scaled back after the multiplication
+  // by Sx or Sy (which may overflow to inf, clamped later, but is never 0*inf).
+  template <bool Safe>
   void Slopes(const Real* m, const Real* c0, const Real* p, int n, Real* gx, Real* gy) const
   {
     const Real sx = this->Sx, sy = this->Sy;
+    auto in = [](Real v)
+    {
+      if constexpr (Safe)
+      {
+        return v * Real(1.0 / 64.0);
+      }
+      return v;
+    };
+    auto out = [](Real v)
+    {
+      if constexpr (Safe)
+      {
+        return v * Real(64);
+      }
+      return v;
+    };
     switch (this->Scheme)
     {
       case vtkHeightMapToNormalMap::Forward:
         for (int i = 0; i < n; ++i)
         {
-          gx[i] = (c0[i + 1] - c0[i]) * sx;
-          gy[i] = (p[i] - c0[i]) * sy;
+          gx[i] = out((in(c0[i + 1]) - in(c0[i])) * sx);
+          gy[i] = out((in(p[i]) - in(c0[i])) * sy);
         }
         break;
       case vtkHeightMapToNormalMap::Central:
@@ -189,8 +216,8 @@ struct NormalMapKernel
         const Real hx = sx * Real(0.5), hy = sy * Real(0.5);
         for (int i = 0; i < n; ++i)
         {
-          gx[i] = (c0[i + 1] - c0[i - 1]) * hx;
-          gy[i] = (p[i] - m[i]) * hy;
+          gx[i] = out((in(c0[i + 1]) - in(c0[i - 1])) * hx);
+          gy[i] = out((in(p[i]) - in(m[i])) * hy);
         }
         break;
       }
@@ -204,19 +231,22 @@ struct NormalMapKernel
         const Real hx = sx * norm, hy = sy * norm;
         for (int i = 0; i < n; ++i)
         {
-          gx[i] =
-            (a * (m[i + 1] - m[i - 1]) + b * (c0[i + 1] - c0[i - 1]) + a * (p[i + 1] - p[i - 1])) *
-            hx;
-          gy[i] = (a * (p[i - 1] - m[i - 1]) + b * (p[i] - m[i]) + a * (p[i + 1] - m[i + 1])) * hy;
+          gx[i] = out((a * (in(m[i + 1]) - in(m[i - 1])) + b * (in(c0[i + 1]) - in(c0[i - 1])) +
+                        a * (in(p[i + 1]) - in(p[i - 1]))) *
+            hx);
+          gy[i] = out((a * (in(p[i - 1]) - in(m[i - 1])) + b * (in(p[i]) - in(m[i])) +
+                        a * (in(p[i + 1]) - in(m[i + 1]))) *
+            hy);
         }
         break;
       }
     }
   }
 
-  // Two passes so that the arithmetic vectorises: unit normals into planar scratch rows,
-  // then quantisation into the interleaved output.
-  void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
+  // Two passes so that the arithmetic vectorises: unit normals into planar scratch rows
+  // (Normals), then quantisation into the interleaved output (Encode). Normals returns how
+  // many slopes were NaN, counted in the same loop (a NaN passes the clamps).
+  int Normals(RowCache<Real>& c, int n) const
   {
     const Real lim = static_cast<Real>(MaxSlope);
     const Real half = Real(0.5);
@@ -224,6 +254,7 @@ struct NormalMapKernel
     Real* r = c.Gx.data(); // the slopes are overwritten by the colours, texel by texel
     Real* g = c.Gy.data();
     Real* b = c.B.data();
+    int nan = 0;
     for (int i = 0; i < n; ++i)
     {
       const Real x = -std::min(std::max(r[i], -lim), lim);
@@ -231,10 +262,19 @@ struct NormalMapKernel
       // One division per texel, as GPUs normalise (v * 1/|v|): the three divisions of
       // v/|v| cost more than everything else in the loop.
       const Real inv = Real(1) / std::sqrt(x * x + y * y + Real(1));
+      nan += inv == inv ? 0 : 1;
       r[i] = half * (x * inv) + half;
       g[i] = half * (y * inv) + half;
       b[i] = half * inv + half;
     }
+    return nan;
+  }
+
+  void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
+  {
+    Real* r = c.Gx.data();
+    Real* g = c.Gy.data();
+    Real* b = c.B.data();
     const int nc = this->OutComps;
     Real* planes[4] = { r, g, b, c.A.data() };
     if (nc == 4)
@@ -319,60 +359,136 @@ struct NormalMapKernel
   }
 };
 
-// Replaces each non-finite height by the mean of the finite ones among the eight texels its
-// stencil reads (wrapped as the filter wraps), sweeping until none is left; an image with no
-// finite height at all becomes flat 0.
+// The height that replaces non-finite texel (i,j), from the finite texels around it
+// (wrapped as the filter wraps): the mean of the linear extrapolations 2*h(x+d) - h(x+2d)
+// along the eight directions d where both are finite, which continues a plane exactly; or,
+// with no such pair, the mean of the finite neighbours. Texels that wrap onto the texel
+// itself or onto one another are counted once, so ClampToEdge corners are not biased.
+template <typename Real>
+double FillValue(const std::vector<Real>& h, int i, int j, int w, int hgt, int wrap)
+{
+  const size_t self = static_cast<size_t>(j) * w + i;
+  size_t seen[8], seenPairs[8][2];
+  int nSeen = 0, nPairs = 0;
+  double sum = 0.0, pairSum = 0.0;
+  auto index = [&](int di, int dj)
+  {
+    return static_cast<size_t>(vtkSurfaceDetail::WrapIndex(j + dj, hgt, wrap)) * w +
+      vtkSurfaceDetail::WrapIndex(i + di, w, wrap);
+  };
+  for (int dj = -1; dj <= 1; ++dj)
+  {
+    for (int di = -1; di <= 1; ++di)
+    {
+      const size_t k1 = index(di, dj);
+      if (k1 == self || !std::isfinite(h[k1]))
+      {
+        continue;
+      }
+      if (std::find(seen, seen + nSeen, k1) == seen + nSeen)
+      {
+        seen[nSeen++] = k1;
+        sum += h[k1];
+      }
+      // Under ClampToEdge and MirroredRepeat a pair reaching past the border is not on a
+      // line through the texel: only Repeat continues the image across it.
+      const bool inside = wrap == vtkSurfaceDetail::Repeat ||
+        (i + 2 * di >= 0 && i + 2 * di < w && j + 2 * dj >= 0 && j + 2 * dj < hgt);
+      const size_t k2 = index(2 * di, 2 * dj);
+      const bool known = std::any_of(
+        seenPairs, seenPairs + nPairs, [&](const size_t* p) { return p[0] == k1 && p[1] == k2; });
+      if (inside && k2 != self && k2 != k1 && std::isfinite(h[k2]) && !known)
+      {
+        seenPairs[nPairs][0] = k1;
+        seenPairs[nPairs][1] = k2;
+        ++nPairs;
+        pairSum += 2.0 * static_cast<double>(h[k1]) - static_cast<double>(h[k2]);
+      }
+    }
+  }
+  return nPairs > 0 ? pairSum / nPairs : sum / nSeen;
+}
+
+// Fills the non-finite heights from the finite ones outward, one ring of texels at a time
+// (a breadth-first fill, O(texels)): each ring is computed from the texels finite before it
+// (FillValue), then made finite. Values are clamped to the range of the finite input so that
+// extrapolation across a large hole cannot run away. No finite height at all: flat 0.
 template <typename Real>
 void RepairHeights(std::vector<Real>& h, int w, int hgt, int wrap)
 {
-  std::vector<Real> next(h);
-  bool left = true;
-  while (left)
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Real v : h)
   {
-    left = false;
-    bool progress = false;
-    for (int j = 0; j < hgt; ++j)
+    if (std::isfinite(v))
     {
-      for (int i = 0; i < w; ++i)
+      lo = std::min(lo, static_cast<double>(v));
+      hi = std::max(hi, static_cast<double>(v));
+    }
+  }
+  if (!(lo <= hi))
+  {
+    std::fill(h.begin(), h.end(), Real(0));
+    return;
+  }
+  // Visits the texels of the 8-neighbourhood of texel k, as wrapped (itself excluded).
+  auto forNeighbours = [&](size_t k, auto&& visit)
+  {
+    const int i = static_cast<int>(k % w), j = static_cast<int>(k / w);
+    for (int dj = -1; dj <= 1; ++dj)
+    {
+      for (int di = -1; di <= 1; ++di)
       {
-        const size_t k = static_cast<size_t>(j) * w + i;
-        if (std::isfinite(h[k]))
+        const size_t kk = static_cast<size_t>(vtkSurfaceDetail::WrapIndex(j + dj, hgt, wrap)) * w +
+          vtkSurfaceDetail::WrapIndex(i + di, w, wrap);
+        if (kk != k)
         {
-          continue;
-        }
-        double sum = 0.0;
-        int count = 0;
-        for (int dj = -1; dj <= 1; ++dj)
-        {
-          const int jj = vtkSurfaceDetail::WrapIndex(j + dj, hgt, wrap);
-          for (int di = -1; di <= 1; ++di)
-          {
-            const int ii = vtkSurfaceDetail::WrapIndex(i + di, w, wrap);
-            const Real v = h[static_cast<size_t>(jj) * w + ii];
-            if ((di != 0 || dj != 0) && std::isfinite(v))
-            {
-              sum += v;
-              ++count;
-            }
-          }
-        }
-        if (count > 0)
-        {
-          next[k] = static_cast<Real>(sum / count);
-          progress = true;
-        }
-        else
-        {
-          left = true;
+          visit(kk);
         }
       }
     }
-    if (left && !progress)
+  };
+  std::vector<char> queued(h.size(), 0);
+  std::vector<size_t> ring, next;
+  for (size_t k = 0; k < h.size(); ++k)
+  {
+    if (!std::isfinite(h[k]))
     {
-      std::fill(next.begin(), next.end(), Real(0));
-      left = false;
+      bool touches = false;
+      forNeighbours(k, [&](size_t kk) { touches = touches || std::isfinite(h[kk]); });
+      if (touches)
+      {
+        ring.push_back(k);
+        queued[k] = 1;
+      }
     }
-    h = next;
+  }
+  std::vector<double> values;
+  while (!ring.empty())
+  {
+    values.resize(ring.size());
+    for (size_t r = 0; r < ring.size(); ++r)
+    {
+      values[r] =
+        FillValue(h, static_cast<int>(ring[r] % w), static_cast<int>(ring[r] / w), w, hgt, wrap);
+    }
+    for (size_t r = 0; r < ring.size(); ++r)
+    {
+      h[ring[r]] = static_cast<Real>(std::min(std::max(values[r], lo), hi));
+    }
+    next.clear();
+    for (const size_t k : ring)
+    {
+      forNeighbours(k,
+        [&](size_t kk)
+        {
+          if (!queued[kk] && !std::isfinite(h[kk]))
+          {
+            queued[kk] = 1;
+            next.push_back(kk);
+          }
+        });
+    }
+    ring.swap(next);
   }
 }
 
@@ -389,7 +505,11 @@ struct Job
 template <typename InT, typename OutT>
 KernelReport RunKernel(const InT* in, int stride, const Job& job)
 {
-  using Real = typename std::conditional<std::is_same<InT, double>::value, double, float>::type;
+  // Heights of 4 bytes or more differ by less than a float resolves at their magnitude
+  // (its spacing is 256 near 4e9): difference them in double.
+  using Real = typename std::conditional<std::is_same<InT, double>::value ||
+      (std::is_integral<InT>::value && sizeof(InT) >= 4),
+    double, float>::type;
   double scale, offset;
   HeightNormalisation<InT>(scale, offset);
   NormalMapKernel<InT, Real, OutT> kernel;
@@ -455,7 +575,7 @@ void RunFloating(
     }
     vtkWarningWithObjectMacro(
       self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
-            << "finite neighbours.");
+            << "finite neighbours (continuing their slope where it can).");
     RepairHeights(repaired, job.W, job.H, job.Wrap);
     report = DispatchOutput(repaired.data(), 1, job);
   }

@@ -18,8 +18,11 @@
  *
  * Input: the first component of the point scalars of a 2-D image of any scalar type and
  * any size (1xN, Nx1 and non-powers of two included). Integer types are normalised to
- * [0,1] by their type's range; floating-point heights are used as they are. Non-finite
- * heights are replaced by the mean of their finite neighbours (one warning with the count).
+ * [0,1] by their type's range (those of 4 bytes or more are differenced in double, exact
+ * up to 2^53); floating-point heights are used as they are. Non-finite
+ * heights are filled from the finite ones outward, continuing their slope (a hole in a plane
+ * is filled with the plane), within the range of the finite heights; one warning with the
+ * count.
  *
  * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, the seed's relief map). For
  * floating-point input h is the height as given, the same value the normal map and
@@ -40,6 +43,7 @@
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkSurfaceDetailConventions.h" // For the wrap mode values
 
 class SURFACEDETAILFILTERS_EXPORT vtkHeightMapToNormalMap : public vtkImageAlgorithm
 {
@@ -56,12 +60,12 @@ public:
     Scharr = 3
   };
 
-  /// Wrap modes, with vtkTexture's numbering.
+  /// Wrap modes: vtkSurfaceDetail::WrapMode's values (vtkTexture's numbering), by name.
   enum WrapType
   {
-    ClampToEdge = 0,
-    Repeat = 1,
-    MirroredRepeat = 2
+    ClampToEdge = vtkSurfaceDetail::ClampToEdge,
+    Repeat = vtkSurfaceDetail::Repeat,
+    MirroredRepeat = vtkSurfaceDetail::MirroredRepeat
   };
 
   ///@{

@@ -3,9 +3,13 @@
  * @brief  The conventions shared by every SurfaceDetail filter and shader, in one place.
  *
  * SurfaceDetail's CPU filters (displacement, height map to normal map, baking) and its
- * GLSL (glsl/vtkSurfaceDetailCommon.glsl mirrors this file) must agree to the texel on how
- * a texture is sampled and how a tangent frame and a normal are encoded, or a map baked on
- * the CPU shows seams on the GPU. These inline functions are that agreement:
+ * shaders must agree to the texel on how a texture is sampled and how a tangent frame and
+ * a normal are encoded, or a map baked on the CPU shows seams on the GPU. These inline
+ * functions are that agreement. On the GPU side (Module/Rendering): texel centres, wrap
+ * modes and linear filtering are OpenGL's own sampling, set up with the same wrap value
+ * by vtkSurfaceDetailMapper.cxx (UploadHeightMap, which also uses WrapIndex);
+ * glsl/vtkSurfaceDetailTangentFrameFS.glsl applies the tangent frame and
+ * glsl/vtkSurfaceDetailNormalCoding.glsl is the twin of EncodeNormal/DecodeNormal.
  *
  * - Texture coordinates (s,t) have their origin bottom-left; row 0 of a vtkImageData is
  *   t = 0; texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H).
@@ -35,7 +39,10 @@ enum WrapMode
   MirroredRepeat = 2
 };
 
-/// The texel index that texel @a i of a texture @a n texels wide reads under @a mode.
+/**
+ * The texel index that texel @a i of a texture @a n texels wide reads under @a mode.
+ * Precondition: n >= 1 (callers reject empty images first; n = 0 would divide by zero).
+ */
 inline int WrapIndex(int i, int n, int mode)
 {
   switch (mode)
@@ -166,8 +173,8 @@ inline double Normalize(double v[3])
  * (T = cross(B, N) with w = +1); when neither has, @a t is any unit vector orthogonal to
  * @a n with w = +1 and the function returns false so that the caller can supply a limit.
  */
-inline bool MakeTangentFrame(const double n[3], const double dPds[3], const double dPdt[3],
-  double t[4])
+inline bool MakeTangentFrame(
+  const double n[3], const double dPds[3], const double dPdt[3], double t[4])
 {
   // Relative threshold: a derivative that is almost parallel to the normal is noise.
   constexpr double relEps = 1e-12;

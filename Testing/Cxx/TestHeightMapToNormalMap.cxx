@@ -18,17 +18,23 @@
 #include <vtkSOADataArrayTemplate.h>
 #include <vtkSignedCharArray.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkTypeUInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace
@@ -713,6 +719,59 @@ TEST(TestHeightMapToNormalMap, IntegerHeightsAreNormalisedByTypeRange)
   }
 }
 
+// 32- and 64-bit integer heights keep their precision: a ramp of steps far smaller than a
+// float's spacing at its magnitude (256 near 4e9, 2^27 near 1e15) gives the closed-form
+// normal of a plane, k*W*step/range along s and k*H*stepT/range along t.
+TEST(TestHeightMapToNormalMap, WideIntegerHeightsKeepTheirPrecision)
+{
+  const int w = 8, h = 6;
+  auto check = [&](auto* array, double base, double lo, double hi)
+  {
+    const double range = hi - lo, stepS = 100.0, stepT = 37.0;
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(w, h, 1);
+    array->SetNumberOfTuples(w * h);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        array->SetValue(j * w + i,
+          static_cast<typename std::remove_pointer<decltype(array)>::type::ValueType>(
+            base + stepS * i + stepT * j));
+      }
+    }
+    image->GetPointData()->SetScalars(array);
+    Settings s;
+    s.Wrap = vtkHeightMapToNormalMap::ClampToEdge;
+    s.Strength = range / (stepS * w); // slope 1 along s
+    double want[3] = { -1.0, -s.Strength * h * stepT / range, 1.0 };
+    vtkSurfaceDetail::Normalize(want);
+    for (int scheme = vtkHeightMapToNormalMap::Forward; scheme <= vtkHeightMapToNormalMap::Scharr;
+         ++scheme)
+    {
+      s.Scheme = scheme;
+      auto map = MakeMap(image, s);
+      for (int j = 1; j < h - 1; ++j)
+      {
+        for (int i = 1; i < w - 1; ++i)
+        {
+          double n[3];
+          NormalAt(map, i, j, n);
+          EXPECT_LT(AngleBetween(n, want), 1e-6)
+            << array->GetDataTypeAsString() << " " << SchemeName(scheme) << " texel " << i << ","
+            << j << ": " << n[0] << " " << n[1] << " " << n[2];
+        }
+      }
+    }
+  };
+  vtkNew<vtkTypeUInt32Array> u32;
+  check(u32.Get(), 4e9, 0.0, 4294967295.0);
+  vtkNew<vtkTypeInt32Array> i32;
+  check(i32.Get(), 2e9, -2147483648.0, 2147483647.0);
+  vtkNew<vtkTypeInt64Array> i64;
+  check(i64.Get(), 1e15, -9223372036854775808.0, 9223372036854775807.0);
+}
+
 // 1xN, Nx1, 1x1 and odd sizes work; a single column has no slope along s in any wrap mode.
 TEST(TestHeightMapToNormalMap, DegenerateAndOddSizes)
 {
@@ -842,11 +901,16 @@ TEST(TestHeightMapToNormalMap, NonFiniteHeightsAreRepairedWithOneWarning)
     { 0.1, 0.2, 0.3, 0.4, //
       0.5, nan, 0.7, inf, //
       0.9, 1.0, 0.0, 0.2 });
-  // Repeat: (1,1)'s eight neighbours are 0.1 0.2 0.3 / 0.5 0.7 / 0.9 1.0 0.0 -> 3.7/8;
-  // (3,1)'s are 0.3 0.4 0.1 / 0.7 0.5 / 0.0 0.2 0.9 -> 3.1/8.
+  // Repeat: each is the mean of 2*h(x+d) - h(x+2d) over the directions d where both are
+  // finite (rows and columns wrap; +-x are blocked by the other bad texel). (1,1):
+  // up 2*0.2-1.0, down 2*1.0-0.2, up-right 2*0.3-0.2, up-left 2*0.1-0.2, down-right
+  // 2*0.0-0.4, down-left 2*0.9-0.4. (3,1): up 2*0.4-0.2, down 2*0.2-0.4, up-right
+  // 2*0.1-1.0, up-left 2*0.3-1.0, down-right 2*0.9-0.2, down-left 2*0.0-0.2.
+  const double a = (-0.6 + 1.8 + 0.4 + 0.0 - 0.4 + 1.4) / 6;
+  const double b = (0.6 + 0.0 - 0.8 - 0.4 + 1.6 - 0.2) / 6;
   auto repaired = FromRows(4, 3,
-    { 0.1, 0.2, 0.3, 0.4,         //
-      0.5, 3.7 / 8, 0.7, 3.1 / 8, //
+    { 0.1, 0.2, 0.3, 0.4, //
+      0.5, a, 0.7, b,     //
       0.9, 1.0, 0.0, 0.2 });
   vtkNew<vtkHeightMapToNormalMap> filter;
   vtkNew<MessageCounter> messages;
@@ -891,6 +955,155 @@ TEST(TestHeightMapToNormalMap, NonFiniteHeightsAreRepairedWithOneWarning)
   for (vtkIdType v = 0; v < got->GetNumberOfValues(); ++v)
   {
     EXPECT_TRUE(std::isfinite(got->GetValue(v)));
+  }
+}
+
+// Heights at the ends of their type's range: one difference overflows to +inf, another to
+// -inf, and a stencil adding them (or Strength 0 times inf) must not make NaN. Strength 0
+// is the plain truth to compare with: a flat map.
+TEST(TestHeightMapToNormalMap, ExtremeHeightsNeverGiveNaN)
+{
+  auto check = [](auto* array, double big)
+  {
+    const int w = 5, h = 4;
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(w, h, 1);
+    array->SetNumberOfTuples(w * h);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        // A checkerboard and a stripe mixed, so that the stencil's terms overflow both ways.
+        array->SetValue(j * w + i, ((i + j) % 2 == 0) != (i % 3 == 0) ? big : -big);
+      }
+    }
+    image->GetPointData()->SetScalars(array);
+    for (double strength : { 1.0, 0.0, -3.0 })
+    {
+      for (int scheme = vtkHeightMapToNormalMap::Forward; scheme <= vtkHeightMapToNormalMap::Scharr;
+           ++scheme)
+      {
+        for (int wrap = vtkHeightMapToNormalMap::ClampToEdge;
+             wrap <= vtkHeightMapToNormalMap::MirroredRepeat; ++wrap)
+        {
+          Settings s;
+          s.Scheme = scheme;
+          s.Wrap = wrap;
+          s.Strength = strength;
+          auto map = MakeMap(image, s);
+          auto* got = vtkFloatArray::SafeDownCast(map->GetPointData()->GetScalars());
+          ASSERT_NE(got, nullptr);
+          for (vtkIdType t = 0; t < got->GetNumberOfTuples(); ++t)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              const float v = got->GetTypedComponent(t, c);
+              ASSERT_TRUE(std::isfinite(v))
+                << array->GetDataTypeAsString() << " " << SchemeName(scheme) << " wrap " << wrap
+                << " strength " << strength << " texel " << t;
+              if (strength == 0.0)
+              {
+                EXPECT_EQ(v, c == 2 ? 1.0f : 0.5f) << SchemeName(scheme) << " texel " << t;
+              }
+            }
+          }
+        }
+      }
+    }
+  };
+  vtkNew<vtkFloatArray> f;
+  check(f.Get(), std::numeric_limits<float>::max());
+  vtkNew<vtkDoubleArray> d;
+  check(d.Get(), std::numeric_limits<double>::max());
+}
+
+// A hole in a plane is filled with the plane itself (the fill continues the slope), so the
+// map equals the hole-free plane's, in the interior and, with ClampToEdge or
+// MirroredRepeat, along a border too.
+TEST(TestHeightMapToNormalMap, HolesInAPlaneAreFilledWithThePlane)
+{
+  const int w = 48, h = 40;
+  auto plane = [](double s, double t) { return 0.3 + 0.2 * s + 0.1 * t; };
+  for (int wrap = vtkHeightMapToNormalMap::ClampToEdge;
+       wrap <= vtkHeightMapToNormalMap::MirroredRepeat; ++wrap)
+  {
+    auto whole = Sample<vtkFloatArray>(w, h, plane);
+    auto holed = Sample<vtkFloatArray>(w, h, plane);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        const bool disc = (i - 20) * (i - 20) + (j - 18) * (j - 18) <= 64;
+        const bool strip = i <= 2 && j >= 5 && j <= 30;
+        if (disc || (strip && wrap != vtkHeightMapToNormalMap::Repeat))
+        {
+          holed->SetScalarComponentFromDouble(i, j, 0, 0, std::nan(""));
+        }
+      }
+    }
+    Settings s;
+    s.Wrap = wrap;
+    s.Scheme = vtkHeightMapToNormalMap::Sobel;
+    auto want = MakeMap(whole, s);
+    auto got = MakeMap(holed, s);
+    auto* x = vtkFloatArray::SafeDownCast(got->GetPointData()->GetScalars());
+    auto* y = vtkFloatArray::SafeDownCast(want->GetPointData()->GetScalars());
+    for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
+    {
+      EXPECT_NEAR(x->GetValue(v), y->GetValue(v), 1e-5) << "wrap " << wrap << " value " << v;
+    }
+  }
+}
+
+// Under ClampToEdge a corner's neighbours clamp onto one another: each texel counts once.
+// 2x2 with (0,0) missing: no direction has two distinct finite texels, so the fill is the
+// plain mean of (1,0), (0,1), (1,1).
+TEST(TestHeightMapToNormalMap, ClampedNeighboursCountOnce)
+{
+  Settings s;
+  s.Wrap = vtkHeightMapToNormalMap::ClampToEdge;
+  auto got = MakeMap(FromRows(2, 2, { 0.2, 0.7, std::nan(""), 0.3 }), s);
+  auto want = MakeMap(FromRows(2, 2, { 0.2, 0.7, (0.3 + 0.2 + 0.7) / 3, 0.3 }), s);
+  auto* x = vtkFloatArray::SafeDownCast(got->GetPointData()->GetScalars());
+  auto* y = vtkFloatArray::SafeDownCast(want->GetPointData()->GetScalars());
+  for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
+  {
+    EXPECT_NEAR(x->GetValue(v), y->GetValue(v), 1e-6) << v;
+  }
+}
+
+// Stress: one finite texel in 1024^2 fills the whole image with its height (a flat map).
+// The fill is linear in the texel count (0.14 s here); the earlier repeated sweep took 7 s
+// and grew with the image's width times its texel count.
+TEST(TestHeightMapToNormalMap, OneFiniteTexelFillsAMegapixelQuickly)
+{
+  const int n = 1024;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, 1);
+  vtkNew<vtkFloatArray> a;
+  a->SetNumberOfTuples(n * n);
+  a->Fill(std::numeric_limits<float>::quiet_NaN());
+  a->SetValue(777 * n + 123, 0.25f);
+  image->GetPointData()->SetScalars(a);
+  vtkNew<vtkHeightMapToNormalMap> filter;
+  vtkNew<MessageCounter> messages;
+  messages->Watch(filter);
+  filter->SetInputData(image);
+  filter->SetOutputScalarTypeToFloat();
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  std::cout << "1024^2 with one finite texel: "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s\n";
+  EXPECT_EQ(messages->Warnings, 1);
+  auto* got = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetScalars());
+  ASSERT_NE(got, nullptr);
+  ASSERT_EQ(got->GetNumberOfTuples(), static_cast<vtkIdType>(n) * n);
+  for (vtkIdType t = 0; t < got->GetNumberOfTuples(); ++t)
+  {
+    ASSERT_EQ(got->GetTypedComponent(t, 0), 0.5f) << t;
+    ASSERT_EQ(got->GetTypedComponent(t, 1), 0.5f) << t;
+    ASSERT_EQ(got->GetTypedComponent(t, 2), 1.0f) << t;
   }
 }
 
