@@ -464,9 +464,13 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   }
   if (this->ActiveTechnique == ParallaxMapping)
   {
-    vsDec += "out vec3 sdNormalDirVCVSOutput;\n";
-    vsImpl += "sdNormalDirVCVSOutput = mat3(MCVCMatrix) * normalize(normalMC);\n";
-    fsDec += "in vec3 sdNormalDirVCVSOutput;\n";
+    // A depth D along the unit object normal n is the view vector D*M*n (M the 3x3 of
+    // MCVCMatrix); its part along the unit view normal N = normalMatrix*n/|normalMatrix*n|,
+    // with normalMatrix = M^-T, is D*(M n).(M^-T n)/|M^-T n| = D/|normalMatrix*n|. That,
+    // not |M n|, is the depth below the surface that the ray test needs.
+    vsDec += "out float sdDepthUnitVCVSOutput;\n";
+    vsImpl += "sdDepthUnitVCVSOutput = 1.0 / length(normalMatrix * normalize(normalMC));\n";
+    fsDec += "in float sdDepthUnitVCVSOutput;\n";
   }
   if (this->ActiveUsesTangents)
   {
@@ -578,7 +582,7 @@ void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
     // VTK has not yet redeclared normalVCVSOutput (normalised, flipped on back faces).
     impl += "  tcoordVCVSOutput = sdParallaxTCoord(sdTCoordVCVSOutput, vertexVC.xyz,\n"
             "    normalize(gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput),\n"
-            "    sdNormalDirVCVSOutput);\n";
+            "    sdDepthUnitVCVSOutput);\n";
   }
   vtkShaderProgram::Substitute(fs, TCoordImplTag, impl);
   shaders[vtkShader::Vertex]->SetSource(vs);

@@ -590,12 +590,15 @@ TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
   EXPECT_GE(PSNR(ours, scene.Actor, FlatNormal(), scene.Mat), 40.0);
 }
 
-// Parallax with offset limiting over a constant depth d: every texture lookup moves by
-// -d * (tangential part of the view vector) in texture units, the colour texture included.
-// DepthScale is in the mesh's units, so scaling the actor by z along the rectangle's normal
-// makes the field z*d deep in the world. Returns the PSNR against that expectation with the
-// shift multiplied by shiftScale (1: the right picture).
-std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shiftScales)
+// Parallax with offset limiting over a constant depth: every texture lookup moves by the
+// depth d times the tangential part of the view vector, in texture units, the colour
+// texture included. DepthScale D is in the mesh's units along its normal: the field is the
+// rectangle moved by -D*M*z (M the actor's 3x3), so d = D*(M*z).N, N the unit world normal
+// (the depth perpendicular to the surface, not the length |D*M*z|). Returns the PSNR
+// against that expectation with the shift multiplied by each of shiftScales (1: the right
+// picture). @a place positions the actor.
+std::vector<double> ParallaxPSNRs(
+  const std::function<void(vtkActor*)>& place, const std::vector<double>& shiftScales)
 {
   auto mapper = MakeMapper(MakeRectangle(false, false));
   mapper->SetTechniqueToParallaxMapping();
@@ -611,17 +614,30 @@ std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shif
     });
   Scene scene(mapper);
   scene.Actor->SetTexture(colour);
-  scene.Actor->RotateY(40);
-  scene.Actor->RotateX(-25);
-  scene.Actor->SetScale(1.0, 1.0, zScale);
+  place(scene.Actor);
   scene.Mat.Ambient = 1.0;
   scene.Mat.Diffuse = 0.0;
   const auto image = scene.Render();
 
-  // The view vector (0,0,1) against the world images of the model's x and y axes (unit
-  // vectors: the scale is along z only), over dP/ds = dP/dt = 2 units per texture unit.
+  // World frame: dP/ds = 2*a, dP/dt = 2*b (a, b the images of the model's x and y axes),
+  // c the image of its z axis; the parallel camera looks along -z, so V = (0,0,1).
   vtkMatrix4x4* m = scene.Actor->GetMatrix();
-  const double vx = m->GetElement(2, 0), vy = m->GetElement(2, 1);
+  Vec3 a, b, c;
+  for (int r = 0; r < 3; ++r)
+  {
+    a[r] = m->GetElement(r, 0);
+    b[r] = m->GetElement(r, 1);
+    c[r] = m->GetElement(r, 2);
+  }
+  const Vec3 n = Normalized(
+    { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] });
+  const double d = depth * Dot(c, n);
+  const Vec3 vt{ -n[2] * n[0], -n[2] * n[1], 1.0 - n[2] * n[2] };
+  // Vt = alpha*2a + beta*2b, solved through the Gram matrix of (2a, 2b).
+  const double aa = 4 * Dot(a, a), ab = 4 * Dot(a, b), bb = 4 * Dot(b, b);
+  const double va = 2 * Dot(vt, a), vb = 2 * Dot(vt, b);
+  const double det = aa * bb - ab * ab;
+  const double alpha = (bb * va - ab * vb) / det, beta = (aa * vb - ab * va) / det;
   std::vector<double> result;
   for (double shiftScale : shiftScales)
   {
@@ -636,9 +652,8 @@ std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shif
         {
           continue;
         }
-        const double shift = shiftScale * zScale * depth;
-        const double s = (hit.X + 1) / 2 - shift * vx / 2;
-        const double t = (hit.Y + 1) / 2 - shift * vy / 2;
+        const double s = (hit.X + 1) / 2 - shiftScale * d * alpha;
+        const double t = (hit.Y + 1) / 2 - shiftScale * d * beta;
         const double e[3] = { 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t),
           0.5 };
         for (int k = 0; k < 3; ++k)
@@ -649,16 +664,23 @@ std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shif
         }
       }
     }
+    EXPECT_GT(count, 3 * 1000) << "too few pixels inside the rectangle";
     result.push_back(10.0 * std::log10(255.0 * 255.0 / std::max(sum / std::max(count, 1L), 1e-9)));
-    std::cout << "parallax z-scale " << zScale << ", shift x" << shiftScale << ": PSNR "
-              << result.back() << " dB\n";
+    std::cout << "parallax shift x" << shiftScale << ": PSNR " << result.back() << " dB\n";
   }
   return result;
 }
 
+void TiltActor(vtkActor* actor, double zScale)
+{
+  actor->RotateY(40);
+  actor->RotateX(-25);
+  actor->SetScale(1.0, 1.0, zScale);
+}
+
 TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
 {
-  const auto psnr = ParallaxPSNRs(1.0, { 1.0, 0.0 });
+  const auto psnr = ParallaxPSNRs([](vtkActor* actor) { TiltActor(actor, 1.0); }, { 1.0, 0.0 });
   EXPECT_GE(psnr[0], 40.0);
   EXPECT_LT(psnr[1], 30.0); // without the shift the picture is clearly different
 }
@@ -666,9 +688,27 @@ TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
 TEST(vtkSurfaceDetailMapper, ParallaxDepthInObjectUnits)
 {
   // Scaled 2.5x along its normal, the field is 2.5 times deeper in the world.
-  const auto psnr = ParallaxPSNRs(2.5, { 1.0, 1.0 / 2.5 });
+  const auto psnr =
+    ParallaxPSNRs([](vtkActor* actor) { TiltActor(actor, 2.5); }, { 1.0, 1.0 / 2.5 });
   EXPECT_GE(psnr[0], 40.0);
   EXPECT_LT(psnr[1], 30.0); // depth taken in world units instead
+}
+
+TEST(vtkSurfaceDetailMapper, ParallaxDepthUnderSkewingScale)
+{
+  // Tilted first, then scaled along the world axes: the model's z axis is no longer
+  // perpendicular to the surface, and the depth is its part along the normal.
+  const auto psnr = ParallaxPSNRs(
+    [](vtkActor* actor)
+    {
+      TiltActor(actor, 1.0);
+      vtkNew<vtkMatrix4x4> scale;
+      scale->SetElement(0, 0, 1.5);
+      scale->SetElement(1, 1, 0.5);
+      actor->SetUserMatrix(scale);
+    },
+    { 1.0 });
+  EXPECT_GE(psnr[0], 40.0);
 }
 
 TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
