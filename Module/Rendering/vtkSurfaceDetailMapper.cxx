@@ -528,8 +528,11 @@ void vtkSurfaceDetailMapper::ReplaceShaderLight(
   }
   else
   {
-    impl += "normalVCVSOutput = sdBumpSurfaceGradient(normalVCVSOutput, vertexVC.xyz, "
-            "tcoordVCVSOutput, sdHeightGradient(tcoordVCVSOutput));\n";
+    // The surface gradient is that of the front face, whichever face is drawn.
+    impl += "normalVCVSOutput = sdBumpSurfaceGradient(gl_FrontFacing ? normalVCVSOutput : "
+            "-normalVCVSOutput, vertexVC.xyz, tcoordVCVSOutput, "
+            "sdHeightGradient(tcoordVCVSOutput));\n"
+            "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
   }
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fs, NormalImplTag, impl);

@@ -574,6 +574,34 @@ TEST(vtkSurfaceDetailMapper, BumpTangentFree)
   EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::BumpMapping);
 }
 
+// Seen from behind, the bumps are the same surface: its normal there is the front normal
+// negated, with or without tangents.
+TEST(vtkSurfaceDetailMapper, BumpBackFaceMatchesFrontSurface)
+{
+  for (bool tangentFree : { false, true })
+  {
+    auto mapper = MakeMapper(MakeRectangle(false, !tangentFree));
+    mapper->SetTechniqueToBumpMapping();
+    mapper->SetTangentFree(tangentFree);
+    mapper->SetDifferencesToCentral();
+    mapper->SetHeightMap(MakeHeightMap());
+    mapper->SetBumpScale(Strength);
+    Scene scene(mapper);
+    scene.Actor->RotateY(180);
+    scene.Actor->RotateX(-20);
+    scene.Mat.Specular = 0.3;
+    const NormalField front = DetailNormal(false);
+    const NormalField back = [&front](double x, double y)
+    {
+      const Vec3 n = front(x, y);
+      return Vec3{ -n[0], -n[1], -n[2] };
+    };
+    const auto image = scene.Render();
+    EXPECT_GE(PSNR(image, scene.Actor, back, scene.Mat), 40.0) << "tangent-free " << tangentFree;
+    EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::BumpMapping);
+  }
+}
+
 TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
 {
   auto poly = MakeRectangle(false);
