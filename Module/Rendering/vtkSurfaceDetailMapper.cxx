@@ -75,6 +75,44 @@ vtkSurfaceDetailMapper::~vtkSurfaceDetailMapper()
 }
 
 //------------------------------------------------------------------------------
+template <typename T>
+void vtkSurfaceDetailMapper::SetUniformSetting(T& member, T value)
+{
+  if (member != value)
+  {
+    member = value;
+    this->UniformTime.Modified();
+  }
+}
+
+void vtkSurfaceDetailMapper::SetNormalStrength(double strength)
+{
+  this->SetUniformSetting(this->NormalStrength, strength);
+}
+
+void vtkSurfaceDetailMapper::SetGreenUp(bool greenUp)
+{
+  this->SetUniformSetting(this->GreenUp, greenUp);
+}
+
+void vtkSurfaceDetailMapper::SetBumpScale(double scale)
+{
+  this->SetUniformSetting(this->BumpScale, scale);
+}
+
+void vtkSurfaceDetailMapper::SetDepthScale(double depth)
+{
+  this->SetUniformSetting(this->DepthScale, std::max(depth, 0.0));
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkSurfaceDetailMapper::GetMTime()
+{
+  const vtkMTimeType mtime = this->Superclass::GetMTime();
+  return this->IgnoreUniformTime ? mtime : std::max(mtime, this->UniformTime.GetMTime());
+}
+
+//------------------------------------------------------------------------------
 const char* vtkSurfaceDetailMapper::GetTechniqueAsString(int technique)
 {
   switch (technique)
@@ -392,7 +430,9 @@ void vtkSurfaceDetailMapper::ReleaseGraphicsResources(vtkWindow* win)
 bool vtkSurfaceDetailMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
+  this->IgnoreUniformTime = true;
   bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  this->IgnoreUniformTime = false;
   const std::string key = this->AppliesTo(&cellBO, act) ? this->ShaderKey() : std::string();
   std::string& built = this->BuiltShaderKeys[&cellBO];
   if (built != key)
@@ -400,6 +440,15 @@ bool vtkSurfaceDetailMapper::GetNeedToRebuildShaders(
     built = key;
     rebuild = true;
   }
+  return rebuild;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSurfaceDetailMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  this->IgnoreUniformTime = true;
+  const bool rebuild = this->Superclass::GetNeedToRebuildBufferObjects(ren, act);
+  this->IgnoreUniformTime = false;
   return rebuild;
 }
 

@@ -120,7 +120,7 @@ public:
   /**
    * Scale of the normal map's tangential part (1 = as stored, 0 = flat). Default 1.
    */
-  vtkSetMacro(NormalStrength, double);
+  void SetNormalStrength(double strength);
   vtkGetMacro(NormalStrength, double);
   ///@}
 
@@ -129,7 +129,7 @@ public:
    * Whether the normal map's green channel points along +t (OpenGL, Blender) or -t
    * (DirectX). Default true.
    */
-  vtkSetMacro(GreenUp, bool);
+  void SetGreenUp(bool greenUp);
   vtkGetMacro(GreenUp, bool);
   vtkBooleanMacro(GreenUp, bool);
   ///@}
@@ -139,7 +139,7 @@ public:
    * Bump height k: the bumps are those of z = k*h(s,t) over the unit texture square.
    * Negative values sink the bumps. Default 1.
    */
-  vtkSetMacro(BumpScale, double);
+  void SetBumpScale(double scale);
   vtkGetMacro(BumpScale, double);
   ///@}
 
@@ -169,7 +169,7 @@ public:
    * Depth of the height field for parallax mapping, in the mesh's own (object) units:
    * height 1 is the mesh, height 0 lies DepthScale below it. Default 0.05.
    */
-  vtkSetClampMacro(DepthScale, double, 0.0, VTK_DOUBLE_MAX);
+  void SetDepthScale(double depth);
   vtkGetMacro(DepthScale, double);
   ///@}
 
@@ -183,6 +183,13 @@ public:
    * Copies the technique, the maps and every setting, then the superclass's state.
    */
   void ShallowCopy(vtkAbstractMapper* m) override;
+
+  /**
+   * Includes the uniform-only settings (NormalStrength, GreenUp, BumpScale, DepthScale),
+   * which are kept out of the time the shader and vertex-buffer rebuild checks compare:
+   * changing them re-renders with new uniforms, not a new program or new buffers.
+   */
+  vtkMTimeType GetMTime() override;
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
@@ -202,6 +209,7 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
 
   int Technique = None;
   vtkTexture* NormalMap = nullptr;
@@ -237,6 +245,13 @@ private:
   vtkSmartPointer<vtkTextureObject> HeightTexture;
   vtkMTimeType HeightUploadStamp = 0;
   int HeightUploadDifferences = Forward;
+  // When a uniform-only setting last changed; GetMTime leaves it out while the superclass
+  // decides whether to rebuild (IgnoreUniformTime).
+  vtkTimeStamp UniformTime;
+  bool IgnoreUniformTime = false;
+  // Records a uniform-only change: a new MTime for observers and renders, no rebuild.
+  template <typename T>
+  void SetUniformSetting(T& member, T value);
 };
 
 #endif

@@ -870,6 +870,7 @@ public:
   static CountingMapper* New();
   vtkTypeMacro(CountingMapper, vtkSurfaceDetailMapper);
   int Builds = 0;
+  vtkMTimeType VBOTime() { return this->VBOBuildTime.GetMTime(); }
   vtkShaderProgram* TrianglesProgram() { return this->Primitives[PrimitiveTris].Program; }
 
 protected:
@@ -897,9 +898,16 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   scene.Render();
   EXPECT_EQ(mapper->Builds, first) << "rebuilt in a frame where nothing changed";
   vtkShaderProgram* program = mapper->TrianglesProgram();
+  const vtkMTimeType vbo = mapper->VBOTime();
+  const vtkMTimeType mtime = mapper->GetMTime();
+  const auto before = scene.Render();
   mapper->SetNormalStrength(0.5);
-  scene.Render();
+  EXPECT_GT(mapper->GetMTime(), mtime) << "a setting changed and the mapper looks unmodified";
+  const auto after = scene.Render();
+  EXPECT_NE(before, after) << "the new strength did not reach the picture";
   EXPECT_EQ(mapper->TrianglesProgram(), program) << "a uniform change compiled a new program";
+  EXPECT_EQ(mapper->Builds, first) << "a uniform change rebuilt the shader text";
+  EXPECT_EQ(mapper->VBOTime(), vbo) << "a uniform change re-uploaded the vertex buffers";
   const int beforeSwitch = mapper->Builds;
   mapper->SetTechniqueToBumpMapping();
   scene.Render();
