@@ -21,6 +21,8 @@
 #ifndef vtkSurfaceDetailConventions_h
 #define vtkSurfaceDetailConventions_h
 
+#include "vtkType.h" // For the scalar type constants
+
 #include <algorithm>
 #include <cmath>
 
@@ -166,8 +168,8 @@ inline double Normalize(double v[3])
  * (T = cross(B, N) with w = +1); when neither has, @a t is any unit vector orthogonal to
  * @a n with w = +1 and the function returns false so that the caller can supply a limit.
  */
-inline bool MakeTangentFrame(const double n[3], const double dPds[3], const double dPdt[3],
-  double t[4])
+inline bool MakeTangentFrame(
+  const double n[3], const double dPds[3], const double dPdt[3], double t[4])
 {
   // Relative threshold: a derivative that is almost parallel to the normal is noise.
   constexpr double relEps = 1e-12;
@@ -208,6 +210,33 @@ inline bool MakeTangentFrame(const double n[3], const double dPds[3], const doub
   }
   t[3] = 1.0;
   return false;
+}
+
+/**
+ * Whether scalars of VTK type @a type can be a height map, and the factor @a scale that
+ * takes their values to heights: unsigned char and unsigned short are fractions of their
+ * range (as 8- and 16-bit images are), float and double are heights as they are. Signed
+ * integers have no [0,1] reading and are refused (vtkImageShiftScale or vtkImageCast
+ * first). Every SurfaceDetail reader of height maps applies this one rule.
+ */
+inline bool HeightMapScale(int type, double& scale)
+{
+  switch (type)
+  {
+    case VTK_UNSIGNED_CHAR:
+      scale = 1.0 / 255.0;
+      return true;
+    case VTK_UNSIGNED_SHORT:
+      scale = 1.0 / 65535.0;
+      return true;
+    case VTK_FLOAT:
+    case VTK_DOUBLE:
+      scale = 1.0;
+      return true;
+    default:
+      scale = 0.0;
+      return false;
+  }
 }
 
 } // namespace vtkSurfaceDetail

@@ -60,6 +60,15 @@ vtkImageData* TextureImage(vtkTexture* texture)
   return texture->GetInput();
 }
 
+// vtkOpenGLTexture passes unsigned char colours through as they are and, with direct
+// scalars, floats too; other types go through a lookup table or are read as 0-255.
+bool NormalMapTypeReadable(vtkDataArray* scalars, vtkTexture* texture)
+{
+  const int type = scalars->GetDataType();
+  return type == VTK_UNSIGNED_CHAR ||
+    (type == VTK_FLOAT && texture->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS);
+}
+
 int TextureUnit(vtkTexture* texture)
 {
   auto* glTexture = vtkOpenGLTexture::SafeDownCast(texture);
@@ -165,6 +174,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
     vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
     std::ostringstream err;
+    double heightScale = 1.0;
     const char* name = GetTechniqueAsString(technique);
     if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
     {
@@ -206,6 +216,17 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
                  : 0)
           << ".";
     }
+    else if (usesNormalMap &&
+      !NormalMapTypeReadable(normalImage->GetPointData()->GetScalars(), this->NormalMap))
+    {
+      err << "The normal map's scalars are "
+          << normalImage->GetPointData()->GetScalars()->GetDataTypeAsString()
+          << (this->NormalMap->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS
+                 ? ""
+                 : " without SetColorModeToDirectScalars() on the texture")
+          << ", which VTK's texture does not read as 0.5*n + 0.5: use unsigned char, or float "
+          << "in [0,1] with SetColorModeToDirectScalars() (vtkImageShiftScale converts).";
+    }
     else if (usesHeightMap && !this->HeightMap)
     {
       err << name << " needs a height map: call SetHeightMap().";
@@ -213,6 +234,15 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     else if (usesHeightMap && (!heightImage || !heightImage->GetPointData()->GetScalars()))
     {
       err << "The height map texture has no image scalars: give it an input image.";
+    }
+    else if (usesHeightMap &&
+      !vtkSurfaceDetail::HeightMapScale(
+        heightImage->GetPointData()->GetScalars()->GetDataType(), heightScale))
+    {
+      err << "The height map's scalars are "
+          << heightImage->GetPointData()->GetScalars()->GetDataTypeAsString()
+          << "; use unsigned char, unsigned short (fractions of their range), float or "
+          << "double (vtkImageShiftScale or vtkImageCast converts).";
     }
     if (!err.str().empty())
     {
@@ -338,10 +368,9 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   int dims[3];
   image->GetDimensions(dims);
   const int w = dims[0], h = dims[1];
-  // Unsigned integer heights are fractions of their type's range, as 8-bit colours are.
-  const int type = scalars->GetDataType();
-  const bool normalised = type != VTK_FLOAT && type != VTK_DOUBLE;
-  const double scale = normalised ? 1.0 / scalars->GetDataTypeMax() : 1.0;
+  // ResolveTechnique has refused the types this does not accept.
+  double scale = 1.0;
+  vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
   // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
   std::vector<double> values(static_cast<size_t>(w) * h);
   vtkIdType nonFinite = 0;

@@ -657,8 +657,8 @@ std::vector<double> ParallaxPSNRs(
     b[r] = m->GetElement(r, 1);
     c[r] = m->GetElement(r, 2);
   }
-  const Vec3 n = Normalized(
-    { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] });
+  const Vec3 n =
+    Normalized({ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] });
   const double d = depth * Dot(c, n);
   const Vec3 vt{ -n[2] * n[0], -n[2] * n[1], 1.0 - n[2] * n[2] };
   // Vt = alpha*2a + beta*2b, solved through the Gram matrix of (2a, 2b).
@@ -750,6 +750,29 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     vtkSmartPointer<vtkTexture> HeightMap;
   };
   auto twoChannel = MakeTexture(8, 2, [](double, double, double* v) { v[0] = v[1] = 0.5; });
+  // A flat normal map or a mid height, in a scalar type the mapper cannot read as such.
+  auto typed = [](int type, int comps, bool directScalars)
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(8, 8, 1);
+    image->AllocateScalars(type, comps);
+    vtkDataArray* a = image->GetPointData()->GetScalars();
+    const double half = type == VTK_FLOAT ? 0.5 : 0.5 * a->GetDataTypeMax();
+    for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k)
+    {
+      for (int c = 0; c < comps; ++c)
+      {
+        a->SetComponent(k, c, c == 2 ? 2 * half : half);
+      }
+    }
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(image);
+    if (directScalars)
+    {
+      texture->SetColorModeToDirectScalars();
+    }
+    return texture;
+  };
   const std::vector<Case> cases = {
     { "no tangents", MakeRectangle(false, false), vtkSurfaceDetailMapper::NormalMapping,
       MakeNormalMap(), nullptr },
@@ -765,6 +788,16 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
       twoChannel, nullptr },
     { "flat interpolation", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
       MakeNormalMap(), nullptr },
+    // vtkOpenGLTexture sends these through a lookup table (grey) or as 0-255.
+    { "unsigned short normal map", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
+      typed(VTK_UNSIGNED_SHORT, 3, true), nullptr },
+    { "float normal map without direct scalars", MakeRectangle(false),
+      vtkSurfaceDetailMapper::NormalMapping, typed(VTK_FLOAT, 3, false), nullptr },
+    // Signed heights have no [0,1] reading (vtkDisplacementMapFilter rejects them too).
+    { "short height map", MakeRectangle(false), vtkSurfaceDetailMapper::BumpMapping, nullptr,
+      typed(VTK_SHORT, 1, true) },
+    { "int height map", MakeRectangle(false, false), vtkSurfaceDetailMapper::ParallaxMapping,
+      nullptr, typed(VTK_INT, 1, true) },
   };
   // One window for all cases: X servers under test do not like windows made in a burst.
   Scene scene(nullptr);
