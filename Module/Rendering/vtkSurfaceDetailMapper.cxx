@@ -385,30 +385,38 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
     vtkWarningMacro(<< "The height map has " << nonFinite
                     << " non-finite values (NaN or infinite); they are read as height 0.");
   }
-  auto height = [&](int i, int j) { return values[static_cast<size_t>(j) * w + i]; };
   // Texel (i,j) holds (h, dh/ds, dh/dt), the derivatives per unit of texture coordinate
   // by forward or central differences with the texture's own wrap mode. Differences of
   // linearly interpolated heights taken one texel apart equal the linear interpolation of
   // these texel differences (both use the same weights), so one lookup gives exactly what
-  // seed 000's three-lookup Cg code computes, at a third of the texture traffic.
-  const int wrap = this->HeightMap->GetWrap() == vtkTexture::ClampToBorder
-    ? vtkSurfaceDetail::ClampToEdge
-    : this->HeightMap->GetWrap();
+  // seed 000's three-lookup Cg code computes, at a third of the texture traffic. With
+  // ClampToBorder the height outside is the border colour's first component and its
+  // differences are 0 (the sampler's border below): the identity holds there as well.
+  const int wrap = this->HeightMap->GetWrap();
+  const bool border = wrap == vtkTexture::ClampToBorder;
+  const double borderHeight = this->HeightMap->GetBorderColor()[0];
+  auto height = [&](int i, int j)
+  {
+    if (border && (i < 0 || i >= w || j < 0 || j >= h))
+    {
+      return borderHeight;
+    }
+    i = vtkSurfaceDetail::WrapIndex(i, w, wrap);
+    j = vtkSurfaceDetail::WrapIndex(j, h, wrap);
+    return values[static_cast<size_t>(j) * w + i];
+  };
   const bool central = this->Differences == Central;
+  const int back = central ? 1 : 0;
+  const double span = central ? 2.0 : 1.0;
   std::vector<float> texels(3 * static_cast<size_t>(w) * h);
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
     {
-      const int i1 = vtkSurfaceDetail::WrapIndex(i + 1, w, wrap);
-      const int j1 = vtkSurfaceDetail::WrapIndex(j + 1, h, wrap);
-      const int i0 = central ? vtkSurfaceDetail::WrapIndex(i - 1, w, wrap) : i;
-      const int j0 = central ? vtkSurfaceDetail::WrapIndex(j - 1, h, wrap) : j;
-      const double span = central ? 2.0 : 1.0;
       float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
       texel[0] = static_cast<float>(height(i, j));
-      texel[1] = static_cast<float>((height(i1, j) - height(i0, j)) * w / span);
-      texel[2] = static_cast<float>((height(i, j1) - height(i, j0)) * h / span);
+      texel[1] = static_cast<float>((height(i + 1, j) - height(i - back, j)) * w / span);
+      texel[2] = static_cast<float>((height(i, j + 1) - height(i, j - back)) * h / span);
     }
   }
   this->HeightTexture->SetContext(window);
@@ -417,6 +425,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   // vtkTexture and vtkTextureObject number their wrap modes alike.
   this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
   this->HeightTexture->SetWrapT(this->HeightMap->GetWrap());
+  this->HeightTexture->SetBorderColor(static_cast<float>(borderHeight), 0.f, 0.f, 0.f);
   const int filter =
     this->HeightMap->GetInterpolate() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
   this->HeightTexture->SetMinificationFilter(filter);

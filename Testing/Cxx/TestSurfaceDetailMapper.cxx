@@ -602,6 +602,45 @@ TEST(vtkSurfaceDetailMapper, BumpBackFaceMatchesFrontSurface)
   }
 }
 
+// A height map with ClampToBorder: outside the texture the height is the border colour's
+// first component, on the GPU's lookups and in the differences alike. A constant map of 0.5
+// with border 0.1 is flat inside and ramps down within a texel of the edges; the expected
+// normal is that of forward differences, W*(h(x+1) - h(x)), of OpenGL's linear filtering
+// with the border outside (GL 4.5 spec, 8.14.2), over the texel grid.
+TEST(vtkSurfaceDetailMapper, BumpClampToBorderEdge)
+{
+  constexpr int size = 16;
+  constexpr double inside = 0.5, border = 0.1, k = 0.05;
+  auto heights = MakeTexture(size, 1, [](double, double, double* h) { h[0] = inside; });
+  heights->SetWrap(vtkTexture::ClampToBorder);
+  heights->SetBorderColor(static_cast<float>(border), 0.f, 0.f, 0.f);
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetHeightMap(heights);
+  mapper->SetBumpScale(k);
+  Scene scene(mapper);
+  // OpenGL's bilinear filtering at texel coordinates (x,y) = (s,t)*size - 0.5, with the
+  // border value outside the texel grid.
+  auto height = [&](double x, double y)
+  {
+    const double fx = std::floor(x), fy = std::floor(y);
+    const int i = static_cast<int>(fx), j = static_cast<int>(fy);
+    const double ax = x - fx, ay = y - fy;
+    auto h = [&](int a, int b)
+    { return (a < 0 || a >= size || b < 0 || b >= size) ? border : inside; };
+    return (1 - ay) * ((1 - ax) * h(i, j) + ax * h(i + 1, j)) +
+      ay * ((1 - ax) * h(i, j + 1) + ax * h(i + 1, j + 1));
+  };
+  const NormalField field = [&](double x, double y)
+  {
+    const double tx = (x + 1) / 2 * size - 0.5, ty = (y + 1) / 2 * size - 0.5;
+    const double hs = size * (height(tx + 1, ty) - height(tx, ty));
+    const double ht = size * (height(tx, ty + 1) - height(tx, ty));
+    return Normalized({ -k * hs, -k * ht, 1.0 });
+  };
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, field, scene.Mat), 40.0);
+}
+
 TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
 {
   auto poly = MakeRectangle(false);
