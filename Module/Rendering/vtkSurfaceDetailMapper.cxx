@@ -46,7 +46,10 @@ const char* const TCoordImplTag = "//VTK::SurfaceDetail::TCoord::Impl";
 const char* const NormalImplTag = "//VTK::SurfaceDetail::Normal::Impl";
 const char* const TangentAttribute = "sdTangentMC";
 
-// The image behind a texture, brought up to date; nullptr if there is none.
+// The image behind a texture, brought up to date; nullptr if there is none. On a pipeline
+// where nothing changed, UpdateWholeExtent only walks the pipeline MTimes and sends no
+// request to any algorithm (HeightProducerUpdatedOnlyWhenChanged counts them), the same
+// per-frame update vtkTexture::Render does; a check of our own would repeat that walk.
 vtkImageData* TextureImage(vtkTexture* texture)
 {
   if (!texture)

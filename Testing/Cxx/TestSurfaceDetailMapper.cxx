@@ -15,7 +15,11 @@
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
+#include <vtkImageAlgorithm.h>
 #include <vtkImageData.h>
+#include <vtkImageShiftScale.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -31,6 +35,7 @@
 #include <vtkShader.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
@@ -558,6 +563,24 @@ TEST(vtkSurfaceDetailMapper, BumpCentralDifferencesMirroredSpecular)
   EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
 }
 
+TEST(vtkSurfaceDetailMapper, BumpRotatedNonUniformScale)
+{
+  // The tangent frame goes through the normal matrix like the normal: a non-uniform scale
+  // must tilt the bumps as it tilts the surface they stand on.
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferencesToCentral();
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  scene.Actor->SetScale(0.8, 0.45, 1.7);
+  scene.Actor->RotateZ(25);
+  scene.Actor->RotateX(-35);
+  scene.Actor->RotateY(20);
+  scene.Mat.Specular = 0.4;
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+}
+
 TEST(vtkSurfaceDetailMapper, BumpTangentFree)
 {
   // No tangent array at all: the frame comes from screen-space derivatives.
@@ -988,6 +1011,79 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   const int afterSwitch = mapper->Builds;
   scene.Render();
   EXPECT_EQ(mapper->Builds, afterSwitch);
+}
+
+// A 64x64 height source of constant Value that counts the pipeline requests it receives.
+class CountingHeightSource : public vtkImageAlgorithm
+{
+public:
+  static CountingHeightSource* New();
+  vtkTypeMacro(CountingHeightSource, vtkImageAlgorithm);
+  vtkSetMacro(Value, double);
+  int Requests = 0;
+  int Executions = 0;
+
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** in, vtkInformationVector* out) override
+  {
+    ++this->Requests;
+    return this->Superclass::ProcessRequest(request, in, out);
+  }
+
+protected:
+  CountingHeightSource() { this->SetNumberOfInputPorts(0); }
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    const int extent[6] = { 0, 63, 0, 63, 0, 0 };
+    out->GetInformationObject(0)->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    vtkDataObject::SetPointDataActiveScalarInfo(out->GetInformationObject(0), VTK_FLOAT, 1);
+    return 1;
+  }
+  void ExecuteDataWithInformation(vtkDataObject* output, vtkInformation* outInfo) override
+  {
+    ++this->Executions;
+    vtkImageData* image = this->AllocateOutputData(output, outInfo);
+    auto* p = static_cast<float*>(image->GetScalarPointer());
+    std::fill(p, p + 64 * 64, static_cast<float>(this->Value));
+  }
+  double Value = 0.5;
+};
+vtkStandardNewMacro(CountingHeightSource);
+
+TEST(vtkSurfaceDetailMapper, HeightProducerUpdatedOnlyWhenChanged)
+{
+  vtkNew<CountingHeightSource> source;
+  vtkNew<vtkImageShiftScale> scale; // a stage between: upstream changes must get through
+  scale->SetInputConnection(source->GetOutputPort());
+  scale->SetScale(1.0);
+  vtkNew<vtkTexture> heights;
+  heights->SetInputConnection(scale->GetOutputPort());
+  heights->InterpolateOn();
+  auto mapper = MakeMapper(MakeRectangle(false, false));
+  mapper->SetTechniqueToParallaxMapping();
+  mapper->SetHeightMap(heights);
+  mapper->SetDepthScale(0.3);
+  auto colour = MakeTexture(64, 3,
+    [](double s, double t, double* rgb)
+    {
+      rgb[0] = 0.5 + 0.4 * std::sin(2 * Pi * s);
+      rgb[1] = 0.5 + 0.4 * std::sin(2 * Pi * t);
+      rgb[2] = 0.5;
+    });
+  Scene scene(mapper);
+  scene.Actor->SetTexture(colour);
+  scene.Actor->RotateY(40);
+  const auto first = scene.Render();
+  EXPECT_EQ(source->Executions, 1);
+  const int requests = source->Requests;
+  scene.Render();
+  scene.Render();
+  EXPECT_EQ(source->Requests, requests) << "the producer was updated with nothing changed";
+  source->SetValue(1.0); // height 1: no parallax shift at all
+  const auto changed = scene.Render();
+  EXPECT_EQ(source->Executions, 2) << "an upstream change was not picked up";
+  EXPECT_NE(first, changed);
 }
 
 TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
