@@ -335,16 +335,11 @@ Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
   return c;
 }
 
-// The expected picture for a model-space normal field, and the PSNR of an image against it
-// over the pixels well inside the rectangle.
-using NormalField = std::function<Vec3(double x, double y)>;
-
-double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
-  const Material& mat)
+// The PSNR of an image against the expected colour (in [0,1], clamped) of every pixel well
+// inside the rectangle placed by matrix m.
+double PSNRInside(const std::vector<unsigned char>& image, vtkMatrix4x4* m,
+  const std::function<Vec3(const Hit&)>& expected)
 {
-  vtkMatrix4x4* m = actor->GetMatrix();
-  vtkNew<vtkMatrix4x4> inverse;
-  vtkMatrix4x4::Invert(m, inverse);
   double sum = 0.0;
   long count = 0;
   for (int j = 0; j < WindowSize; ++j)
@@ -356,19 +351,11 @@ double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const Norm
       {
         continue;
       }
-      const Vec3 nm = field(hit.X, hit.Y);
-      // Normals transform with the inverse transpose of the model matrix.
-      Vec3 nw;
-      for (int r = 0; r < 3; ++r)
-      {
-        nw[r] = inverse->GetElement(0, r) * nm[0] + inverse->GetElement(1, r) * nm[1] +
-          inverse->GetElement(2, r) * nm[2];
-      }
-      const Vec3 expected = Shade(nw, hit.World, mat);
+      const Vec3 e = expected(hit);
       for (int k = 0; k < 3; ++k)
       {
-        const double e = 255.0 * std::min(1.0, std::max(0.0, expected[k]));
-        const double diff = e - image[3 * (j * WindowSize + i) + k];
+        const double diff =
+          255.0 * std::min(1.0, std::max(0.0, e[k])) - image[3 * (j * WindowSize + i) + k];
         sum += diff * diff;
         ++count;
       }
@@ -379,6 +366,31 @@ double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const Norm
   const double psnr = mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 99.0;
   std::cout << "PSNR " << psnr << " dB over " << count / 3 << " pixels\n";
   return psnr;
+}
+
+// The expected picture for a model-space normal field, and the PSNR of an image against it
+// over the pixels well inside the rectangle.
+using NormalField = std::function<Vec3(double x, double y)>;
+
+double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
+  const Material& mat)
+{
+  vtkMatrix4x4* m = actor->GetMatrix();
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(m, inverse);
+  return PSNRInside(image, m,
+    [&](const Hit& hit)
+    {
+      const Vec3 nm = field(hit.X, hit.Y);
+      // Normals transform with the inverse transpose of the model matrix.
+      Vec3 nw;
+      for (int r = 0; r < 3; ++r)
+      {
+        nw[r] = inverse->GetElement(0, r) * nm[0] + inverse->GetElement(1, r) * nm[1] +
+          inverse->GetElement(2, r) * nm[2];
+      }
+      return Shade(nw, hit.World, mat);
+    });
 }
 
 // The model-space normal of the detail surface at model point (x,y) of the rectangle,
@@ -731,32 +743,14 @@ std::vector<double> ParallaxPSNRs(
   std::vector<double> result;
   for (double shiftScale : shiftScales)
   {
-    double sum = 0;
-    long count = 0;
-    for (int j = 0; j < WindowSize; ++j)
-    {
-      for (int i = 0; i < WindowSize; ++i)
+    std::cout << "parallax shift x" << shiftScale << ": ";
+    result.push_back(PSNRInside(image, m,
+      [&](const Hit& hit)
       {
-        const Hit hit = PixelHit(i, j, m);
-        if (!hit.Inside)
-        {
-          continue;
-        }
         const double s = (hit.X + 1) / 2 - shiftScale * d * alpha;
         const double t = (hit.Y + 1) / 2 - shiftScale * d * beta;
-        const double e[3] = { 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t),
-          0.5 };
-        for (int k = 0; k < 3; ++k)
-        {
-          const double diff = 255.0 * e[k] - image[3 * (j * WindowSize + i) + k];
-          sum += diff * diff;
-          ++count;
-        }
-      }
-    }
-    EXPECT_GT(count, 3 * 1000) << "too few pixels inside the rectangle";
-    result.push_back(10.0 * std::log10(255.0 * 255.0 / std::max(sum / std::max(count, 1L), 1e-9)));
-    std::cout << "parallax shift x" << shiftScale << ": PSNR " << result.back() << " dB\n";
+        return Vec3{ 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t), 0.5 };
+      }));
   }
   return result;
 }
