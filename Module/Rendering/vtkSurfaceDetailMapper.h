@@ -31,13 +31,16 @@
  *   warns and renders as ParallaxMapping.
  *
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
- * input lacks, a normal map with fewer than 3 components) is reported once
- * with vtkErrorMacro, and the actor is rendered as with Technique None until it is fixed.
+ * input lacks, a normal map with fewer than 3 components or of a type other than unsigned
+ * char or float with direct scalars, a height map of a signed integer type) is reported
+ * once with vtkErrorMacro, and the actor is rendered as with Technique None until fixed.
  *
  * Shader code exists only for what is switched on. The program is rebuilt when the set of
  * shader features changes (technique, TangentFree, whether parallax shades with the normal
  * map), never per frame; strengths, scales, GreenUp and the maps themselves are uniforms
- * and textures (VTK's shader cache hands back the compiled program). The height map is
+ * and textures. Changing NormalStrength, GreenUp, BumpScale or DepthScale modifies the
+ * mapper (GetMTime) but neither rebuilds the shader nor re-uploads the vertex buffers: the
+ * next render just sets the new uniform. The height map is
  * uploaded as a float texture holding h and its finite differences (Differences), so bump
  * mapping reads one texel per fragment.
  *
@@ -99,8 +102,9 @@ public:
   ///@{
   /**
    * Tangent-space normal map (3 or 4 components, RGB = 0.5*n + 0.5). Default none.
-   * Use nearest or linear filtering as you like; 8-bit and float images both work
-   * (float images need vtkTexture::SetColorModeToDirectScalars, values in [0,1]).
+   * Use nearest or linear filtering as you like; unsigned char and float images work
+   * (float images need vtkTexture::SetColorModeToDirectScalars, values in [0,1]); other
+   * types are reported as errors (vtkOpenGLTexture would map them through a lookup table).
    */
   virtual void SetNormalMap(vtkTexture*);
   vtkGetObjectMacro(NormalMap, vtkTexture);
@@ -108,9 +112,12 @@ public:
 
   ///@{
   /**
-   * Height map (first component; unsigned integer types are read as [0,1], floats as they
-   * are). It is uploaded as a 32-bit float texture with the vtkTexture's wrap mode and
-   * interpolation (Interpolate on: linear). Default none.
+   * Height map (first component; unsigned char and unsigned short are read as [0,1],
+   * float and double as they are, signed integers are refused: the rule of
+   * vtkSurfaceDetail::HeightMapScale, shared with vtkDisplacementMapFilter). It is uploaded
+   * as a 32-bit float texture with the vtkTexture's wrap mode and interpolation
+   * (Interpolate on: linear); with ClampToBorder the height outside is the first component
+   * of the texture's border colour. Default none.
    */
   virtual void SetHeightMap(vtkTexture*);
   vtkGetObjectMacro(HeightMap, vtkTexture);
