@@ -1005,6 +1005,28 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   const int afterSwitch = mapper->Builds;
   scene.Render();
   EXPECT_EQ(mapper->Builds, afterSwitch);
+  // The other uniform-only settings, each with the technique that reads it.
+  const vtkMTimeType vboBump = mapper->VBOTime();
+  const auto bump = scene.Render();
+  mapper->SetBumpScale(0.5);
+  EXPECT_NE(scene.Render(), bump);
+  EXPECT_EQ(mapper->Builds, afterSwitch) << "SetBumpScale rebuilt the shader text";
+  EXPECT_EQ(mapper->VBOTime(), vboBump) << "SetBumpScale re-uploaded the vertex buffers";
+  // Parallax (shading with the normal map) reads GreenUp and DepthScale; seen obliquely, so
+  // that the depth shows.
+  mapper->SetTechniqueToParallaxMapping();
+  scene.Actor->RotateX(-40);
+  scene.Render();
+  const int parallax = mapper->Builds;
+  const vtkMTimeType vboParallax = mapper->VBOTime();
+  const auto deep = scene.Render();
+  mapper->SetDepthScale(0.2);
+  const auto deeper = scene.Render();
+  EXPECT_NE(deeper, deep);
+  mapper->SetGreenUp(false);
+  EXPECT_NE(scene.Render(), deeper);
+  EXPECT_EQ(mapper->Builds, parallax) << "SetDepthScale or SetGreenUp rebuilt the shader text";
+  EXPECT_EQ(mapper->VBOTime(), vboParallax) << "SetDepthScale or SetGreenUp re-uploaded buffers";
 }
 
 // A 64x64 height source of constant Value that counts the pipeline requests it receives.
