@@ -1141,8 +1141,8 @@ int vtkDisplacementMapFilter::RequestData(
     return 0;
   }
   const int type = scalars->GetDataType();
-  if (type != VTK_UNSIGNED_CHAR && type != VTK_UNSIGNED_SHORT && type != VTK_FLOAT &&
-    type != VTK_DOUBLE)
+  double norm = 1.0;
+  if (!vtkSurfaceDetail::HeightMapScale(type, norm))
   {
     vtkErrorMacro("The height map's scalars are " << scalars->GetDataTypeAsString()
                                                   << "; use unsigned char, unsigned short, "
@@ -1171,8 +1171,6 @@ int vtkDisplacementMapFilter::RequestData(
   }
 
   const int W = dims[0], H = dims[1];
-  const double norm =
-    type == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : (type == VTK_UNSIGNED_SHORT ? 1.0 / 65535.0 : 1.0);
   const int nc = scalars->GetNumberOfComponents();
   void* raw = scalars->GetVoidPointer(0);
 

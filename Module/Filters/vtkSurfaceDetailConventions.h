@@ -25,6 +25,8 @@
 #ifndef vtkSurfaceDetailConventions_h
 #define vtkSurfaceDetailConventions_h
 
+#include "vtkType.h" // For the scalar type constants
+
 #include <algorithm>
 #include <cmath>
 
@@ -215,6 +217,33 @@ inline bool MakeTangentFrame(
   }
   t[3] = 1.0;
   return false;
+}
+
+/**
+ * Whether scalars of VTK type @a type can be a height map, and the factor @a scale that
+ * takes their values to heights: unsigned char and unsigned short are fractions of their
+ * range (as 8- and 16-bit images are), float and double are heights as they are. Signed
+ * integers have no [0,1] reading and are refused (vtkImageShiftScale or vtkImageCast
+ * first). Every SurfaceDetail reader of height maps applies this one rule.
+ */
+inline bool HeightMapScale(int type, double& scale)
+{
+  switch (type)
+  {
+    case VTK_UNSIGNED_CHAR:
+      scale = 1.0 / 255.0;
+      return true;
+    case VTK_UNSIGNED_SHORT:
+      scale = 1.0 / 65535.0;
+      return true;
+    case VTK_FLOAT:
+    case VTK_DOUBLE:
+      scale = 1.0;
+      return true;
+    default:
+      scale = 0.0;
+      return false;
+  }
 }
 
 } // namespace vtkSurfaceDetail

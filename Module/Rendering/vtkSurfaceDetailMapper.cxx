@@ -46,7 +46,10 @@ const char* const TCoordImplTag = "//VTK::SurfaceDetail::TCoord::Impl";
 const char* const NormalImplTag = "//VTK::SurfaceDetail::Normal::Impl";
 const char* const TangentAttribute = "sdTangentMC";
 
-// The image behind a texture, brought up to date; nullptr if there is none.
+// The image behind a texture, brought up to date; nullptr if there is none. On a pipeline
+// where nothing changed, UpdateWholeExtent only walks the pipeline MTimes and sends no
+// request to any algorithm (HeightProducerUpdatedOnlyWhenChanged counts them), the same
+// per-frame update vtkTexture::Render does; a check of our own would repeat that walk.
 vtkImageData* TextureImage(vtkTexture* texture)
 {
   if (!texture)
@@ -58,6 +61,15 @@ vtkImageData* TextureImage(vtkTexture* texture)
     producer->UpdateWholeExtent();
   }
   return texture->GetInput();
+}
+
+// vtkOpenGLTexture passes unsigned char colours through as they are and, with direct
+// scalars, floats too; other types go through a lookup table or are read as 0-255.
+bool NormalMapTypeReadable(vtkDataArray* scalars, vtkTexture* texture)
+{
+  const int type = scalars->GetDataType();
+  return type == VTK_UNSIGNED_CHAR ||
+    (type == VTK_FLOAT && texture->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS);
 }
 
 int TextureUnit(vtkTexture* texture)
@@ -72,6 +84,44 @@ vtkSurfaceDetailMapper::~vtkSurfaceDetailMapper()
 {
   this->SetNormalMap(nullptr);
   this->SetHeightMap(nullptr);
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+void vtkSurfaceDetailMapper::SetUniformSetting(T& member, T value)
+{
+  if (member != value)
+  {
+    member = value;
+    this->UniformTime.Modified();
+  }
+}
+
+void vtkSurfaceDetailMapper::SetNormalStrength(double strength)
+{
+  this->SetUniformSetting(this->NormalStrength, strength);
+}
+
+void vtkSurfaceDetailMapper::SetGreenUp(bool greenUp)
+{
+  this->SetUniformSetting(this->GreenUp, greenUp);
+}
+
+void vtkSurfaceDetailMapper::SetBumpScale(double scale)
+{
+  this->SetUniformSetting(this->BumpScale, scale);
+}
+
+void vtkSurfaceDetailMapper::SetDepthScale(double depth)
+{
+  this->SetUniformSetting(this->DepthScale, std::max(depth, 0.0));
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkSurfaceDetailMapper::GetMTime()
+{
+  const vtkMTimeType mtime = this->Superclass::GetMTime();
+  return this->IgnoreUniformTime ? mtime : std::max(mtime, this->UniformTime.GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -127,6 +177,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
     vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
     std::ostringstream err;
+    double heightScale = 1.0;
     const char* name = GetTechniqueAsString(technique);
     if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
     {
@@ -168,6 +219,17 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
                  : 0)
           << ".";
     }
+    else if (usesNormalMap &&
+      !NormalMapTypeReadable(normalImage->GetPointData()->GetScalars(), this->NormalMap))
+    {
+      err << "The normal map's scalars are "
+          << normalImage->GetPointData()->GetScalars()->GetDataTypeAsString()
+          << (this->NormalMap->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS
+                 ? ""
+                 : " without SetColorModeToDirectScalars() on the texture")
+          << ", which VTK's texture does not read as 0.5*n + 0.5: use unsigned char, or float "
+          << "in [0,1] with SetColorModeToDirectScalars() (vtkImageShiftScale converts).";
+    }
     else if (usesHeightMap && !this->HeightMap)
     {
       err << name << " needs a height map: call SetHeightMap().";
@@ -175,6 +237,15 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     else if (usesHeightMap && (!heightImage || !heightImage->GetPointData()->GetScalars()))
     {
       err << "The height map texture has no image scalars: give it an input image.";
+    }
+    else if (usesHeightMap &&
+      !vtkSurfaceDetail::HeightMapScale(
+        heightImage->GetPointData()->GetScalars()->GetDataType(), heightScale))
+    {
+      err << "The height map's scalars are "
+          << heightImage->GetPointData()->GetScalars()->GetDataTypeAsString()
+          << "; use unsigned char, unsigned short (fractions of their range), float or "
+          << "double (vtkImageShiftScale or vtkImageCast converts).";
     }
     if (!err.str().empty())
     {
@@ -300,10 +371,9 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   int dims[3];
   image->GetDimensions(dims);
   const int w = dims[0], h = dims[1];
-  // Unsigned integer heights are fractions of their type's range, as 8-bit colours are.
-  const int type = scalars->GetDataType();
-  const bool normalised = type != VTK_FLOAT && type != VTK_DOUBLE;
-  const double scale = normalised ? 1.0 / scalars->GetDataTypeMax() : 1.0;
+  // ResolveTechnique has refused the types this does not accept.
+  double scale = 1.0;
+  vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
   // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
   std::vector<double> values(static_cast<size_t>(w) * h);
   vtkIdType nonFinite = 0;
@@ -318,30 +388,38 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
     vtkWarningMacro(<< "The height map has " << nonFinite
                     << " non-finite values (NaN or infinite); they are read as height 0.");
   }
-  auto height = [&](int i, int j) { return values[static_cast<size_t>(j) * w + i]; };
   // Texel (i,j) holds (h, dh/ds, dh/dt), the derivatives per unit of texture coordinate
   // by forward or central differences with the texture's own wrap mode. Differences of
   // linearly interpolated heights taken one texel apart equal the linear interpolation of
   // these texel differences (both use the same weights), so one lookup gives exactly what
-  // seed 000's three-lookup Cg code computes, at a third of the texture traffic.
-  const int wrap = this->HeightMap->GetWrap() == vtkTexture::ClampToBorder
-    ? vtkSurfaceDetail::ClampToEdge
-    : this->HeightMap->GetWrap();
+  // seed 000's three-lookup Cg code computes, at a third of the texture traffic. With
+  // ClampToBorder the height outside is the border colour's first component and its
+  // differences are 0 (the sampler's border below): the identity holds there as well.
+  const int wrap = this->HeightMap->GetWrap();
+  const bool border = wrap == vtkTexture::ClampToBorder;
+  const double borderHeight = this->HeightMap->GetBorderColor()[0];
+  auto height = [&](int i, int j)
+  {
+    if (border && (i < 0 || i >= w || j < 0 || j >= h))
+    {
+      return borderHeight;
+    }
+    i = vtkSurfaceDetail::WrapIndex(i, w, wrap);
+    j = vtkSurfaceDetail::WrapIndex(j, h, wrap);
+    return values[static_cast<size_t>(j) * w + i];
+  };
   const bool central = this->Differences == Central;
+  const int back = central ? 1 : 0;
+  const double span = central ? 2.0 : 1.0;
   std::vector<float> texels(3 * static_cast<size_t>(w) * h);
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
     {
-      const int i1 = vtkSurfaceDetail::WrapIndex(i + 1, w, wrap);
-      const int j1 = vtkSurfaceDetail::WrapIndex(j + 1, h, wrap);
-      const int i0 = central ? vtkSurfaceDetail::WrapIndex(i - 1, w, wrap) : i;
-      const int j0 = central ? vtkSurfaceDetail::WrapIndex(j - 1, h, wrap) : j;
-      const double span = central ? 2.0 : 1.0;
       float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
       texel[0] = static_cast<float>(height(i, j));
-      texel[1] = static_cast<float>((height(i1, j) - height(i0, j)) * w / span);
-      texel[2] = static_cast<float>((height(i, j1) - height(i, j0)) * h / span);
+      texel[1] = static_cast<float>((height(i + 1, j) - height(i - back, j)) * w / span);
+      texel[2] = static_cast<float>((height(i, j + 1) - height(i, j - back)) * h / span);
     }
   }
   this->HeightTexture->SetContext(window);
@@ -350,6 +428,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   // vtkTexture and vtkTextureObject number their wrap modes alike.
   this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
   this->HeightTexture->SetWrapT(this->HeightMap->GetWrap());
+  this->HeightTexture->SetBorderColor(static_cast<float>(borderHeight), 0.f, 0.f, 0.f);
   const int filter =
     this->HeightMap->GetInterpolate() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
   this->HeightTexture->SetMinificationFilter(filter);
@@ -392,7 +471,9 @@ void vtkSurfaceDetailMapper::ReleaseGraphicsResources(vtkWindow* win)
 bool vtkSurfaceDetailMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
+  this->IgnoreUniformTime = true;
   bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  this->IgnoreUniformTime = false;
   const std::string key = this->AppliesTo(&cellBO, act) ? this->ShaderKey() : std::string();
   std::string& built = this->BuiltShaderKeys[&cellBO];
   if (built != key)
@@ -400,6 +481,15 @@ bool vtkSurfaceDetailMapper::GetNeedToRebuildShaders(
     built = key;
     rebuild = true;
   }
+  return rebuild;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSurfaceDetailMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  this->IgnoreUniformTime = true;
+  const bool rebuild = this->Superclass::GetNeedToRebuildBufferObjects(ren, act);
+  this->IgnoreUniformTime = false;
   return rebuild;
 }
 
@@ -464,9 +554,13 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   }
   if (this->ActiveTechnique == ParallaxMapping)
   {
-    vsDec += "out vec3 sdNormalDirVCVSOutput;\n";
-    vsImpl += "sdNormalDirVCVSOutput = mat3(MCVCMatrix) * normalize(normalMC);\n";
-    fsDec += "in vec3 sdNormalDirVCVSOutput;\n";
+    // A depth D along the unit object normal n is the view vector D*M*n (M the 3x3 of
+    // MCVCMatrix); its part along the unit view normal N = normalMatrix*n/|normalMatrix*n|,
+    // with normalMatrix = M^-T, is D*(M n).(M^-T n)/|M^-T n| = D/|normalMatrix*n|. That,
+    // not |M n|, is the depth below the surface that the ray test needs.
+    vsDec += "out float sdDepthUnitVCVSOutput;\n";
+    vsImpl += "sdDepthUnitVCVSOutput = 1.0 / length(normalMatrix * normalize(normalMC));\n";
+    fsDec += "in float sdDepthUnitVCVSOutput;\n";
   }
   if (this->ActiveUsesTangents)
   {
@@ -524,8 +618,11 @@ void vtkSurfaceDetailMapper::ReplaceShaderLight(
   }
   else
   {
-    impl += "normalVCVSOutput = sdBumpSurfaceGradient(normalVCVSOutput, vertexVC.xyz, "
-            "tcoordVCVSOutput, sdHeightGradient(tcoordVCVSOutput));\n";
+    // The surface gradient is that of the front face, whichever face is drawn.
+    impl += "normalVCVSOutput = sdBumpSurfaceGradient(gl_FrontFacing ? normalVCVSOutput : "
+            "-normalVCVSOutput, vertexVC.xyz, tcoordVCVSOutput, "
+            "sdHeightGradient(tcoordVCVSOutput));\n"
+            "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
   }
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fs, NormalImplTag, impl);
@@ -578,7 +675,7 @@ void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
     // VTK has not yet redeclared normalVCVSOutput (normalised, flipped on back faces).
     impl += "  tcoordVCVSOutput = sdParallaxTCoord(sdTCoordVCVSOutput, vertexVC.xyz,\n"
             "    normalize(gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput),\n"
-            "    sdNormalDirVCVSOutput);\n";
+            "    sdDepthUnitVCVSOutput);\n";
   }
   vtkShaderProgram::Substitute(fs, TCoordImplTag, impl);
   shaders[vtkShader::Vertex]->SetSource(vs);

@@ -31,13 +31,16 @@
  *   warns and renders as ParallaxMapping.
  *
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
- * input lacks, a normal map with fewer than 3 components) is reported once
- * with vtkErrorMacro, and the actor is rendered as with Technique None until it is fixed.
+ * input lacks, a normal map with fewer than 3 components or of a type other than unsigned
+ * char or float with direct scalars, a height map of a signed integer type) is reported
+ * once with vtkErrorMacro, and the actor is rendered as with Technique None until fixed.
  *
  * Shader code exists only for what is switched on. The program is rebuilt when the set of
  * shader features changes (technique, TangentFree, whether parallax shades with the normal
  * map), never per frame; strengths, scales, GreenUp and the maps themselves are uniforms
- * and textures (VTK's shader cache hands back the compiled program). The height map is
+ * and textures. Changing NormalStrength, GreenUp, BumpScale or DepthScale modifies the
+ * mapper (GetMTime) but neither rebuilds the shader nor re-uploads the vertex buffers: the
+ * next render just sets the new uniform. The height map is
  * uploaded as a float texture holding h and its finite differences (Differences), so bump
  * mapping reads one texel per fragment.
  *
@@ -99,8 +102,9 @@ public:
   ///@{
   /**
    * Tangent-space normal map (3 or 4 components, RGB = 0.5*n + 0.5). Default none.
-   * Use nearest or linear filtering as you like; 8-bit and float images both work
-   * (float images need vtkTexture::SetColorModeToDirectScalars, values in [0,1]).
+   * Use nearest or linear filtering as you like; unsigned char and float images work
+   * (float images need vtkTexture::SetColorModeToDirectScalars, values in [0,1]); other
+   * types are reported as errors (vtkOpenGLTexture would map them through a lookup table).
    */
   virtual void SetNormalMap(vtkTexture*);
   vtkGetObjectMacro(NormalMap, vtkTexture);
@@ -108,9 +112,12 @@ public:
 
   ///@{
   /**
-   * Height map (first component; unsigned integer types are read as [0,1], floats as they
-   * are). It is uploaded as a 32-bit float texture with the vtkTexture's wrap mode and
-   * interpolation (Interpolate on: linear). Default none.
+   * Height map (first component; unsigned char and unsigned short are read as [0,1],
+   * float and double as they are, signed integers are refused: the rule of
+   * vtkSurfaceDetail::HeightMapScale, shared with vtkDisplacementMapFilter). It is uploaded
+   * as a 32-bit float texture with the vtkTexture's wrap mode and interpolation
+   * (Interpolate on: linear); with ClampToBorder the height outside is the first component
+   * of the texture's border colour. Default none.
    */
   virtual void SetHeightMap(vtkTexture*);
   vtkGetObjectMacro(HeightMap, vtkTexture);
@@ -120,7 +127,7 @@ public:
   /**
    * Scale of the normal map's tangential part (1 = as stored, 0 = flat). Default 1.
    */
-  vtkSetMacro(NormalStrength, double);
+  void SetNormalStrength(double strength);
   vtkGetMacro(NormalStrength, double);
   ///@}
 
@@ -129,7 +136,7 @@ public:
    * Whether the normal map's green channel points along +t (OpenGL, Blender) or -t
    * (DirectX). Default true.
    */
-  vtkSetMacro(GreenUp, bool);
+  void SetGreenUp(bool greenUp);
   vtkGetMacro(GreenUp, bool);
   vtkBooleanMacro(GreenUp, bool);
   ///@}
@@ -139,7 +146,7 @@ public:
    * Bump height k: the bumps are those of z = k*h(s,t) over the unit texture square.
    * Negative values sink the bumps. Default 1.
    */
-  vtkSetMacro(BumpScale, double);
+  void SetBumpScale(double scale);
   vtkGetMacro(BumpScale, double);
   ///@}
 
@@ -169,7 +176,7 @@ public:
    * Depth of the height field for parallax mapping, in the mesh's own (object) units:
    * height 1 is the mesh, height 0 lies DepthScale below it. Default 0.05.
    */
-  vtkSetClampMacro(DepthScale, double, 0.0, VTK_DOUBLE_MAX);
+  void SetDepthScale(double depth);
   vtkGetMacro(DepthScale, double);
   ///@}
 
@@ -183,6 +190,13 @@ public:
    * Copies the technique, the maps and every setting, then the superclass's state.
    */
   void ShallowCopy(vtkAbstractMapper* m) override;
+
+  /**
+   * Includes the uniform-only settings (NormalStrength, GreenUp, BumpScale, DepthScale),
+   * which are kept out of the time the shader and vertex-buffer rebuild checks compare:
+   * changing them re-renders with new uniforms, not a new program or new buffers.
+   */
+  vtkMTimeType GetMTime() override;
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
@@ -202,6 +216,7 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
 
   int Technique = None;
   vtkTexture* NormalMap = nullptr;
@@ -237,6 +252,13 @@ private:
   vtkSmartPointer<vtkTextureObject> HeightTexture;
   vtkMTimeType HeightUploadStamp = 0;
   int HeightUploadDifferences = Forward;
+  // When a uniform-only setting last changed; GetMTime leaves it out while the superclass
+  // decides whether to rebuild (IgnoreUniformTime).
+  vtkTimeStamp UniformTime;
+  bool IgnoreUniformTime = false;
+  // Records a uniform-only change: a new MTime for observers and renders, no rebuild.
+  template <typename T>
+  void SetUniformSetting(T& member, T value);
 };
 
 #endif

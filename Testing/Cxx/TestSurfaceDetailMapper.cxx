@@ -15,7 +15,11 @@
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
+#include <vtkImageAlgorithm.h>
 #include <vtkImageData.h>
+#include <vtkImageShiftScale.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -31,6 +35,7 @@
 #include <vtkShader.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
@@ -330,16 +335,11 @@ Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
   return c;
 }
 
-// The expected picture for a model-space normal field, and the PSNR of an image against it
-// over the pixels well inside the rectangle.
-using NormalField = std::function<Vec3(double x, double y)>;
-
-double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
-  const Material& mat)
+// The PSNR of an image against the expected colour (in [0,1], clamped) of every pixel well
+// inside the rectangle placed by matrix m.
+double PSNRInside(const std::vector<unsigned char>& image, vtkMatrix4x4* m,
+  const std::function<Vec3(const Hit&)>& expected)
 {
-  vtkMatrix4x4* m = actor->GetMatrix();
-  vtkNew<vtkMatrix4x4> inverse;
-  vtkMatrix4x4::Invert(m, inverse);
   double sum = 0.0;
   long count = 0;
   for (int j = 0; j < WindowSize; ++j)
@@ -351,19 +351,11 @@ double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const Norm
       {
         continue;
       }
-      const Vec3 nm = field(hit.X, hit.Y);
-      // Normals transform with the inverse transpose of the model matrix.
-      Vec3 nw;
-      for (int r = 0; r < 3; ++r)
-      {
-        nw[r] = inverse->GetElement(0, r) * nm[0] + inverse->GetElement(1, r) * nm[1] +
-          inverse->GetElement(2, r) * nm[2];
-      }
-      const Vec3 expected = Shade(nw, hit.World, mat);
+      const Vec3 e = expected(hit);
       for (int k = 0; k < 3; ++k)
       {
-        const double e = 255.0 * std::min(1.0, std::max(0.0, expected[k]));
-        const double diff = e - image[3 * (j * WindowSize + i) + k];
+        const double diff =
+          255.0 * std::min(1.0, std::max(0.0, e[k])) - image[3 * (j * WindowSize + i) + k];
         sum += diff * diff;
         ++count;
       }
@@ -374,6 +366,31 @@ double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const Norm
   const double psnr = mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 99.0;
   std::cout << "PSNR " << psnr << " dB over " << count / 3 << " pixels\n";
   return psnr;
+}
+
+// The expected picture for a model-space normal field, and the PSNR of an image against it
+// over the pixels well inside the rectangle.
+using NormalField = std::function<Vec3(double x, double y)>;
+
+double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
+  const Material& mat)
+{
+  vtkMatrix4x4* m = actor->GetMatrix();
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(m, inverse);
+  return PSNRInside(image, m,
+    [&](const Hit& hit)
+    {
+      const Vec3 nm = field(hit.X, hit.Y);
+      // Normals transform with the inverse transpose of the model matrix.
+      Vec3 nw;
+      for (int r = 0; r < 3; ++r)
+      {
+        nw[r] = inverse->GetElement(0, r) * nm[0] + inverse->GetElement(1, r) * nm[1] +
+          inverse->GetElement(2, r) * nm[2];
+      }
+      return Shade(nw, hit.World, mat);
+    });
 }
 
 // The model-space normal of the detail surface at model point (x,y) of the rectangle,
@@ -558,6 +575,24 @@ TEST(vtkSurfaceDetailMapper, BumpCentralDifferencesMirroredSpecular)
   EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
 }
 
+TEST(vtkSurfaceDetailMapper, BumpRotatedNonUniformScale)
+{
+  // The tangent frame goes through the normal matrix like the normal: a non-uniform scale
+  // must tilt the bumps as it tilts the surface they stand on.
+  auto mapper = MakeMapper(MakeRectangle(true));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferencesToCentral();
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetBumpScale(Strength);
+  Scene scene(mapper);
+  scene.Actor->SetScale(0.8, 0.45, 1.7);
+  scene.Actor->RotateZ(25);
+  scene.Actor->RotateX(-35);
+  scene.Actor->RotateY(20);
+  scene.Mat.Specular = 0.4;
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+}
+
 TEST(vtkSurfaceDetailMapper, BumpTangentFree)
 {
   // No tangent array at all: the frame comes from screen-space derivatives.
@@ -572,6 +607,73 @@ TEST(vtkSurfaceDetailMapper, BumpTangentFree)
   scene.Actor->RotateZ(15);
   EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
   EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::BumpMapping);
+}
+
+// Seen from behind, the bumps are the same surface: its normal there is the front normal
+// negated, with or without tangents.
+TEST(vtkSurfaceDetailMapper, BumpBackFaceMatchesFrontSurface)
+{
+  for (bool tangentFree : { false, true })
+  {
+    auto mapper = MakeMapper(MakeRectangle(false, !tangentFree));
+    mapper->SetTechniqueToBumpMapping();
+    mapper->SetTangentFree(tangentFree);
+    mapper->SetDifferencesToCentral();
+    mapper->SetHeightMap(MakeHeightMap());
+    mapper->SetBumpScale(Strength);
+    Scene scene(mapper);
+    scene.Actor->RotateY(180);
+    scene.Actor->RotateX(-20);
+    scene.Mat.Specular = 0.3;
+    const NormalField front = DetailNormal(false);
+    const NormalField back = [&front](double x, double y)
+    {
+      const Vec3 n = front(x, y);
+      return Vec3{ -n[0], -n[1], -n[2] };
+    };
+    const auto image = scene.Render();
+    EXPECT_GE(PSNR(image, scene.Actor, back, scene.Mat), 40.0) << "tangent-free " << tangentFree;
+    EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::BumpMapping);
+  }
+}
+
+// A height map with ClampToBorder: outside the texture the height is the border colour's
+// first component, on the GPU's lookups and in the differences alike. A constant map of 0.5
+// with border 0.1 is flat inside and ramps down within a texel of the edges; the expected
+// normal is that of forward differences, W*(h(x+1) - h(x)), of OpenGL's linear filtering
+// with the border outside (GL 4.5 spec, 8.14.2), over the texel grid.
+TEST(vtkSurfaceDetailMapper, BumpClampToBorderEdge)
+{
+  constexpr int size = 16;
+  constexpr double inside = 0.5, border = 0.1, k = 0.05;
+  auto heights = MakeTexture(size, 1, [](double, double, double* h) { h[0] = inside; });
+  heights->SetWrap(vtkTexture::ClampToBorder);
+  heights->SetBorderColor(static_cast<float>(border), 0.f, 0.f, 0.f);
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetHeightMap(heights);
+  mapper->SetBumpScale(k);
+  Scene scene(mapper);
+  // OpenGL's bilinear filtering at texel coordinates (x,y) = (s,t)*size - 0.5, with the
+  // border value outside the texel grid.
+  auto height = [&](double x, double y)
+  {
+    const double fx = std::floor(x), fy = std::floor(y);
+    const int i = static_cast<int>(fx), j = static_cast<int>(fy);
+    const double ax = x - fx, ay = y - fy;
+    auto h = [&](int a, int b)
+    { return (a < 0 || a >= size || b < 0 || b >= size) ? border : inside; };
+    return (1 - ay) * ((1 - ax) * h(i, j) + ax * h(i + 1, j)) +
+      ay * ((1 - ax) * h(i, j + 1) + ax * h(i + 1, j + 1));
+  };
+  const NormalField field = [&](double x, double y)
+  {
+    const double tx = (x + 1) / 2 * size - 0.5, ty = (y + 1) / 2 * size - 0.5;
+    const double hs = size * (height(tx + 1, ty) - height(tx, ty));
+    const double ht = size * (height(tx, ty + 1) - height(tx, ty));
+    return Normalized({ -k * hs, -k * ht, 1.0 });
+  };
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, field, scene.Mat), 40.0);
 }
 
 TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
@@ -590,12 +692,15 @@ TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
   EXPECT_GE(PSNR(ours, scene.Actor, FlatNormal(), scene.Mat), 40.0);
 }
 
-// Parallax with offset limiting over a constant depth d: every texture lookup moves by
-// -d * (tangential part of the view vector) in texture units, the colour texture included.
-// DepthScale is in the mesh's units, so scaling the actor by z along the rectangle's normal
-// makes the field z*d deep in the world. Returns the PSNR against that expectation with the
-// shift multiplied by shiftScale (1: the right picture).
-std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shiftScales)
+// Parallax with offset limiting over a constant depth: every texture lookup moves by the
+// depth d times the tangential part of the view vector, in texture units, the colour
+// texture included. DepthScale D is in the mesh's units along its normal: the field is the
+// rectangle moved by -D*M*z (M the actor's 3x3), so d = D*(M*z).N, N the unit world normal
+// (the depth perpendicular to the surface, not the length |D*M*z|). Returns the PSNR
+// against that expectation with the shift multiplied by each of shiftScales (1: the right
+// picture). @a place positions the actor.
+std::vector<double> ParallaxPSNRs(
+  const std::function<void(vtkActor*)>& place, const std::vector<double>& shiftScales)
 {
   auto mapper = MakeMapper(MakeRectangle(false, false));
   mapper->SetTechniqueToParallaxMapping();
@@ -611,54 +716,55 @@ std::vector<double> ParallaxPSNRs(double zScale, const std::vector<double>& shif
     });
   Scene scene(mapper);
   scene.Actor->SetTexture(colour);
-  scene.Actor->RotateY(40);
-  scene.Actor->RotateX(-25);
-  scene.Actor->SetScale(1.0, 1.0, zScale);
+  place(scene.Actor);
   scene.Mat.Ambient = 1.0;
   scene.Mat.Diffuse = 0.0;
   const auto image = scene.Render();
 
-  // The view vector (0,0,1) against the world images of the model's x and y axes (unit
-  // vectors: the scale is along z only), over dP/ds = dP/dt = 2 units per texture unit.
+  // World frame: dP/ds = 2*a, dP/dt = 2*b (a, b the images of the model's x and y axes),
+  // c the image of its z axis; the parallel camera looks along -z, so V = (0,0,1).
   vtkMatrix4x4* m = scene.Actor->GetMatrix();
-  const double vx = m->GetElement(2, 0), vy = m->GetElement(2, 1);
+  Vec3 a, b, c;
+  for (int r = 0; r < 3; ++r)
+  {
+    a[r] = m->GetElement(r, 0);
+    b[r] = m->GetElement(r, 1);
+    c[r] = m->GetElement(r, 2);
+  }
+  const Vec3 n =
+    Normalized({ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] });
+  const double d = depth * Dot(c, n);
+  const Vec3 vt{ -n[2] * n[0], -n[2] * n[1], 1.0 - n[2] * n[2] };
+  // Vt = alpha*2a + beta*2b, solved through the Gram matrix of (2a, 2b).
+  const double aa = 4 * Dot(a, a), ab = 4 * Dot(a, b), bb = 4 * Dot(b, b);
+  const double va = 2 * Dot(vt, a), vb = 2 * Dot(vt, b);
+  const double det = aa * bb - ab * ab;
+  const double alpha = (bb * va - ab * vb) / det, beta = (aa * vb - ab * va) / det;
   std::vector<double> result;
   for (double shiftScale : shiftScales)
   {
-    double sum = 0;
-    long count = 0;
-    for (int j = 0; j < WindowSize; ++j)
-    {
-      for (int i = 0; i < WindowSize; ++i)
+    std::cout << "parallax shift x" << shiftScale << ": ";
+    result.push_back(PSNRInside(image, m,
+      [&](const Hit& hit)
       {
-        const Hit hit = PixelHit(i, j, m);
-        if (!hit.Inside)
-        {
-          continue;
-        }
-        const double shift = shiftScale * zScale * depth;
-        const double s = (hit.X + 1) / 2 - shift * vx / 2;
-        const double t = (hit.Y + 1) / 2 - shift * vy / 2;
-        const double e[3] = { 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t),
-          0.5 };
-        for (int k = 0; k < 3; ++k)
-        {
-          const double diff = 255.0 * e[k] - image[3 * (j * WindowSize + i) + k];
-          sum += diff * diff;
-          ++count;
-        }
-      }
-    }
-    result.push_back(10.0 * std::log10(255.0 * 255.0 / std::max(sum / std::max(count, 1L), 1e-9)));
-    std::cout << "parallax z-scale " << zScale << ", shift x" << shiftScale << ": PSNR "
-              << result.back() << " dB\n";
+        const double s = (hit.X + 1) / 2 - shiftScale * d * alpha;
+        const double t = (hit.Y + 1) / 2 - shiftScale * d * beta;
+        return Vec3{ 0.5 + 0.4 * std::sin(2 * Pi * s), 0.5 + 0.4 * std::sin(2 * Pi * t), 0.5 };
+      }));
   }
   return result;
 }
 
+void TiltActor(vtkActor* actor, double zScale)
+{
+  actor->RotateY(40);
+  actor->RotateX(-25);
+  actor->SetScale(1.0, 1.0, zScale);
+}
+
 TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
 {
-  const auto psnr = ParallaxPSNRs(1.0, { 1.0, 0.0 });
+  const auto psnr = ParallaxPSNRs([](vtkActor* actor) { TiltActor(actor, 1.0); }, { 1.0, 0.0 });
   EXPECT_GE(psnr[0], 40.0);
   EXPECT_LT(psnr[1], 30.0); // without the shift the picture is clearly different
 }
@@ -666,9 +772,27 @@ TEST(vtkSurfaceDetailMapper, ParallaxShiftsColourTexture)
 TEST(vtkSurfaceDetailMapper, ParallaxDepthInObjectUnits)
 {
   // Scaled 2.5x along its normal, the field is 2.5 times deeper in the world.
-  const auto psnr = ParallaxPSNRs(2.5, { 1.0, 1.0 / 2.5 });
+  const auto psnr =
+    ParallaxPSNRs([](vtkActor* actor) { TiltActor(actor, 2.5); }, { 1.0, 1.0 / 2.5 });
   EXPECT_GE(psnr[0], 40.0);
   EXPECT_LT(psnr[1], 30.0); // depth taken in world units instead
+}
+
+TEST(vtkSurfaceDetailMapper, ParallaxDepthUnderSkewingScale)
+{
+  // Tilted first, then scaled along the world axes: the model's z axis is no longer
+  // perpendicular to the surface, and the depth is its part along the normal.
+  const auto psnr = ParallaxPSNRs(
+    [](vtkActor* actor)
+    {
+      TiltActor(actor, 1.0);
+      vtkNew<vtkMatrix4x4> scale;
+      scale->SetElement(0, 0, 1.5);
+      scale->SetElement(1, 1, 0.5);
+      actor->SetUserMatrix(scale);
+    },
+    { 1.0 });
+  EXPECT_GE(psnr[0], 40.0);
 }
 
 TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
@@ -682,6 +806,29 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     vtkSmartPointer<vtkTexture> HeightMap;
   };
   auto twoChannel = MakeTexture(8, 2, [](double, double, double* v) { v[0] = v[1] = 0.5; });
+  // A flat normal map or a mid height, in a scalar type the mapper cannot read as such.
+  auto typed = [](int type, int comps, bool directScalars)
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(8, 8, 1);
+    image->AllocateScalars(type, comps);
+    vtkDataArray* a = image->GetPointData()->GetScalars();
+    const double half = type == VTK_FLOAT ? 0.5 : 0.5 * a->GetDataTypeMax();
+    for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k)
+    {
+      for (int c = 0; c < comps; ++c)
+      {
+        a->SetComponent(k, c, c == 2 ? 2 * half : half);
+      }
+    }
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(image);
+    if (directScalars)
+    {
+      texture->SetColorModeToDirectScalars();
+    }
+    return texture;
+  };
   const std::vector<Case> cases = {
     { "no tangents", MakeRectangle(false, false), vtkSurfaceDetailMapper::NormalMapping,
       MakeNormalMap(), nullptr },
@@ -697,6 +844,16 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
       twoChannel, nullptr },
     { "flat interpolation", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
       MakeNormalMap(), nullptr },
+    // vtkOpenGLTexture sends these through a lookup table (grey) or as 0-255.
+    { "unsigned short normal map", MakeRectangle(false), vtkSurfaceDetailMapper::NormalMapping,
+      typed(VTK_UNSIGNED_SHORT, 3, true), nullptr },
+    { "float normal map without direct scalars", MakeRectangle(false),
+      vtkSurfaceDetailMapper::NormalMapping, typed(VTK_FLOAT, 3, false), nullptr },
+    // Signed heights have no [0,1] reading (vtkDisplacementMapFilter rejects them too).
+    { "short height map", MakeRectangle(false), vtkSurfaceDetailMapper::BumpMapping, nullptr,
+      typed(VTK_SHORT, 1, true) },
+    { "int height map", MakeRectangle(false, false), vtkSurfaceDetailMapper::ParallaxMapping,
+      nullptr, typed(VTK_INT, 1, true) },
   };
   // One window for all cases: X servers under test do not like windows made in a burst.
   Scene scene(nullptr);
@@ -802,6 +959,7 @@ public:
   static CountingMapper* New();
   vtkTypeMacro(CountingMapper, vtkSurfaceDetailMapper);
   int Builds = 0;
+  vtkMTimeType VBOTime() { return this->VBOBuildTime.GetMTime(); }
   vtkShaderProgram* TrianglesProgram() { return this->Primitives[PrimitiveTris].Program; }
 
 protected:
@@ -829,9 +987,16 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   scene.Render();
   EXPECT_EQ(mapper->Builds, first) << "rebuilt in a frame where nothing changed";
   vtkShaderProgram* program = mapper->TrianglesProgram();
+  const vtkMTimeType vbo = mapper->VBOTime();
+  const vtkMTimeType mtime = mapper->GetMTime();
+  const auto before = scene.Render();
   mapper->SetNormalStrength(0.5);
-  scene.Render();
+  EXPECT_GT(mapper->GetMTime(), mtime) << "a setting changed and the mapper looks unmodified";
+  const auto after = scene.Render();
+  EXPECT_NE(before, after) << "the new strength did not reach the picture";
   EXPECT_EQ(mapper->TrianglesProgram(), program) << "a uniform change compiled a new program";
+  EXPECT_EQ(mapper->Builds, first) << "a uniform change rebuilt the shader text";
+  EXPECT_EQ(mapper->VBOTime(), vbo) << "a uniform change re-uploaded the vertex buffers";
   const int beforeSwitch = mapper->Builds;
   mapper->SetTechniqueToBumpMapping();
   scene.Render();
@@ -840,6 +1005,101 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   const int afterSwitch = mapper->Builds;
   scene.Render();
   EXPECT_EQ(mapper->Builds, afterSwitch);
+  // The other uniform-only settings, each with the technique that reads it.
+  const vtkMTimeType vboBump = mapper->VBOTime();
+  const auto bump = scene.Render();
+  mapper->SetBumpScale(0.5);
+  EXPECT_NE(scene.Render(), bump);
+  EXPECT_EQ(mapper->Builds, afterSwitch) << "SetBumpScale rebuilt the shader text";
+  EXPECT_EQ(mapper->VBOTime(), vboBump) << "SetBumpScale re-uploaded the vertex buffers";
+  // Parallax (shading with the normal map) reads GreenUp and DepthScale; seen obliquely, so
+  // that the depth shows.
+  mapper->SetTechniqueToParallaxMapping();
+  scene.Actor->RotateX(-40);
+  scene.Render();
+  const int parallax = mapper->Builds;
+  const vtkMTimeType vboParallax = mapper->VBOTime();
+  const auto deep = scene.Render();
+  mapper->SetDepthScale(0.2);
+  const auto deeper = scene.Render();
+  EXPECT_NE(deeper, deep);
+  mapper->SetGreenUp(false);
+  EXPECT_NE(scene.Render(), deeper);
+  EXPECT_EQ(mapper->Builds, parallax) << "SetDepthScale or SetGreenUp rebuilt the shader text";
+  EXPECT_EQ(mapper->VBOTime(), vboParallax) << "SetDepthScale or SetGreenUp re-uploaded buffers";
+}
+
+// A 64x64 height source of constant Value that counts the pipeline requests it receives.
+class CountingHeightSource : public vtkImageAlgorithm
+{
+public:
+  static CountingHeightSource* New();
+  vtkTypeMacro(CountingHeightSource, vtkImageAlgorithm);
+  vtkSetMacro(Value, double);
+  int Requests = 0;
+  int Executions = 0;
+
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** in, vtkInformationVector* out) override
+  {
+    ++this->Requests;
+    return this->Superclass::ProcessRequest(request, in, out);
+  }
+
+protected:
+  CountingHeightSource() { this->SetNumberOfInputPorts(0); }
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    const int extent[6] = { 0, 63, 0, 63, 0, 0 };
+    out->GetInformationObject(0)->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    vtkDataObject::SetPointDataActiveScalarInfo(out->GetInformationObject(0), VTK_FLOAT, 1);
+    return 1;
+  }
+  void ExecuteDataWithInformation(vtkDataObject* output, vtkInformation* outInfo) override
+  {
+    ++this->Executions;
+    vtkImageData* image = this->AllocateOutputData(output, outInfo);
+    auto* p = static_cast<float*>(image->GetScalarPointer());
+    std::fill(p, p + 64 * 64, static_cast<float>(this->Value));
+  }
+  double Value = 0.5;
+};
+vtkStandardNewMacro(CountingHeightSource);
+
+TEST(vtkSurfaceDetailMapper, HeightProducerUpdatedOnlyWhenChanged)
+{
+  vtkNew<CountingHeightSource> source;
+  vtkNew<vtkImageShiftScale> scale; // a stage between: upstream changes must get through
+  scale->SetInputConnection(source->GetOutputPort());
+  scale->SetScale(1.0);
+  vtkNew<vtkTexture> heights;
+  heights->SetInputConnection(scale->GetOutputPort());
+  heights->InterpolateOn();
+  auto mapper = MakeMapper(MakeRectangle(false, false));
+  mapper->SetTechniqueToParallaxMapping();
+  mapper->SetHeightMap(heights);
+  mapper->SetDepthScale(0.3);
+  auto colour = MakeTexture(64, 3,
+    [](double s, double t, double* rgb)
+    {
+      rgb[0] = 0.5 + 0.4 * std::sin(2 * Pi * s);
+      rgb[1] = 0.5 + 0.4 * std::sin(2 * Pi * t);
+      rgb[2] = 0.5;
+    });
+  Scene scene(mapper);
+  scene.Actor->SetTexture(colour);
+  scene.Actor->RotateY(40);
+  const auto first = scene.Render();
+  EXPECT_EQ(source->Executions, 1);
+  const int requests = source->Requests;
+  scene.Render();
+  scene.Render();
+  EXPECT_EQ(source->Requests, requests) << "the producer was updated with nothing changed";
+  source->SetValue(1.0); // height 1: no parallax shift at all
+  const auto changed = scene.Render();
+  EXPECT_EQ(source->Executions, 2) << "an upstream change was not picked up";
+  EXPECT_NE(first, changed);
 }
 
 TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)

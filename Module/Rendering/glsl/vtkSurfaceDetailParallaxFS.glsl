@@ -7,7 +7,7 @@
 uniform float sdDepthScale;
 uniform int sdCameraParallel;
 
-vec2 sdParallaxTCoord(vec2 tc, vec3 posVC, vec3 N, vec3 normalDirVC)
+vec2 sdParallaxTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
 {
   vec3 sigmaS = dFdx(posVC);
   vec3 sigmaT = dFdy(posVC);
@@ -28,9 +28,9 @@ vec2 sdParallaxTCoord(vec2 tc, vec3 posVC, vec3 N, vec3 normalDirVC)
   {
     return tc;
   }
-  // normalDirVC is the mesh's unit object-space normal taken to view coordinates: its
-  // length turns object units of depth into view units under any actor scale.
-  float depthVC = sdDepthScale * (1.0 - h) * length(normalDirVC);
+  // depthUnitVC is how far below the surface, along N in view units, one object unit of
+  // depth along the mesh's normal lies, under any actor scale (skewing ones included).
+  float depthVC = sdDepthScale * (1.0 - h) * depthUnitVC;
   vec3 shift = inverse(frame) * Vt;
   return tc - depthVC * shift.xy;
 }
