@@ -1448,15 +1448,7 @@ int vtkDisplacementMapFilter::RequestData(
 //------------------------------------------------------------------------------
 const char* vtkDisplacementMapFilter::GetWrapAsString()
 {
-  switch (this->Wrap)
-  {
-    case ClampToEdge:
-      return "ClampToEdge";
-    case MirroredRepeat:
-      return "MirroredRepeat";
-    default:
-      return "Repeat";
-  }
+  return vtkSurfaceDetail::WrapModeName(this->Wrap);
 }
 
 //------------------------------------------------------------------------------

@@ -645,15 +645,7 @@ const char* vtkHeightMapToNormalMap::GetSchemeAsString()
 //------------------------------------------------------------------------------
 const char* vtkHeightMapToNormalMap::GetWrapAsString()
 {
-  switch (this->Wrap)
-  {
-    case ClampToEdge:
-      return "ClampToEdge";
-    case MirroredRepeat:
-      return "MirroredRepeat";
-    default:
-      return "Repeat";
-  }
+  return vtkSurfaceDetail::WrapModeName(this->Wrap);
 }
 
 //------------------------------------------------------------------------------

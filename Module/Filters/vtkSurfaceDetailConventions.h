@@ -41,6 +41,20 @@ enum WrapMode
   MirroredRepeat = 2
 };
 
+/// The name of a wrap mode, for PrintSelf and Get...AsString methods.
+inline const char* WrapModeName(int mode)
+{
+  switch (mode)
+  {
+    case ClampToEdge:
+      return "ClampToEdge";
+    case MirroredRepeat:
+      return "MirroredRepeat";
+    default:
+      return "Repeat";
+  }
+}
+
 /**
  * The texel index that texel @a i of a texture @a n texels wide reads under @a mode.
  * Precondition: n >= 1 (callers reject empty images first; n = 0 would divide by zero).
