@@ -185,11 +185,12 @@ void NormalizeNormals(MikkMesh& mesh)
 
 // MikkTSpace welds corners whose position, normal and texture coordinates are identical,
 // so two input points with the same values are one vertex even if the cells do not share
-// them. Hash, sort (parallel, total order on (hash, id)), then compare within equal hashes.
+// them. Hashes are computed in parallel; the insertion into a flat open-addressing table
+// is serial and in point order, so each vertex is represented by its smallest point id.
 void Weld(MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
-  std::vector<std::pair<std::uint64_t, vtkIdType>> keys(n);
+  std::vector<std::uint64_t> hashes(n);
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -203,31 +204,40 @@ void Weld(MikkMesh& mesh)
         }
         h = HashDouble(h, mesh.T[i][0]);
         h = HashDouble(h, mesh.T[i][1]);
-        keys[i] = { h, i };
+        // Round values leave the low bits of the combination regular; the table masks them.
+        h ^= h >> 31;
+        h *= 0x7fb5d329728ea185ULL;
+        h ^= h >> 27;
+        hashes[i] = h;
       }
     });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
 
-  mesh.Weld.resize(n);
-  vtkIdType runStart = 0;
-  for (vtkIdType k = 0; k < n; ++k)
+  std::uint64_t capacity = 16;
+  while (capacity < 2 * static_cast<std::uint64_t>(n))
   {
-    if (keys[k].first != keys[runStart].first)
-    {
-      runStart = k;
-    }
-    const vtkIdType i = keys[k].second;
+    capacity *= 2;
+  }
+  const std::uint64_t mask = capacity - 1;
+  std::vector<vtkIdType> table(capacity, -1);
+  mesh.Weld.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
     mesh.Weld[i] = i;
-    // NaN equals nothing, and all-NaN points would share a hash: no quadratic scan.
+    // NaN equals nothing, and all-NaN points would share a hash: never compared.
     if (!(Equal(mesh.P[i], mesh.P[i]) && Equal(mesh.N[i], mesh.N[i]) &&
           mesh.T[i][0] == mesh.T[i][0] && mesh.T[i][1] == mesh.T[i][1]))
     {
       continue;
     }
-    for (vtkIdType j = runStart; j < k; ++j)
+    for (std::uint64_t s = hashes[i] & mask;; s = (s + 1) & mask)
     {
-      const vtkIdType o = keys[j].second;
-      if (mesh.Weld[o] == o && Equal(mesh.P[i], mesh.P[o]) && Equal(mesh.N[i], mesh.N[o]) &&
+      const vtkIdType o = table[s];
+      if (o < 0)
+      {
+        table[s] = i;
+        break;
+      }
+      if (hashes[o] == hashes[i] && Equal(mesh.P[i], mesh.P[o]) && Equal(mesh.N[i], mesh.N[o]) &&
         mesh.T[i][0] == mesh.T[o][0] && mesh.T[i][1] == mesh.T[o][1])
       {
         mesh.Weld[i] = o;
