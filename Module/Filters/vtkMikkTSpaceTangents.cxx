@@ -115,9 +115,17 @@ struct MikkMesh
   std::vector<std::array<double, 2>> T;
   std::vector<vtkIdType> Weld; // the vertex a point is (same P, N and T: same vertex)
 
-  // Output polygons ("faces"), in output order, with the input cell each came from.
-  std::vector<vtkIdType> FaceOffsets{ 0 };
-  std::vector<vtkIdType> FacePoints;
+  // Output polygons ("faces"), in output order. When they are the input's polygons as
+  // they are (the usual case) Offsets and Points view the input's cell array, nothing is
+  // copied and FaceCell stays empty (face f is cell f after the vertices and lines);
+  // otherwise they view the Own* arrays built here, with the input cell each came from.
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Points = nullptr;
+  vtkIdType NumberOfFaces = 0;
+  vtkIdType NumberOfCorners = 0;
+  bool InputFaces = false;
+  std::vector<vtkIdType> OwnOffsets{ 0 };
+  std::vector<vtkIdType> OwnPoints;
   std::vector<vtkIdType> FaceCell;
 
   // Triangles of the faces with 3 or 4 corners, in face order.
@@ -128,7 +136,7 @@ struct MikkMesh
 
   vtkIdType CornerPoint(vtkIdType tri, int k) const
   {
-    return this->FacePoints[this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k]];
+    return this->Points[this->Offsets[this->TriFace[tri]] + this->TriVert[tri][k]];
   }
   vtkIdType CornerVertex(vtkIdType tri, int k) const
   {
@@ -136,7 +144,7 @@ struct MikkMesh
   }
   vtkIdType FaceCorner(vtkIdType tri, int k) const
   {
-    return this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k];
+    return this->Offsets[this->TriFace[tri]] + this->TriVert[tri][k];
   }
 };
 
@@ -251,14 +259,35 @@ void Weld(MikkMesh& mesh)
 // cutting, fan if that fails), polygons with fewer than 3 points kept, strips split.
 void BuildFaces(vtkPolyData* input, MikkMesh& mesh)
 {
+  vtkCellArray* inPolys = input->GetPolys();
+  if (input->GetNumberOfStrips() == 0 && inPolys->IsStorage64Bit())
+  {
+    const vtkIdType nPolys = inPolys->GetNumberOfCells();
+    const vtkIdType* offsets = inPolys->GetOffsetsArray64()->GetPointer(0);
+    bool small = true;
+    for (vtkIdType f = 0; f < nPolys && small; ++f)
+    {
+      small = offsets[f + 1] - offsets[f] <= 4;
+    }
+    if (small)
+    {
+      mesh.Offsets = offsets;
+      mesh.Points = inPolys->GetConnectivityArray64()->GetPointer(0);
+      mesh.NumberOfFaces = nPolys;
+      mesh.NumberOfCorners = offsets[nPolys];
+      mesh.InputFaces = true;
+      return;
+    }
+  }
+
   const vtkIdType polyCellBase = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  mesh.FacePoints.reserve(input->GetPolys()->GetNumberOfConnectivityIds());
-  mesh.FaceOffsets.reserve(input->GetNumberOfPolys() + 1);
+  mesh.OwnPoints.reserve(inPolys->GetNumberOfConnectivityIds());
+  mesh.OwnOffsets.reserve(input->GetNumberOfPolys() + 1);
   mesh.FaceCell.reserve(input->GetNumberOfPolys());
   auto addFace = [&mesh](const vtkIdType* ids, vtkIdType npts, vtkIdType cell)
   {
-    mesh.FacePoints.insert(mesh.FacePoints.end(), ids, ids + npts);
-    mesh.FaceOffsets.push_back(static_cast<vtkIdType>(mesh.FacePoints.size()));
+    mesh.OwnPoints.insert(mesh.OwnPoints.end(), ids, ids + npts);
+    mesh.OwnOffsets.push_back(static_cast<vtkIdType>(mesh.OwnPoints.size()));
     mesh.FaceCell.push_back(cell);
   };
 
@@ -307,18 +336,22 @@ void BuildFaces(vtkPolyData* input, MikkMesh& mesh)
       }
     }
   }
+  mesh.Offsets = mesh.OwnOffsets.data();
+  mesh.Points = mesh.OwnPoints.data();
+  mesh.NumberOfFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  mesh.NumberOfCorners = static_cast<vtkIdType>(mesh.OwnPoints.size());
 }
 
 // One triangle per triangle face, two per quad, split along the shorter diagonal in
 // texture space (in position space on a tie) as MikkTSpace does.
 void BuildTriangles(MikkMesh& mesh)
 {
-  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  const vtkIdType nFaces = mesh.NumberOfFaces;
   mesh.FaceFirstTri.resize(nFaces + 1);
   mesh.FaceFirstTri[0] = 0;
   for (vtkIdType f = 0; f < nFaces; ++f)
   {
-    const vtkIdType n = mesh.FaceOffsets[f + 1] - mesh.FaceOffsets[f];
+    const vtkIdType n = mesh.Offsets[f + 1] - mesh.Offsets[f];
     mesh.FaceFirstTri[f + 1] = mesh.FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
   }
   const vtkIdType nTris = mesh.FaceFirstTri[nFaces];
@@ -343,7 +376,7 @@ void BuildTriangles(MikkMesh& mesh)
           continue;
         }
         mesh.TriFace[t + 1] = f;
-        const vtkIdType* c = mesh.FacePoints.data() + mesh.FaceOffsets[f];
+        const vtkIdType* c = mesh.Points + mesh.Offsets[f];
         auto dist2T = [&](int a, int b)
         {
           const double ds = mesh.T[c[a]][0] - mesh.T[c[b]][0];
@@ -421,7 +454,7 @@ public:
   /// Fills @a tangents for the face corners it can and sets @a set for those.
   void Run(std::vector<std::array<float, 4>>& tangents, std::vector<char>& set)
   {
-    const size_t nCorners = this->Mesh.FacePoints.size();
+    const size_t nCorners = static_cast<size_t>(this->Mesh.NumberOfCorners);
     tangents.resize(nCorners);
     set.assign(nCorners, 0);
     this->Tangents = tangents.data();
@@ -1081,15 +1114,15 @@ private:
       const auto& vn = m.TriVert[t];
       const int used = (1 << vn[0]) | (1 << vn[1]) | (1 << vn[2]);
       const int missing = !(used & 2) ? 1 : (!(used & 4) ? 2 : (!(used & 8) ? 3 : 0));
-      const vtkIdType base = m.FaceOffsets[m.TriFace[t]];
-      const V3& target = m.P[m.FacePoints[base + missing]];
+      const vtkIdType base = m.Offsets[m.TriFace[t]];
+      const V3& target = m.P[m.Points[base + missing]];
       for (int k = 0; k < 3; ++k)
       {
         const vtkIdType src = base + vn[k];
-        if (Equal(m.P[m.FacePoints[src]], target))
+        if (Equal(m.P[m.Points[src]], target))
         {
           const auto& f = this->Tangents[src];
-          FinalTangent(m.N[m.FacePoints[base + missing]],
+          FinalTangent(m.N[m.Points[base + missing]],
             TSpace{ V3{ f[0], f[1], f[2] }, f[3] > 0.0f, 0 },
             this->Tangents[base + missing].data());
           this->Set[base + missing] = this->Set[src];
@@ -1199,8 +1232,8 @@ int vtkMikkTSpaceTangents::RequestData(
   BuildTriangles(mesh);
   this->UpdateProgress(0.2);
 
-  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
-  const vtkIdType nCorners = static_cast<vtkIdType>(mesh.FacePoints.size());
+  const vtkIdType nFaces = mesh.NumberOfFaces;
+  const vtkIdType nCorners = mesh.NumberOfCorners;
   std::vector<std::array<float, 4>> cornerTangents;
   std::vector<char> cornerSet;
   {
@@ -1221,11 +1254,11 @@ int vtkMikkTSpaceTangents::RequestData(
         {
           continue;
         }
-        for (vtkIdType c = mesh.FaceOffsets[f]; c < mesh.FaceOffsets[f + 1]; ++c)
+        for (vtkIdType c = mesh.Offsets[f]; c < mesh.Offsets[f + 1]; ++c)
         {
           if (!cornerSet[c])
           {
-            FinalTangent(mesh.N[mesh.FacePoints[c]], TSpace(), cornerTangents[c].data());
+            FinalTangent(mesh.N[mesh.Points[c]], TSpace(), cornerTangents[c].data());
           }
           cornerUsed[c] = 1;
         }
@@ -1237,7 +1270,7 @@ int vtkMikkTSpaceTangents::RequestData(
   std::vector<vtkIdType> pointCornerOffsets(nPts + 1, 0);
   for (vtkIdType c = 0; c < nCorners; ++c)
   {
-    pointCornerOffsets[mesh.FacePoints[c] + 1] += cornerUsed[c];
+    pointCornerOffsets[mesh.Points[c] + 1] += cornerUsed[c];
   }
   for (vtkIdType p = 0; p < nPts; ++p)
   {
@@ -1250,14 +1283,10 @@ int vtkMikkTSpaceTangents::RequestData(
     {
       if (cornerUsed[c])
       {
-        pointCorners[fill[mesh.FacePoints[c]]++] = c;
+        pointCorners[fill[mesh.Points[c]]++] = c;
       }
     }
   }
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(nCorners);
-  vtkIdType* cornerPoint = connectivity->GetPointer(0);
-  std::copy(mesh.FacePoints.begin(), mesh.FacePoints.end(), cornerPoint);
   std::vector<vtkIdType> extraCount(nPts + 1, 0);
   // The distinct frames at point p in order of first appearance: ranks[k] is the frame
   // number of p's k-th corner, firsts[d] the first corner with frame d.
@@ -1342,6 +1371,16 @@ int vtkMikkTSpaceTangents::RequestData(
   }
   const vtkIdType nExtra = extraCount[nPts];
   const vtkIdType nOutPts = nPts + nExtra;
+  // Without split points the input's polygons go out as they are (shared, not copied).
+  vtkSmartPointer<vtkIdTypeArray> connectivity;
+  vtkIdType* cornerPoint = nullptr;
+  if (nExtra > 0 || !mesh.InputFaces)
+  {
+    connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    connectivity->SetNumberOfValues(nCorners);
+    cornerPoint = connectivity->GetPointer(0);
+    std::copy(mesh.Points, mesh.Points + nCorners, cornerPoint);
+  }
   vtkNew<vtkFloatArray> tangents;
   tangents->SetName("Tangents");
   tangents->SetNumberOfComponents(4);
@@ -1370,6 +1409,10 @@ int vtkMikkTSpaceTangents::RequestData(
           {
             extraSource[id - nPts] = p;
           }
+        }
+        if (nExtra == 0)
+        {
+          continue; // every corner keeps its point
         }
         const vtkIdType off = pointCornerOffsets[p];
         for (size_t k = 0; k < ranks.size(); ++k)
@@ -1415,12 +1458,19 @@ int vtkMikkTSpaceTangents::RequestData(
   // Cells: vertices and lines as they are; polygons renumbered; strips as triangles.
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(nFaces + 1);
-  std::copy(mesh.FaceOffsets.begin(), mesh.FaceOffsets.end(), offsets->GetPointer(0));
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPolys(polys);
+  if (cornerPoint)
+  {
+    vtkNew<vtkIdTypeArray> offsets;
+    offsets->SetNumberOfValues(nFaces + 1);
+    std::copy(mesh.Offsets, mesh.Offsets + nFaces + 1, offsets->GetPointer(0));
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(offsets, connectivity);
+    output->SetPolys(polys);
+  }
+  else
+  {
+    output->SetPolys(input->GetPolys());
+  }
 
   const vtkIdType nLead = input->GetNumberOfVerts() + input->GetNumberOfLines();
   const bool sameCells = input->GetNumberOfStrips() == 0 && nFaces == input->GetNumberOfPolys();
