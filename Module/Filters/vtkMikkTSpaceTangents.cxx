@@ -477,12 +477,17 @@ private:
   // Per good triangle, everything the per-vertex pass reads, together in memory.
   struct GoodTriangle
   {
-    std::array<vtkIdType, 3> W;      // welded vertex of each corner
-    std::array<vtkIdType, 3> Corner; // face corner of each corner
-    V3 Os, Ot;                       // directions of dP/ds and dP/dt
+    std::array<vtkIdType, 3> W; // welded vertex of each corner
+    V3 Os, Ot;                  // directions of dP/ds and dP/dt
     vtkIdType Face;
     int Flag;
+    std::array<unsigned char, 3> Vert; // corner numbers within the face
   };
+
+  vtkIdType FaceCorner(const GoodTriangle& tri, int k) const
+  {
+    return this->Mesh.Offsets[tri.Face] + tri.Vert[k];
+  }
   std::vector<GoodTriangle> Tris;
   std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
   std::array<float, 4>* Tangents = nullptr;            // per face corner
@@ -556,7 +561,7 @@ private:
           for (int k = 0; k < 3; ++k)
           {
             tri.W[k] = m.CornerVertex(t, k);
-            tri.Corner[k] = m.FaceCorner(t, k);
+            tri.Vert[k] = m.TriVert[t][k];
           }
           tri.Os = V3{ 0.0, 0.0, 0.0 };
           tri.Ot = V3{ 0.0, 0.0, 0.0 };
@@ -1033,7 +1038,7 @@ private:
                 }
                 result = Average(subset, os, angle, contributes);
               }
-              const vtkIdType c = this->Tris[fan.Tri[f]].Corner[fan.Corner[f]];
+              const vtkIdType c = this->FaceCorner(this->Tris[fan.Tri[f]], fan.Corner[f]);
               auto same = written.end();
               if (k <= SmallFan)
               {
@@ -1098,7 +1103,7 @@ private:
           continue;
         }
         const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
-        const vtkIdType src = this->Tris[g].Corner[CornerOf(this->Tris[g].W, v)];
+        const vtkIdType src = this->FaceCorner(this->Tris[g], CornerOf(this->Tris[g].W, v));
         const vtkIdType dst = m.FaceCorner(t, k);
         this->Tangents[dst] = this->Tangents[src];
         this->Set[dst] = this->Set[src];
@@ -1393,7 +1398,19 @@ int vtkMikkTSpaceTangents::RequestData(
       std::vector<vtkIdType> ranks, firsts, order, groups;
       for (vtkIdType p = begin; p < end; ++p)
       {
-        rankFrames(p, ranks, firsts, order, groups);
+        if (nExtra == 0)
+        {
+          // One frame per point: its first corner's, no ranking needed.
+          firsts.clear();
+          if (pointCornerOffsets[p] < pointCornerOffsets[p + 1])
+          {
+            firsts.push_back(pointCorners[pointCornerOffsets[p]]);
+          }
+        }
+        else
+        {
+          rankFrames(p, ranks, firsts, order, groups);
+        }
         if (firsts.empty())
         {
           // Not on any polygon: any frame orthogonal to the normal.
