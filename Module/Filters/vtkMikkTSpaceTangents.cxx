@@ -901,7 +901,7 @@ private:
         Fan fan;
         std::vector<int> comp, members, subset, byComponent;
         std::vector<size_t> bucket;
-        std::vector<V3> os, ot;
+        std::vector<V3> os, ot, edgeNext;
         std::vector<double> angle;
         std::vector<char> contributes;
         std::vector<vtkIdType> face;
@@ -919,6 +919,7 @@ private:
           const V3& pv = m.P[v];
           os.resize(k);
           ot.resize(k);
+          edgeNext.resize(k);
           angle.resize(k);
           contributes.resize(k);
           face.resize(k);
@@ -931,9 +932,20 @@ private:
             contributes[a] = (this->Tris[t].Flag & GroupWithAny) == 0;
             if (contributes[a])
             {
-              const V3 e1 = ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
-              const V3 e2 = ProjectNormalize(Sub(m.P[fan.Next[a]], pv), n);
-              const double c = std::acos(std::min(1.0, std::max(-1.0, Dot(e1, e2))));
+              edgeNext[a] = ProjectNormalize(Sub(m.P[fan.Next[a]], pv), n);
+            }
+          }
+          // Linked neighbours share an edge at v (Prev[a] is Next[In[a]]): each projected
+          // edge is computed once.
+          for (size_t a = 0; a < k; ++a)
+          {
+            if (contributes[a])
+            {
+              const int b = fan.In[a];
+              const V3 e1 = b >= 0 && contributes[b]
+                ? edgeNext[b]
+                : ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
+              const double c = std::acos(std::min(1.0, std::max(-1.0, Dot(e1, edgeNext[a]))));
               angle[a] = std::isfinite(c) ? c : 0.0;
             }
           }
