@@ -2,9 +2,11 @@
 
 #include "vtkSurfaceDetailConventions.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -157,22 +159,48 @@ struct TSpace
 };
 
 // Normals are read as they are (the weld compares them so) and normalised after welding.
+// The first NC components of every tuple, as doubles; typed access for the usual value
+// types (a virtual call per value costs as much as the rest of the reading).
+struct CopyComponents
+{
+  template <typename ArrayT, std::size_t NC>
+  void operator()(ArrayT* array, std::vector<std::array<double, NC>>& out) const
+  {
+    const auto tuples = vtk::DataArrayTupleRange(array);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(out.size()),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const auto tuple = tuples[i];
+          for (std::size_t c = 0; c < NC; ++c)
+          {
+            out[i][c] = static_cast<double>(tuple[c]);
+          }
+        }
+      });
+  }
+};
+
+template <std::size_t NC>
+void ReadComponents(vtkDataArray* array, std::vector<std::array<double, NC>>& out)
+{
+  CopyComponents worker;
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(array, worker, out))
+  {
+    worker(array, out);
+  }
+}
+
 void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoords, MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
   mesh.P.resize(n);
   mesh.N.resize(n);
   mesh.T.resize(n);
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        points->GetPoint(i, mesh.P[i].data());
-        normals->GetTuple(i, mesh.N[i].data());
-        mesh.T[i] = { tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1) };
-      }
-    });
+  ReadComponents(points->GetData(), mesh.P);
+  ReadComponents(normals, mesh.N);
+  ReadComponents(tcoords, mesh.T);
 }
 
 void NormalizeNormals(MikkMesh& mesh)
