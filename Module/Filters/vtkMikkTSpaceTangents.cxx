@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -1310,19 +1311,47 @@ int vtkMikkTSpaceTangents::RequestData(
       }
     });
 
-  // Point -> its corners, in corner order; a point keeps its first frame, every other
-  // distinct frame at it becomes a new point.
-  std::vector<vtkIdType> pointCornerOffsets(nPts + 1, 0);
+  // A point keeps the frame of its first corner, every other distinct frame at it becomes
+  // a new point. Usually there is none (no mirrored shell or hard seam on shared points):
+  // then the per-point corner lists below are not needed.
+  std::vector<vtkIdType> firstCorner(nPts, -1);
   for (vtkIdType c = 0; c < nCorners; ++c)
   {
-    pointCornerOffsets[mesh.Points[c] + 1] += cornerUsed[c];
+    if (cornerUsed[c] && firstCorner[mesh.Points[c]] < 0)
+    {
+      firstCorner[mesh.Points[c]] = c;
+    }
   }
-  for (vtkIdType p = 0; p < nPts; ++p)
+  std::atomic<bool> splits(false);
+  vtkSMPTools::For(0, nCorners,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        if (cornerUsed[c] &&
+          std::memcmp(cornerTangents[c].data(), cornerTangents[firstCorner[mesh.Points[c]]].data(),
+            4 * sizeof(float)) != 0)
+        {
+          splits.store(true, std::memory_order_relaxed);
+          return;
+        }
+      }
+    });
+
+  // Point -> its corners, in corner order.
+  std::vector<vtkIdType> pointCornerOffsets, pointCorners;
+  if (splits)
   {
-    pointCornerOffsets[p + 1] += pointCornerOffsets[p];
-  }
-  std::vector<vtkIdType> pointCorners(pointCornerOffsets[nPts]);
-  {
+    pointCornerOffsets.assign(nPts + 1, 0);
+    for (vtkIdType c = 0; c < nCorners; ++c)
+    {
+      pointCornerOffsets[mesh.Points[c] + 1] += cornerUsed[c];
+    }
+    for (vtkIdType p = 0; p < nPts; ++p)
+    {
+      pointCornerOffsets[p + 1] += pointCornerOffsets[p];
+    }
+    pointCorners.resize(pointCornerOffsets[nPts]);
     std::vector<vtkIdType> fill(pointCornerOffsets.begin(), pointCornerOffsets.end() - 1);
     for (vtkIdType c = 0; c < nCorners; ++c)
     {
@@ -1400,19 +1429,22 @@ int vtkMikkTSpaceTangents::RequestData(
       ranks[k] = rankOf[ranks[k]];
     }
   };
-  vtkSMPTools::For(0, nPts,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      std::vector<vtkIdType> ranks, firsts, order, groups;
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        rankFrames(p, ranks, firsts, order, groups);
-        extraCount[p + 1] = firsts.empty() ? 0 : static_cast<vtkIdType>(firsts.size()) - 1;
-      }
-    });
-  for (vtkIdType p = 0; p < nPts; ++p)
+  if (splits)
   {
-    extraCount[p + 1] += extraCount[p];
+    vtkSMPTools::For(0, nPts,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<vtkIdType> ranks, firsts, order, groups;
+        for (vtkIdType p = begin; p < end; ++p)
+        {
+          rankFrames(p, ranks, firsts, order, groups);
+          extraCount[p + 1] = firsts.empty() ? 0 : static_cast<vtkIdType>(firsts.size()) - 1;
+        }
+      });
+    for (vtkIdType p = 0; p < nPts; ++p)
+    {
+      extraCount[p + 1] += extraCount[p];
+    }
   }
   const vtkIdType nExtra = extraCount[nPts];
   const vtkIdType nOutPts = nPts + nExtra;
@@ -1442,9 +1474,9 @@ int vtkMikkTSpaceTangents::RequestData(
         {
           // One frame per point: its first corner's, no ranking needed.
           firsts.clear();
-          if (pointCornerOffsets[p] < pointCornerOffsets[p + 1])
+          if (firstCorner[p] >= 0)
           {
-            firsts.push_back(pointCorners[pointCornerOffsets[p]]);
+            firsts.push_back(firstCorner[p]);
           }
         }
         else
