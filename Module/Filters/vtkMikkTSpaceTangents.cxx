@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -481,12 +482,13 @@ public:
   }
 
   /// Fills @a tangents for the face corners it can and sets @a set for those.
-  void Run(std::vector<std::array<float, 4>>& tangents, std::vector<char>& set)
+  /// @a tangents has a slot per face corner, left uninitialised (a corner's slot is only
+  /// read once @a set says it was written, or after the caller writes it).
+  void Run(std::array<float, 4>* tangents, std::vector<char>& set)
   {
     const size_t nCorners = static_cast<size_t>(this->Mesh.NumberOfCorners);
-    tangents.resize(nCorners);
     set.assign(nCorners, 0);
-    this->Tangents = tangents.data();
+    this->Tangents = tangents;
     this->Set = set.data();
     this->MarkDegenerates();
     this->InitTriangles();
@@ -1146,8 +1148,11 @@ private:
         const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
         const vtkIdType src = this->FaceCorner(this->Tris[g], CornerOf(this->Tris[g].W, v));
         const vtkIdType dst = m.FaceCorner(t, k);
-        this->Tangents[dst] = this->Tangents[src];
-        this->Set[dst] = this->Set[src];
+        if (this->Set[src])
+        {
+          this->Tangents[dst] = this->Tangents[src];
+          this->Set[dst] = 1;
+        }
       }
     }
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
@@ -1167,6 +1172,10 @@ private:
         const vtkIdType src = base + vn[k];
         if (Equal(m.P[m.Points[src]], target))
         {
+          if (!this->Set[src])
+          {
+            break; // the corner keeps the default space, as its source does
+          }
           const auto& f = this->Tangents[src];
           FinalTangent(m.N[m.Points[base + missing]],
             TSpace{ V3{ f[0], f[1], f[2] }, f[3] > 0.0f, 0 },
@@ -1280,11 +1289,12 @@ int vtkMikkTSpaceTangents::RequestData(
 
   const vtkIdType nFaces = mesh.NumberOfFaces;
   const vtkIdType nCorners = mesh.NumberOfCorners;
-  std::vector<std::array<float, 4>> cornerTangents;
+  // Not zero-filled: 16 bytes per corner that the per-vertex pass writes anyway.
+  std::unique_ptr<std::array<float, 4>[]> cornerTangents(new std::array<float, 4>[nCorners]);
   std::vector<char> cornerSet;
   {
     MikkTSpace mikk(mesh, this->AngularThreshold);
-    mikk.Run(cornerTangents, cornerSet);
+    mikk.Run(cornerTangents.get(), cornerSet);
   }
   this->UpdateProgress(0.7);
 
