@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -110,13 +111,43 @@ inline std::uint64_t HashDouble(std::uint64_t h, double v)
   return h;
 }
 
+// An allocator whose resize() leaves new elements default-initialised: the big per-point
+// and per-triangle arrays are written entirely by a parallel pass right after, and
+// zero-filling them first is a serial pass over up to ~100 MB.
+template <typename T>
+struct NoInitAllocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    using other = NoInitAllocator<U>;
+  };
+  NoInitAllocator() = default;
+  template <typename U>
+  NoInitAllocator(const NoInitAllocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <typename T>
+using RawVector = std::vector<T, NoInitAllocator<T>>;
+
 /// Everything the algorithm needs, indexed by input point, face corner or triangle.
 struct MikkMesh
 {
   vtkIdType NumberOfPoints = 0;
-  std::vector<V3> P;
-  std::vector<V3> N; // normalised
-  std::vector<std::array<double, 2>> T;
+  RawVector<V3> P;
+  RawVector<V3> N; // normalised
+  RawVector<std::array<double, 2>> T;
   std::vector<vtkIdType> Weld; // the vertex a point is (same P, N and T: same vertex)
 
   // Output polygons ("faces"), in output order. When they are the input's polygons as
@@ -166,7 +197,7 @@ struct TSpace
 struct CopyComponents
 {
   template <typename ArrayT, std::size_t NC>
-  void operator()(ArrayT* array, std::vector<std::array<double, NC>>& out) const
+  void operator()(ArrayT* array, RawVector<std::array<double, NC>>& out) const
   {
     const auto tuples = vtk::DataArrayTupleRange(array);
     vtkSMPTools::For(0, static_cast<vtkIdType>(out.size()),
@@ -185,7 +216,7 @@ struct CopyComponents
 };
 
 template <std::size_t NC>
-void ReadComponents(vtkDataArray* array, std::vector<std::array<double, NC>>& out)
+void ReadComponents(vtkDataArray* array, RawVector<std::array<double, NC>>& out)
 {
   CopyComponents worker;
   if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(array, worker, out))
@@ -228,7 +259,7 @@ void NormalizeNormals(MikkMesh& mesh)
 void Weld(MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
-  std::vector<std::uint64_t> hashes(n);
+  RawVector<std::uint64_t> hashes(n);
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -519,10 +550,11 @@ private:
   {
     return this->Mesh.Offsets[tri.Face] + tri.Vert[k];
   }
-  std::vector<GoodTriangle> Tris;
-  std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
-  std::array<float, 4>* Tangents = nullptr;            // per face corner
-  char* Set = nullptr;                                 // per face corner: Tangents[c] is set
+  RawVector<GoodTriangle> Tris;
+  std::vector<vtkIdType> VertexTriOffsets; // vertex -> good triangles
+  RawVector<vtkIdType> VertexTris;
+  std::array<float, 4>* Tangents = nullptr; // per face corner
+  char* Set = nullptr;                      // per face corner: Tangents[c] is set
 
   void MarkDegenerates()
   {
