@@ -539,8 +539,7 @@ private:
   // Per good triangle, everything the per-vertex pass reads, together in memory.
   struct GoodTriangle
   {
-    std::array<vtkIdType, 3> W; // welded vertex of each corner
-    V3 Os, Ot;                  // directions of dP/ds and dP/dt
+    V3 Os, Ot; // directions of dP/ds and dP/dt
     vtkIdType Face;
     int Flag;
     std::array<unsigned char, 3> Vert; // corner numbers within the face
@@ -551,6 +550,9 @@ private:
     return this->Mesh.Offsets[tri.Face] + tri.Vert[k];
   }
   RawVector<GoodTriangle> Tris;
+  // Welded vertex of each corner of each good triangle; apart from Tris because the
+  // adjacency passes read only these.
+  RawVector<std::array<vtkIdType, 3>> W;
   std::vector<vtkIdType> VertexTriOffsets; // vertex -> good triangles
   RawVector<vtkIdType> VertexTris;
   std::array<float, 4>* Tangents = nullptr; // per face corner
@@ -613,6 +615,7 @@ private:
     const MikkMesh& m = this->Mesh;
     const vtkIdType n = this->NumberOfGood;
     this->Tris.resize(n);
+    this->W.resize(n);
     vtkSMPTools::For(0, n,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -623,17 +626,17 @@ private:
           tri.Face = m.TriFace[t];
           for (int k = 0; k < 3; ++k)
           {
-            tri.W[k] = m.CornerVertex(t, k);
+            this->W[g][k] = m.CornerVertex(t, k);
             tri.Vert[k] = m.TriVert[t][k];
           }
           tri.Os = V3{ 0.0, 0.0, 0.0 };
           tri.Ot = V3{ 0.0, 0.0, 0.0 };
-          const V3& v1 = m.P[this->Tris[g].W[0]];
-          const V3& v2 = m.P[this->Tris[g].W[1]];
-          const V3& v3 = m.P[this->Tris[g].W[2]];
-          const auto& t1 = m.T[this->Tris[g].W[0]];
-          const auto& t2 = m.T[this->Tris[g].W[1]];
-          const auto& t3 = m.T[this->Tris[g].W[2]];
+          const V3& v1 = m.P[this->W[g][0]];
+          const V3& v2 = m.P[this->W[g][1]];
+          const V3& v3 = m.P[this->W[g][2]];
+          const auto& t1 = m.T[this->W[g][0]];
+          const auto& t2 = m.T[this->W[g][1]];
+          const auto& t3 = m.T[this->W[g][2]];
           const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
           const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
           const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
@@ -712,9 +715,9 @@ private:
   {
     const vtkIdType nv = this->Mesh.NumberOfPoints;
     this->VertexTriOffsets.assign(nv + 1, 0);
-    for (const auto& tri : this->Tris)
+    for (const auto& w : this->W)
     {
-      for (vtkIdType v : tri.W)
+      for (vtkIdType v : w)
       {
         ++this->VertexTriOffsets[v + 1];
       }
@@ -727,7 +730,7 @@ private:
     std::vector<vtkIdType> fill(this->VertexTriOffsets.begin(), this->VertexTriOffsets.end() - 1);
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
     {
-      for (vtkIdType v : this->Tris[g].W)
+      for (vtkIdType v : this->W[g])
       {
         this->VertexTris[fill[v]++] = g;
       }
@@ -765,7 +768,7 @@ private:
     fan.In.assign(k, -1);
     for (size_t a = 0; a < k; ++a)
     {
-      const auto& w = this->Tris[fan.Tri[a]].W;
+      const auto& w = this->W[fan.Tri[a]];
       const int i = CornerOf(w, v);
       fan.Corner[a] = i;
       fan.Next[a] = w[i < 2 ? i + 1 : 0];
@@ -849,7 +852,7 @@ private:
       if (this->Tris[g].Flag & GroupWithAny)
       {
         any = true;
-        for (vtkIdType v : this->Tris[g].W)
+        for (vtkIdType v : this->W[g])
         {
           anyVertex[v] = 1;
         }
@@ -868,7 +871,7 @@ private:
     {
       for (int i = 0; i < 3; ++i)
       {
-        const vtkIdType v = this->Tris[g].W[i];
+        const vtkIdType v = this->W[g][i];
         if (!anyVertex[v] || (this->Tris[g].Flag & GroupWithAny) || assigned[3 * g + i])
         {
           continue;
@@ -1178,7 +1181,7 @@ private:
           continue;
         }
         const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
-        const vtkIdType src = this->FaceCorner(this->Tris[g], CornerOf(this->Tris[g].W, v));
+        const vtkIdType src = this->FaceCorner(this->Tris[g], CornerOf(this->W[g], v));
         const vtkIdType dst = m.FaceCorner(t, k);
         if (this->Set[src])
         {
