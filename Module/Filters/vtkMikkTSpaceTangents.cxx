@@ -2,9 +2,11 @@
 
 #include "vtkSurfaceDetailConventions.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -23,10 +25,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -106,18 +111,56 @@ inline std::uint64_t HashDouble(std::uint64_t h, double v)
   return h;
 }
 
+// An allocator whose resize() leaves new elements default-initialised: the big per-point
+// and per-triangle arrays are written entirely by a parallel pass right after, and
+// zero-filling them first is a serial pass over up to ~100 MB.
+template <typename T>
+struct NoInitAllocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    using other = NoInitAllocator<U>;
+  };
+  NoInitAllocator() = default;
+  template <typename U>
+  NoInitAllocator(const NoInitAllocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <typename T>
+using RawVector = std::vector<T, NoInitAllocator<T>>;
+
 /// Everything the algorithm needs, indexed by input point, face corner or triangle.
 struct MikkMesh
 {
   vtkIdType NumberOfPoints = 0;
-  std::vector<V3> P;
-  std::vector<V3> N; // normalised
-  std::vector<std::array<double, 2>> T;
+  RawVector<V3> P;
+  RawVector<V3> N; // normalised
+  RawVector<std::array<double, 2>> T;
   std::vector<vtkIdType> Weld; // the vertex a point is (same P, N and T: same vertex)
 
-  // Output polygons ("faces"), in output order, with the input cell each came from.
-  std::vector<vtkIdType> FaceOffsets{ 0 };
-  std::vector<vtkIdType> FacePoints;
+  // Output polygons ("faces"), in output order. When they are the input's polygons as
+  // they are (the usual case) Offsets and Points view the input's cell array, nothing is
+  // copied and FaceCell stays empty (face f is cell f after the vertices and lines);
+  // otherwise they view the Own* arrays built here, with the input cell each came from.
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Points = nullptr;
+  vtkIdType NumberOfFaces = 0;
+  vtkIdType NumberOfCorners = 0;
+  bool InputFaces = false;
+  std::vector<vtkIdType> OwnOffsets{ 0 };
+  std::vector<vtkIdType> OwnPoints;
   std::vector<vtkIdType> FaceCell;
 
   // Triangles of the faces with 3 or 4 corners, in face order.
@@ -128,7 +171,7 @@ struct MikkMesh
 
   vtkIdType CornerPoint(vtkIdType tri, int k) const
   {
-    return this->FacePoints[this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k]];
+    return this->Points[this->Offsets[this->TriFace[tri]] + this->TriVert[tri][k]];
   }
   vtkIdType CornerVertex(vtkIdType tri, int k) const
   {
@@ -136,7 +179,7 @@ struct MikkMesh
   }
   vtkIdType FaceCorner(vtkIdType tri, int k) const
   {
-    return this->FaceOffsets[this->TriFace[tri]] + this->TriVert[tri][k];
+    return this->Offsets[this->TriFace[tri]] + this->TriVert[tri][k];
   }
 };
 
@@ -149,22 +192,48 @@ struct TSpace
 };
 
 // Normals are read as they are (the weld compares them so) and normalised after welding.
+// The first NC components of every tuple, as doubles; typed access for the usual value
+// types (a virtual call per value costs as much as the rest of the reading).
+struct CopyComponents
+{
+  template <typename ArrayT, std::size_t NC>
+  void operator()(ArrayT* array, RawVector<std::array<double, NC>>& out) const
+  {
+    const auto tuples = vtk::DataArrayTupleRange(array);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(out.size()),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const auto tuple = tuples[i];
+          for (std::size_t c = 0; c < NC; ++c)
+          {
+            out[i][c] = static_cast<double>(tuple[c]);
+          }
+        }
+      });
+  }
+};
+
+template <std::size_t NC>
+void ReadComponents(vtkDataArray* array, RawVector<std::array<double, NC>>& out)
+{
+  CopyComponents worker;
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(array, worker, out))
+  {
+    worker(array, out);
+  }
+}
+
 void ReadAttributes(vtkPoints* points, vtkDataArray* normals, vtkDataArray* tcoords, MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
   mesh.P.resize(n);
   mesh.N.resize(n);
   mesh.T.resize(n);
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        points->GetPoint(i, mesh.P[i].data());
-        normals->GetTuple(i, mesh.N[i].data());
-        mesh.T[i] = { tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1) };
-      }
-    });
+  ReadComponents(points->GetData(), mesh.P);
+  ReadComponents(normals, mesh.N);
+  ReadComponents(tcoords, mesh.T);
 }
 
 void NormalizeNormals(MikkMesh& mesh)
@@ -185,11 +254,12 @@ void NormalizeNormals(MikkMesh& mesh)
 
 // MikkTSpace welds corners whose position, normal and texture coordinates are identical,
 // so two input points with the same values are one vertex even if the cells do not share
-// them. Hash, sort (parallel, total order on (hash, id)), then compare within equal hashes.
+// them. Hashes are computed in parallel; the insertion into a flat open-addressing table
+// is serial and in point order, so each vertex is represented by its smallest point id.
 void Weld(MikkMesh& mesh)
 {
   const vtkIdType n = mesh.NumberOfPoints;
-  std::vector<std::pair<std::uint64_t, vtkIdType>> keys(n);
+  RawVector<std::uint64_t> hashes(n);
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -203,31 +273,40 @@ void Weld(MikkMesh& mesh)
         }
         h = HashDouble(h, mesh.T[i][0]);
         h = HashDouble(h, mesh.T[i][1]);
-        keys[i] = { h, i };
+        // Round values leave the low bits of the combination regular; the table masks them.
+        h ^= h >> 31;
+        h *= 0x7fb5d329728ea185ULL;
+        h ^= h >> 27;
+        hashes[i] = h;
       }
     });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
 
-  mesh.Weld.resize(n);
-  vtkIdType runStart = 0;
-  for (vtkIdType k = 0; k < n; ++k)
+  std::uint64_t capacity = 16;
+  while (capacity < 2 * static_cast<std::uint64_t>(n))
   {
-    if (keys[k].first != keys[runStart].first)
-    {
-      runStart = k;
-    }
-    const vtkIdType i = keys[k].second;
+    capacity *= 2;
+  }
+  const std::uint64_t mask = capacity - 1;
+  std::vector<vtkIdType> table(capacity, -1);
+  mesh.Weld.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
     mesh.Weld[i] = i;
-    // NaN equals nothing, and all-NaN points would share a hash: no quadratic scan.
+    // NaN equals nothing, and all-NaN points would share a hash: never compared.
     if (!(Equal(mesh.P[i], mesh.P[i]) && Equal(mesh.N[i], mesh.N[i]) &&
           mesh.T[i][0] == mesh.T[i][0] && mesh.T[i][1] == mesh.T[i][1]))
     {
       continue;
     }
-    for (vtkIdType j = runStart; j < k; ++j)
+    for (std::uint64_t s = hashes[i] & mask;; s = (s + 1) & mask)
     {
-      const vtkIdType o = keys[j].second;
-      if (mesh.Weld[o] == o && Equal(mesh.P[i], mesh.P[o]) && Equal(mesh.N[i], mesh.N[o]) &&
+      const vtkIdType o = table[s];
+      if (o < 0)
+      {
+        table[s] = i;
+        break;
+      }
+      if (hashes[o] == hashes[i] && Equal(mesh.P[i], mesh.P[o]) && Equal(mesh.N[i], mesh.N[o]) &&
         mesh.T[i][0] == mesh.T[o][0] && mesh.T[i][1] == mesh.T[o][1])
       {
         mesh.Weld[i] = o;
@@ -241,14 +320,35 @@ void Weld(MikkMesh& mesh)
 // cutting, fan if that fails), polygons with fewer than 3 points kept, strips split.
 void BuildFaces(vtkPolyData* input, MikkMesh& mesh)
 {
+  vtkCellArray* inPolys = input->GetPolys();
+  if (input->GetNumberOfStrips() == 0 && inPolys->IsStorage64Bit())
+  {
+    const vtkIdType nPolys = inPolys->GetNumberOfCells();
+    const vtkIdType* offsets = inPolys->GetOffsetsArray64()->GetPointer(0);
+    bool small = true;
+    for (vtkIdType f = 0; f < nPolys && small; ++f)
+    {
+      small = offsets[f + 1] - offsets[f] <= 4;
+    }
+    if (small)
+    {
+      mesh.Offsets = offsets;
+      mesh.Points = inPolys->GetConnectivityArray64()->GetPointer(0);
+      mesh.NumberOfFaces = nPolys;
+      mesh.NumberOfCorners = offsets[nPolys];
+      mesh.InputFaces = true;
+      return;
+    }
+  }
+
   const vtkIdType polyCellBase = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  mesh.FacePoints.reserve(input->GetPolys()->GetNumberOfConnectivityIds());
-  mesh.FaceOffsets.reserve(input->GetNumberOfPolys() + 1);
+  mesh.OwnPoints.reserve(inPolys->GetNumberOfConnectivityIds());
+  mesh.OwnOffsets.reserve(input->GetNumberOfPolys() + 1);
   mesh.FaceCell.reserve(input->GetNumberOfPolys());
   auto addFace = [&mesh](const vtkIdType* ids, vtkIdType npts, vtkIdType cell)
   {
-    mesh.FacePoints.insert(mesh.FacePoints.end(), ids, ids + npts);
-    mesh.FaceOffsets.push_back(static_cast<vtkIdType>(mesh.FacePoints.size()));
+    mesh.OwnPoints.insert(mesh.OwnPoints.end(), ids, ids + npts);
+    mesh.OwnOffsets.push_back(static_cast<vtkIdType>(mesh.OwnPoints.size()));
     mesh.FaceCell.push_back(cell);
   };
 
@@ -297,18 +397,22 @@ void BuildFaces(vtkPolyData* input, MikkMesh& mesh)
       }
     }
   }
+  mesh.Offsets = mesh.OwnOffsets.data();
+  mesh.Points = mesh.OwnPoints.data();
+  mesh.NumberOfFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  mesh.NumberOfCorners = static_cast<vtkIdType>(mesh.OwnPoints.size());
 }
 
 // One triangle per triangle face, two per quad, split along the shorter diagonal in
 // texture space (in position space on a tie) as MikkTSpace does.
 void BuildTriangles(MikkMesh& mesh)
 {
-  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
+  const vtkIdType nFaces = mesh.NumberOfFaces;
   mesh.FaceFirstTri.resize(nFaces + 1);
   mesh.FaceFirstTri[0] = 0;
   for (vtkIdType f = 0; f < nFaces; ++f)
   {
-    const vtkIdType n = mesh.FaceOffsets[f + 1] - mesh.FaceOffsets[f];
+    const vtkIdType n = mesh.Offsets[f + 1] - mesh.Offsets[f];
     mesh.FaceFirstTri[f + 1] = mesh.FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
   }
   const vtkIdType nTris = mesh.FaceFirstTri[nFaces];
@@ -333,7 +437,7 @@ void BuildTriangles(MikkMesh& mesh)
           continue;
         }
         mesh.TriFace[t + 1] = f;
-        const vtkIdType* c = mesh.FacePoints.data() + mesh.FaceOffsets[f];
+        const vtkIdType* c = mesh.Points + mesh.Offsets[f];
         auto dist2T = [&](int a, int b)
         {
           const double ds = mesh.T[c[a]][0] - mesh.T[c[b]][0];
@@ -409,12 +513,13 @@ public:
   }
 
   /// Fills @a tangents for the face corners it can and sets @a set for those.
-  void Run(std::vector<std::array<float, 4>>& tangents, std::vector<char>& set)
+  /// @a tangents has a slot per face corner, left uninitialised (a corner's slot is only
+  /// read once @a set says it was written, or after the caller writes it).
+  void Run(std::array<float, 4>* tangents, std::vector<char>& set)
   {
-    const size_t nCorners = this->Mesh.FacePoints.size();
-    tangents.resize(nCorners);
+    const size_t nCorners = static_cast<size_t>(this->Mesh.NumberOfCorners);
     set.assign(nCorners, 0);
-    this->Tangents = tangents.data();
+    this->Tangents = tangents;
     this->Set = set.data();
     this->MarkDegenerates();
     this->InitTriangles();
@@ -434,16 +539,24 @@ private:
   // Per good triangle, everything the per-vertex pass reads, together in memory.
   struct GoodTriangle
   {
-    std::array<vtkIdType, 3> W;      // welded vertex of each corner
-    std::array<vtkIdType, 3> Corner; // face corner of each corner
-    V3 Os, Ot;                       // directions of dP/ds and dP/dt
+    V3 Os, Ot; // directions of dP/ds and dP/dt
     vtkIdType Face;
     int Flag;
+    std::array<unsigned char, 3> Vert; // corner numbers within the face
   };
-  std::vector<GoodTriangle> Tris;
-  std::vector<vtkIdType> VertexTriOffsets, VertexTris; // vertex -> good triangles
-  std::array<float, 4>* Tangents = nullptr;            // per face corner
-  char* Set = nullptr;                                 // per face corner: Tangents[c] is set
+
+  vtkIdType FaceCorner(const GoodTriangle& tri, int k) const
+  {
+    return this->Mesh.Offsets[tri.Face] + tri.Vert[k];
+  }
+  RawVector<GoodTriangle> Tris;
+  // Welded vertex of each corner of each good triangle; apart from Tris because the
+  // adjacency passes read only these.
+  RawVector<std::array<vtkIdType, 3>> W;
+  std::vector<vtkIdType> VertexTriOffsets; // vertex -> good triangles
+  RawVector<vtkIdType> VertexTris;
+  std::array<float, 4>* Tangents = nullptr; // per face corner
+  char* Set = nullptr;                      // per face corner: Tangents[c] is set
 
   void MarkDegenerates()
   {
@@ -502,6 +615,7 @@ private:
     const MikkMesh& m = this->Mesh;
     const vtkIdType n = this->NumberOfGood;
     this->Tris.resize(n);
+    this->W.resize(n);
     vtkSMPTools::For(0, n,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -512,17 +626,17 @@ private:
           tri.Face = m.TriFace[t];
           for (int k = 0; k < 3; ++k)
           {
-            tri.W[k] = m.CornerVertex(t, k);
-            tri.Corner[k] = m.FaceCorner(t, k);
+            this->W[g][k] = m.CornerVertex(t, k);
+            tri.Vert[k] = m.TriVert[t][k];
           }
           tri.Os = V3{ 0.0, 0.0, 0.0 };
           tri.Ot = V3{ 0.0, 0.0, 0.0 };
-          const V3& v1 = m.P[this->Tris[g].W[0]];
-          const V3& v2 = m.P[this->Tris[g].W[1]];
-          const V3& v3 = m.P[this->Tris[g].W[2]];
-          const auto& t1 = m.T[this->Tris[g].W[0]];
-          const auto& t2 = m.T[this->Tris[g].W[1]];
-          const auto& t3 = m.T[this->Tris[g].W[2]];
+          const V3& v1 = m.P[this->W[g][0]];
+          const V3& v2 = m.P[this->W[g][1]];
+          const V3& v3 = m.P[this->W[g][2]];
+          const auto& t1 = m.T[this->W[g][0]];
+          const auto& t2 = m.T[this->W[g][1]];
+          const auto& t3 = m.T[this->W[g][2]];
           const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
           const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
           const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
@@ -601,9 +715,9 @@ private:
   {
     const vtkIdType nv = this->Mesh.NumberOfPoints;
     this->VertexTriOffsets.assign(nv + 1, 0);
-    for (const auto& tri : this->Tris)
+    for (const auto& w : this->W)
     {
-      for (vtkIdType v : tri.W)
+      for (vtkIdType v : w)
       {
         ++this->VertexTriOffsets[v + 1];
       }
@@ -616,7 +730,7 @@ private:
     std::vector<vtkIdType> fill(this->VertexTriOffsets.begin(), this->VertexTriOffsets.end() - 1);
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
     {
-      for (vtkIdType v : this->Tris[g].W)
+      for (vtkIdType v : this->W[g])
       {
         this->VertexTris[fill[v]++] = g;
       }
@@ -654,7 +768,7 @@ private:
     fan.In.assign(k, -1);
     for (size_t a = 0; a < k; ++a)
     {
-      const auto& w = this->Tris[fan.Tri[a]].W;
+      const auto& w = this->W[fan.Tri[a]];
       const int i = CornerOf(w, v);
       fan.Corner[a] = i;
       fan.Next[a] = w[i < 2 ? i + 1 : 0];
@@ -738,7 +852,7 @@ private:
       if (this->Tris[g].Flag & GroupWithAny)
       {
         any = true;
-        for (vtkIdType v : this->Tris[g].W)
+        for (vtkIdType v : this->W[g])
         {
           anyVertex[v] = 1;
         }
@@ -757,7 +871,7 @@ private:
     {
       for (int i = 0; i < 3; ++i)
       {
-        const vtkIdType v = this->Tris[g].W[i];
+        const vtkIdType v = this->W[g][i];
         if (!anyVertex[v] || (this->Tris[g].Flag & GroupWithAny) || assigned[3 * g + i])
         {
           continue;
@@ -853,7 +967,7 @@ private:
         Fan fan;
         std::vector<int> comp, members, subset, byComponent;
         std::vector<size_t> bucket;
-        std::vector<V3> os, ot;
+        std::vector<V3> os, ot, edgeNext;
         std::vector<double> angle;
         std::vector<char> contributes;
         std::vector<vtkIdType> face;
@@ -871,6 +985,7 @@ private:
           const V3& pv = m.P[v];
           os.resize(k);
           ot.resize(k);
+          edgeNext.resize(k);
           angle.resize(k);
           contributes.resize(k);
           face.resize(k);
@@ -883,9 +998,20 @@ private:
             contributes[a] = (this->Tris[t].Flag & GroupWithAny) == 0;
             if (contributes[a])
             {
-              const V3 e1 = ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
-              const V3 e2 = ProjectNormalize(Sub(m.P[fan.Next[a]], pv), n);
-              const double c = std::acos(std::min(1.0, std::max(-1.0, Dot(e1, e2))));
+              edgeNext[a] = ProjectNormalize(Sub(m.P[fan.Next[a]], pv), n);
+            }
+          }
+          // Linked neighbours share an edge at v (Prev[a] is Next[In[a]]): each projected
+          // edge is computed once.
+          for (size_t a = 0; a < k; ++a)
+          {
+            if (contributes[a])
+            {
+              const int b = fan.In[a];
+              const V3 e1 = b >= 0 && contributes[b]
+                ? edgeNext[b]
+                : ProjectNormalize(Sub(m.P[fan.Prev[a]], pv), n);
+              const double c = std::acos(std::min(1.0, std::max(-1.0, Dot(e1, edgeNext[a]))));
               angle[a] = std::isfinite(c) ? c : 0.0;
             }
           }
@@ -990,7 +1116,7 @@ private:
                 }
                 result = Average(subset, os, angle, contributes);
               }
-              const vtkIdType c = this->Tris[fan.Tri[f]].Corner[fan.Corner[f]];
+              const vtkIdType c = this->FaceCorner(this->Tris[fan.Tri[f]], fan.Corner[f]);
               auto same = written.end();
               if (k <= SmallFan)
               {
@@ -1055,10 +1181,13 @@ private:
           continue;
         }
         const vtkIdType g = this->VertexTris[this->VertexTriOffsets[v]];
-        const vtkIdType src = this->Tris[g].Corner[CornerOf(this->Tris[g].W, v)];
+        const vtkIdType src = this->FaceCorner(this->Tris[g], CornerOf(this->W[g], v));
         const vtkIdType dst = m.FaceCorner(t, k);
-        this->Tangents[dst] = this->Tangents[src];
-        this->Set[dst] = this->Set[src];
+        if (this->Set[src])
+        {
+          this->Tangents[dst] = this->Tangents[src];
+          this->Set[dst] = 1;
+        }
       }
     }
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
@@ -1071,15 +1200,19 @@ private:
       const auto& vn = m.TriVert[t];
       const int used = (1 << vn[0]) | (1 << vn[1]) | (1 << vn[2]);
       const int missing = !(used & 2) ? 1 : (!(used & 4) ? 2 : (!(used & 8) ? 3 : 0));
-      const vtkIdType base = m.FaceOffsets[m.TriFace[t]];
-      const V3& target = m.P[m.FacePoints[base + missing]];
+      const vtkIdType base = m.Offsets[m.TriFace[t]];
+      const V3& target = m.P[m.Points[base + missing]];
       for (int k = 0; k < 3; ++k)
       {
         const vtkIdType src = base + vn[k];
-        if (Equal(m.P[m.FacePoints[src]], target))
+        if (Equal(m.P[m.Points[src]], target))
         {
+          if (!this->Set[src])
+          {
+            break; // the corner keeps the default space, as its source does
+          }
           const auto& f = this->Tangents[src];
-          FinalTangent(m.N[m.FacePoints[base + missing]],
+          FinalTangent(m.N[m.Points[base + missing]],
             TSpace{ V3{ f[0], f[1], f[2] }, f[3] > 0.0f, 0 },
             this->Tangents[base + missing].data());
           this->Set[base + missing] = this->Set[src];
@@ -1189,13 +1322,14 @@ int vtkMikkTSpaceTangents::RequestData(
   BuildTriangles(mesh);
   this->UpdateProgress(0.2);
 
-  const vtkIdType nFaces = static_cast<vtkIdType>(mesh.FaceCell.size());
-  const vtkIdType nCorners = static_cast<vtkIdType>(mesh.FacePoints.size());
-  std::vector<std::array<float, 4>> cornerTangents;
+  const vtkIdType nFaces = mesh.NumberOfFaces;
+  const vtkIdType nCorners = mesh.NumberOfCorners;
+  // Not zero-filled: 16 bytes per corner that the per-vertex pass writes anyway.
+  std::unique_ptr<std::array<float, 4>[]> cornerTangents(new std::array<float, 4>[nCorners]);
   std::vector<char> cornerSet;
   {
     MikkTSpace mikk(mesh, this->AngularThreshold);
-    mikk.Run(cornerTangents, cornerSet);
+    mikk.Run(cornerTangents.get(), cornerSet);
   }
   this->UpdateProgress(0.7);
 
@@ -1211,43 +1345,67 @@ int vtkMikkTSpaceTangents::RequestData(
         {
           continue;
         }
-        for (vtkIdType c = mesh.FaceOffsets[f]; c < mesh.FaceOffsets[f + 1]; ++c)
+        for (vtkIdType c = mesh.Offsets[f]; c < mesh.Offsets[f + 1]; ++c)
         {
           if (!cornerSet[c])
           {
-            FinalTangent(mesh.N[mesh.FacePoints[c]], TSpace(), cornerTangents[c].data());
+            FinalTangent(mesh.N[mesh.Points[c]], TSpace(), cornerTangents[c].data());
           }
           cornerUsed[c] = 1;
         }
       }
     });
 
-  // Point -> its corners, in corner order; a point keeps its first frame, every other
-  // distinct frame at it becomes a new point.
-  std::vector<vtkIdType> pointCornerOffsets(nPts + 1, 0);
+  // A point keeps the frame of its first corner, every other distinct frame at it becomes
+  // a new point. Usually there is none (no mirrored shell or hard seam on shared points):
+  // then the per-point corner lists below are not needed.
+  std::vector<vtkIdType> firstCorner(nPts, -1);
   for (vtkIdType c = 0; c < nCorners; ++c)
   {
-    pointCornerOffsets[mesh.FacePoints[c] + 1] += cornerUsed[c];
+    if (cornerUsed[c] && firstCorner[mesh.Points[c]] < 0)
+    {
+      firstCorner[mesh.Points[c]] = c;
+    }
   }
-  for (vtkIdType p = 0; p < nPts; ++p)
+  std::atomic<bool> splits(false);
+  vtkSMPTools::For(0, nCorners,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        if (cornerUsed[c] &&
+          std::memcmp(cornerTangents[c].data(), cornerTangents[firstCorner[mesh.Points[c]]].data(),
+            4 * sizeof(float)) != 0)
+        {
+          splits.store(true, std::memory_order_relaxed);
+          return;
+        }
+      }
+    });
+
+  // Point -> its corners, in corner order.
+  std::vector<vtkIdType> pointCornerOffsets, pointCorners;
+  if (splits)
   {
-    pointCornerOffsets[p + 1] += pointCornerOffsets[p];
-  }
-  std::vector<vtkIdType> pointCorners(pointCornerOffsets[nPts]);
-  {
+    pointCornerOffsets.assign(nPts + 1, 0);
+    for (vtkIdType c = 0; c < nCorners; ++c)
+    {
+      pointCornerOffsets[mesh.Points[c] + 1] += cornerUsed[c];
+    }
+    for (vtkIdType p = 0; p < nPts; ++p)
+    {
+      pointCornerOffsets[p + 1] += pointCornerOffsets[p];
+    }
+    pointCorners.resize(pointCornerOffsets[nPts]);
     std::vector<vtkIdType> fill(pointCornerOffsets.begin(), pointCornerOffsets.end() - 1);
     for (vtkIdType c = 0; c < nCorners; ++c)
     {
       if (cornerUsed[c])
       {
-        pointCorners[fill[mesh.FacePoints[c]]++] = c;
+        pointCorners[fill[mesh.Points[c]]++] = c;
       }
     }
   }
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(nCorners);
-  vtkIdType* cornerPoint = connectivity->GetPointer(0);
-  std::copy(mesh.FacePoints.begin(), mesh.FacePoints.end(), cornerPoint);
   std::vector<vtkIdType> extraCount(nPts + 1, 0);
   // The distinct frames at point p in order of first appearance: ranks[k] is the frame
   // number of p's k-th corner, firsts[d] the first corner with frame d.
@@ -1316,22 +1474,35 @@ int vtkMikkTSpaceTangents::RequestData(
       ranks[k] = rankOf[ranks[k]];
     }
   };
-  vtkSMPTools::For(0, nPts,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      std::vector<vtkIdType> ranks, firsts, order, groups;
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        rankFrames(p, ranks, firsts, order, groups);
-        extraCount[p + 1] = firsts.empty() ? 0 : static_cast<vtkIdType>(firsts.size()) - 1;
-      }
-    });
-  for (vtkIdType p = 0; p < nPts; ++p)
+  if (splits)
   {
-    extraCount[p + 1] += extraCount[p];
+    vtkSMPTools::For(0, nPts,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<vtkIdType> ranks, firsts, order, groups;
+        for (vtkIdType p = begin; p < end; ++p)
+        {
+          rankFrames(p, ranks, firsts, order, groups);
+          extraCount[p + 1] = firsts.empty() ? 0 : static_cast<vtkIdType>(firsts.size()) - 1;
+        }
+      });
+    for (vtkIdType p = 0; p < nPts; ++p)
+    {
+      extraCount[p + 1] += extraCount[p];
+    }
   }
   const vtkIdType nExtra = extraCount[nPts];
   const vtkIdType nOutPts = nPts + nExtra;
+  // Without split points the input's polygons go out as they are (shared, not copied).
+  vtkSmartPointer<vtkIdTypeArray> connectivity;
+  vtkIdType* cornerPoint = nullptr;
+  if (nExtra > 0 || !mesh.InputFaces)
+  {
+    connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    connectivity->SetNumberOfValues(nCorners);
+    cornerPoint = connectivity->GetPointer(0);
+    std::copy(mesh.Points, mesh.Points + nCorners, cornerPoint);
+  }
   vtkNew<vtkFloatArray> tangents;
   tangents->SetName("Tangents");
   tangents->SetNumberOfComponents(4);
@@ -1344,7 +1515,19 @@ int vtkMikkTSpaceTangents::RequestData(
       std::vector<vtkIdType> ranks, firsts, order, groups;
       for (vtkIdType p = begin; p < end; ++p)
       {
-        rankFrames(p, ranks, firsts, order, groups);
+        if (nExtra == 0)
+        {
+          // One frame per point: its first corner's, no ranking needed.
+          firsts.clear();
+          if (firstCorner[p] >= 0)
+          {
+            firsts.push_back(firstCorner[p]);
+          }
+        }
+        else
+        {
+          rankFrames(p, ranks, firsts, order, groups);
+        }
         if (firsts.empty())
         {
           // Not on any polygon: any frame orthogonal to the normal.
@@ -1360,6 +1543,10 @@ int vtkMikkTSpaceTangents::RequestData(
           {
             extraSource[id - nPts] = p;
           }
+        }
+        if (nExtra == 0)
+        {
+          continue; // every corner keeps its point
         }
         const vtkIdType off = pointCornerOffsets[p];
         for (size_t k = 0; k < ranks.size(); ++k)
@@ -1405,12 +1592,19 @@ int vtkMikkTSpaceTangents::RequestData(
   // Cells: vertices and lines as they are; polygons renumbered; strips as triangles.
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(nFaces + 1);
-  std::copy(mesh.FaceOffsets.begin(), mesh.FaceOffsets.end(), offsets->GetPointer(0));
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPolys(polys);
+  if (cornerPoint)
+  {
+    vtkNew<vtkIdTypeArray> offsets;
+    offsets->SetNumberOfValues(nFaces + 1);
+    std::copy(mesh.Offsets, mesh.Offsets + nFaces + 1, offsets->GetPointer(0));
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(offsets, connectivity);
+    output->SetPolys(polys);
+  }
+  else
+  {
+    output->SetPolys(input->GetPolys());
+  }
 
   const vtkIdType nLead = input->GetNumberOfVerts() + input->GetNumberOfLines();
   const bool sameCells = input->GetNumberOfStrips() == 0 && nFaces == input->GetNumberOfPolys();
