@@ -1016,11 +1016,25 @@ private:
               angle[a] = std::isfinite(c) ? c : 0.0;
             }
           }
-          // Components of the link graph between triangles of one orientation.
+          // Components of the link graph between triangles of one orientation. The usual
+          // vertex is one fan of one orientation: a walk along its links from the first
+          // triangle reaches all of them. Links are one-to-one (Out and In are inverse), so
+          // a walk visits distinct triangles until it ends or comes back to its start.
+          auto linked = [&](int a, int b)
+          { return b >= 0 && this->Orient(fan.Tri[a]) == this->Orient(fan.Tri[b]); };
+          size_t reached = 1;
+          for (int a = 0; reached < k && linked(a, fan.Out[a]) && fan.Out[a] != 0; ++reached)
+          {
+            a = fan.Out[a];
+          }
+          for (int a = 0; reached < k && linked(a, fan.In[a]) && fan.In[a] != 0; ++reached)
+          {
+            a = fan.In[a];
+          }
           comp.resize(k);
           for (size_t a = 0; a < k; ++a)
           {
-            comp[a] = static_cast<int>(a);
+            comp[a] = reached == k ? 0 : static_cast<int>(a);
           }
           auto root = [&comp](int a)
           {
@@ -1030,10 +1044,10 @@ private:
             }
             return a;
           };
-          for (size_t a = 0; a < k; ++a)
+          for (size_t a = 0; a < k && reached < k; ++a)
           {
             const int b = fan.Out[a];
-            if (b >= 0 && this->Orient(fan.Tri[a]) == this->Orient(fan.Tri[b]))
+            if (linked(static_cast<int>(a), b))
             {
               const int ra = root(static_cast<int>(a)), rb = root(b);
               comp[std::max(ra, rb)] = std::min(ra, rb);
