@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <numeric>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -1015,11 +1016,25 @@ private:
               angle[a] = std::isfinite(c) ? c : 0.0;
             }
           }
-          // Components of the link graph between triangles of one orientation.
+          // Components of the link graph between triangles of one orientation. The usual
+          // vertex is one fan of one orientation: a walk along its links from the first
+          // triangle reaches all of them. Links are one-to-one (Out and In are inverse), so
+          // a walk visits distinct triangles until it ends or comes back to its start.
+          auto linked = [&](int a, int b)
+          { return b >= 0 && this->Orient(fan.Tri[a]) == this->Orient(fan.Tri[b]); };
+          size_t reached = 1;
+          for (int a = 0; reached < k && linked(a, fan.Out[a]) && fan.Out[a] != 0; ++reached)
+          {
+            a = fan.Out[a];
+          }
+          for (int a = 0; reached < k && linked(a, fan.In[a]) && fan.In[a] != 0; ++reached)
+          {
+            a = fan.In[a];
+          }
           comp.resize(k);
           for (size_t a = 0; a < k; ++a)
           {
-            comp[a] = static_cast<int>(a);
+            comp[a] = reached == k ? 0 : static_cast<int>(a);
           }
           auto root = [&comp](int a)
           {
@@ -1029,10 +1044,10 @@ private:
             }
             return a;
           };
-          for (size_t a = 0; a < k; ++a)
+          for (size_t a = 0; a < k && reached < k; ++a)
           {
             const int b = fan.Out[a];
-            if (b >= 0 && this->Orient(fan.Tri[a]) == this->Orient(fan.Tri[b]))
+            if (linked(static_cast<int>(a), b))
             {
               const int ra = root(static_cast<int>(a)), rb = root(b);
               comp[std::max(ra, rb)] = std::min(ra, rb);
@@ -1041,6 +1056,70 @@ private:
           for (size_t a = 0; a < k; ++a)
           {
             comp[a] = root(static_cast<int>(a));
+          }
+          // The group of the corners in members: its seed is its first triangle with usable
+          // derivatives, if any.
+          auto seedOf = [&]()
+          {
+            for (int a : members)
+            {
+              if (contributes[a])
+              {
+                return a;
+              }
+            }
+            return -1;
+          };
+          auto joins = [&](int f, int a)
+          {
+            return !contributes[f] || !contributes[a] || face[f] == face[a] ||
+              (Dot(os[f], os[a]) > this->ThresholdCos && Dot(ot[f], ot[a]) > this->ThresholdCos);
+          };
+          // The pairwise test is quadratic; above MaxSubGroupTest members (a pole shared
+          // by hundreds of triangles) the group is taken whole. At the default 180 degrees
+          // it only separates exactly opposite directions, which at such a pole are
+          // opposite up to rounding, and the reference's choice there is rounding noise.
+          auto allJoinOf = [&]()
+          {
+            bool allJoin = true;
+            for (size_t x = 0; x < members.size() && members.size() <= MaxSubGroupTest && allJoin;
+                 ++x)
+            {
+              for (size_t y = x + 1; y < members.size() && allJoin; ++y)
+              {
+                allJoin = joins(members[x], members[y]);
+              }
+            }
+            return allJoin;
+          };
+          // The usual vertex: one group, all of whose members join. Every corner then gets
+          // the same space (a quad's shared corner merges two equal ones, which keeps it),
+          // so the final tangent is computed once and the merging is skipped. A NaN in the
+          // average would not merge as equal: that goes the general way.
+          if (std::all_of(comp.begin(), comp.end(), [](int r) { return r == 0; }))
+          {
+            members.resize(k);
+            std::iota(members.begin(), members.end(), 0);
+            const int seed = seedOf();
+            if (seed < 0)
+            {
+              continue;
+            }
+            const V3 all = Average(members, os, angle, contributes);
+            if (Equal(all, all) && allJoinOf())
+            {
+              std::array<float, 4> out;
+              FinalTangent(n,
+                TSpace{ all, this->Orient(fan.Tri[seed]), 3 * fan.Tri[seed] + fan.Corner[seed] },
+                out.data());
+              for (size_t a = 0; a < k; ++a)
+              {
+                const vtkIdType c = this->FaceCorner(this->Tris[fan.Tri[a]], fan.Corner[a]);
+                this->Tangents[c] = out;
+                this->Set[c] = 1;
+              }
+              continue;
+            }
           }
           // Members of each component in triangle order (a counting sort by root, which
           // is the component's first entry).
@@ -1067,39 +1146,14 @@ private:
             // bucket[r] is now the end of r's members; they start where the last root ended
             members.assign(byComponent.begin() + first, byComponent.begin() + bucket[r]);
             first = bucket[r];
-            int seed = -1;
-            for (int a : members)
-            {
-              if (contributes[a])
-              {
-                seed = a;
-                break;
-              }
-            }
+            const int seed = seedOf();
             if (seed < 0)
             {
               continue; // no triangle to seed a group: the reference leaves these corners
             }
             const vtkIdType key = 3 * fan.Tri[seed] + fan.Corner[seed];
             const bool orient = this->Orient(fan.Tri[seed]);
-            auto joins = [&](int f, int a)
-            {
-              return !contributes[f] || !contributes[a] || face[f] == face[a] ||
-                (Dot(os[f], os[a]) > this->ThresholdCos && Dot(ot[f], ot[a]) > this->ThresholdCos);
-            };
-            // The pairwise test is quadratic; above MaxSubGroupTest members (a pole shared
-            // by hundreds of triangles) the group is taken whole. At the default 180 degrees
-            // it only separates exactly opposite directions, which at such a pole are
-            // opposite up to rounding, and the reference's choice there is rounding noise.
-            bool allJoin = true;
-            for (size_t x = 0; x < members.size() && members.size() <= MaxSubGroupTest && allJoin;
-                 ++x)
-            {
-              for (size_t y = x + 1; y < members.size() && allJoin; ++y)
-              {
-                allJoin = joins(members[x], members[y]);
-              }
-            }
+            const bool allJoin = allJoinOf();
             const V3 all = Average(members, os, angle, contributes);
             for (int f : members)
             {
