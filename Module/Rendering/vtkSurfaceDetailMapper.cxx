@@ -695,8 +695,9 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   if (this->ActiveUsesNormalMap)
   {
     program->SetUniformi("sdNormalMap", TextureUnit(this->NormalMap));
-    program->SetUniformf("sdNormalStrength", static_cast<float>(this->NormalStrength));
-    program->SetUniformi("sdGreenUp", this->GreenUp ? 1 : 0);
+    const float strength = static_cast<float>(this->NormalStrength);
+    const float scaleXY[2] = { strength, this->GreenUp ? strength : -strength };
+    program->SetUniform2f("sdNormalScaleXY", scaleXY);
   }
   if (this->ActiveUsesHeightMap)
   {
