@@ -433,6 +433,9 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   }
   this->HeightTexture->SetContext(window);
   this->HeightTexture->SetRequireTextureFloat(true);
+  // The texture object keeps the internal format of its last upload unless told to forget
+  // it, which would read a 3-channel upload as 2 channels after a switch from bump mapping.
+  this->HeightTexture->ResetFormatAndType();
   this->HeightTexture->Create2DFromRaw(w, h, components, VTK_FLOAT, texels.data());
   // vtkTexture and vtkTextureObject number their wrap modes alike.
   this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
