@@ -363,8 +363,13 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   {
     this->HeightTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
+  // Bump mapping reads only the gradient: two channels instead of three is a third less
+  // texture traffic per fragment. Parallax reads the height too (and the gradient when it
+  // lights the relief without a normal map).
+  const int components = this->ActiveTechnique == BumpMapping ? 2 : 3;
   if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp &&
-    this->Differences == this->HeightUploadDifferences)
+    this->Differences == this->HeightUploadDifferences &&
+    components == this->HeightUploadComponents)
   {
     return;
   }
@@ -388,11 +393,11 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
     vtkWarningMacro(<< "The height map has " << nonFinite
                     << " non-finite values (NaN or infinite); they are read as height 0.");
   }
-  // Texel (i,j) holds (h, dh/ds, dh/dt), the derivatives per unit of texture coordinate
-  // by forward or central differences with the texture's own wrap mode. Differences of
-  // linearly interpolated heights taken one texel apart equal the linear interpolation of
-  // these texel differences (both use the same weights), so one lookup gives exactly what
-  // seed 000's three-lookup Cg code computes, at a third of the texture traffic. With
+  // Texel (i,j) holds (h, dh/ds, dh/dt), or (dh/ds, dh/dt) for bump mapping, the derivatives per
+  // unit of texture coordinate by forward or central differences with the texture's own wrap mode.
+  // Differences of linearly interpolated heights taken one texel apart equal the linear
+  // interpolation of these texel differences (both use the same weights), so one lookup gives
+  // exactly what seed 000's three-lookup Cg code computes, at a third of the texture traffic. With
   // ClampToBorder the height outside is the border colour's first component and its
   // differences are 0 (the sampler's border below): the identity holds there as well.
   const int wrap = this->HeightMap->GetWrap();
@@ -411,30 +416,39 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   const bool central = this->Differences == Central;
   const int back = central ? 1 : 0;
   const double span = central ? 2.0 : 1.0;
-  std::vector<float> texels(3 * static_cast<size_t>(w) * h);
+  const int gradient = components - 2; // the channel of dh/ds
+  std::vector<float> texels(components * static_cast<size_t>(w) * h);
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
     {
-      float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
-      texel[0] = static_cast<float>(height(i, j));
-      texel[1] = static_cast<float>((height(i + 1, j) - height(i - back, j)) * w / span);
-      texel[2] = static_cast<float>((height(i, j + 1) - height(i, j - back)) * h / span);
+      float* texel = &texels[components * (static_cast<size_t>(j) * w + i)];
+      if (gradient > 0)
+      {
+        texel[0] = static_cast<float>(height(i, j));
+      }
+      texel[gradient] = static_cast<float>((height(i + 1, j) - height(i - back, j)) * w / span);
+      texel[gradient + 1] = static_cast<float>((height(i, j + 1) - height(i, j - back)) * h / span);
     }
   }
   this->HeightTexture->SetContext(window);
   this->HeightTexture->SetRequireTextureFloat(true);
-  this->HeightTexture->Create2DFromRaw(w, h, 3, VTK_FLOAT, texels.data());
+  // The texture object keeps the internal format of its last upload unless told to forget
+  // it, which would read a 3-channel upload as 2 channels after a switch from bump mapping.
+  this->HeightTexture->ResetFormatAndType();
+  this->HeightTexture->Create2DFromRaw(w, h, components, VTK_FLOAT, texels.data());
   // vtkTexture and vtkTextureObject number their wrap modes alike.
   this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
   this->HeightTexture->SetWrapT(this->HeightMap->GetWrap());
-  this->HeightTexture->SetBorderColor(static_cast<float>(borderHeight), 0.f, 0.f, 0.f);
+  const float borderFirst = components == 3 ? static_cast<float>(borderHeight) : 0.f;
+  this->HeightTexture->SetBorderColor(borderFirst, 0.f, 0.f, 0.f);
   const int filter =
     this->HeightMap->GetInterpolate() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
   this->HeightTexture->SetMinificationFilter(filter);
   this->HeightTexture->SetMagnificationFilter(filter);
   this->HeightUploadStamp = stamp;
   this->HeightUploadDifferences = this->Differences;
+  this->HeightUploadComponents = components;
 }
 
 //------------------------------------------------------------------------------
@@ -573,6 +587,9 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   }
   if (this->ActiveUsesHeightMap)
   {
+    // Where UploadHeightMap put the gradient (dh/ds, dh/dt).
+    fsDec += this->ActiveTechnique == BumpMapping ? "#define SD_GRADIENT rg\n"
+                                                  : "#define SD_GRADIENT gb\n";
     fsDec += vtkSurfaceDetailBumpFS;
   }
   if (this->ActiveTechnique == ParallaxMapping)
@@ -695,8 +712,9 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   if (this->ActiveUsesNormalMap)
   {
     program->SetUniformi("sdNormalMap", TextureUnit(this->NormalMap));
-    program->SetUniformf("sdNormalStrength", static_cast<float>(this->NormalStrength));
-    program->SetUniformi("sdGreenUp", this->GreenUp ? 1 : 0);
+    const float strength = static_cast<float>(this->NormalStrength);
+    const float scaleXY[2] = { strength, this->GreenUp ? strength : -strength };
+    program->SetUniform2f("sdNormalScaleXY", scaleXY);
   }
   if (this->ActiveUsesHeightMap)
   {

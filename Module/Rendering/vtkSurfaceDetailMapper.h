@@ -252,6 +252,7 @@ private:
   vtkSmartPointer<vtkTextureObject> HeightTexture;
   vtkMTimeType HeightUploadStamp = 0;
   int HeightUploadDifferences = Forward;
+  int HeightUploadComponents = 0;
   // When a uniform-only setting last changed; GetMTime leaves it out while the superclass
   // decides whether to rebuild (IgnoreUniformTime).
   vtkTimeStamp UniformTime;

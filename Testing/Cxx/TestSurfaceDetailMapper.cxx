@@ -1029,6 +1029,36 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   EXPECT_EQ(mapper->VBOTime(), vboParallax) << "SetDepthScale or SetGreenUp re-uploaded buffers";
 }
 
+// Bump mapping gets a gradient-only height texture, parallax (lit here by the gradient, no
+// normal map) the height and the gradient: switching technique must re-upload the layout
+// the new shader reads. The truth is a fresh mapper rendering each technique from scratch.
+TEST(vtkSurfaceDetailMapper, TechniqueSwitchReuploadsHeightLayout)
+{
+  auto fresh = [](int technique)
+  {
+    auto mapper = MakeMapper(MakeRectangle(false));
+    mapper->SetHeightMap(MakeHeightMap());
+    mapper->SetTechnique(technique);
+    Scene scene(mapper);
+    scene.Actor->RotateX(-40);
+    return scene.Render();
+  };
+  const auto bump = fresh(vtkSurfaceDetailMapper::BumpMapping);
+  const auto parallax = fresh(vtkSurfaceDetailMapper::ParallaxMapping);
+  ASSERT_NE(bump, parallax) << "the two techniques must draw different pictures to tell apart";
+
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->SetTechniqueToBumpMapping();
+  Scene scene(mapper);
+  scene.Actor->RotateX(-40);
+  EXPECT_EQ(scene.Render(), bump);
+  mapper->SetTechniqueToParallaxMapping();
+  EXPECT_EQ(scene.Render(), parallax) << "bump -> parallax kept the gradient-only texture";
+  mapper->SetTechniqueToBumpMapping();
+  EXPECT_EQ(scene.Render(), bump) << "parallax -> bump kept the (h, dh/ds, dh/dt) texture";
+}
+
 // A 64x64 height source of constant Value that counts the pipeline requests it receives.
 class CountingHeightSource : public vtkImageAlgorithm
 {

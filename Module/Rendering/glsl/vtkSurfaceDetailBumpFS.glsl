@@ -1,5 +1,6 @@
 // Bump mapping (Blinn 1978) from a height map h(s,t). sdHeightMap holds (h, dh/ds, dh/dt)
-// per texel, the derivatives by forward (seed 000's Cg code) or central differences at the
+// per texel, or only (dh/ds, dh/dt) for bump mapping, which needs no height (SD_GRADIENT,
+// defined by the mapper, names the two channels), the derivatives by forward (seed 000's Cg code) or central differences at the
 // height map's own texel size 1/w, 1/h, made on upload (vtkSurfaceDetailMapper.cxx,
 // UploadHeightMap): interpolating those differences gives exactly the difference of
 // interpolated heights one texel apart, in one lookup instead of three. The gradient of
@@ -10,7 +11,7 @@ uniform float sdBumpScale;
 
 vec2 sdHeightGradient(vec2 tc)
 {
-  return sdBumpScale * texture(sdHeightMap, tc).gb;
+  return sdBumpScale * texture(sdHeightMap, tc).SD_GRADIENT;
 }
 
 vec3 sdBumpTS(vec2 tc)

@@ -1,13 +1,15 @@
-// Normal mapping: the tangent-space normal from the normal map, decoded by sdDecodeNormal
-// (vtkSurfaceDetailNormalCoding.glsl, the twin of the conventions header), green up unless
-// sdGreenUp is 0; the strength scales the tangential part, as vtkProperty's NormalScale
-// does. The result is left unnormalised: sdTangentToView normalises once, at the end.
+// Normal mapping: the tangent-space normal from the normal map, decoded as sdDecodeNormal
+// (vtkSurfaceDetailNormalCoding.glsl, the twin of the conventions header) does, the
+// strength scaling the tangential part as vtkProperty's NormalScale does. sdNormalScaleXY
+// is (strength, +-strength): its sign on y is the green-up convention (- for DirectX maps),
+// so that no branch is taken per fragment. The decoded colour is not renormalised here:
+// its length scales all three components alike and sdTangentToView normalises the
+// combination, so doing it twice would change nothing but the frame time.
 uniform sampler2D sdNormalMap;
-uniform float sdNormalStrength;
-uniform int sdGreenUp;
+uniform vec2 sdNormalScaleXY;
 
 vec3 sdNormalMapTS(vec2 tc)
 {
-  vec3 n = sdDecodeNormal(texture(sdNormalMap, tc).rgb, sdGreenUp != 0);
-  return vec3(sdNormalStrength * n.xy, n.z);
+  vec3 n = 2.0 * texture(sdNormalMap, tc).rgb - 1.0;
+  return vec3(sdNormalScaleXY * n.xy, n.z);
 }
