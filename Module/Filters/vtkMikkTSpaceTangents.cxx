@@ -29,13 +29,19 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <numeric>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
 
@@ -112,6 +118,8 @@ inline std::uint64_t HashDouble(std::uint64_t h, double v)
   return h;
 }
 
+constexpr std::size_t HugePage = std::size_t(2) << 20;
+
 // An allocator whose resize() leaves new elements default-initialised: the big per-point
 // and per-triangle arrays are written entirely by a parallel pass right after, and
 // zero-filling them first is a serial pass over up to ~100 MB.
@@ -127,6 +135,38 @@ struct NoInitAllocator : std::allocator<T>
   template <typename U>
   NoInitAllocator(const NoInitAllocator<U>&) noexcept
   {
+  }
+  // Big arrays are asked for in transparent huge pages where the system has them: first
+  // touch then faults once per 2 MB instead of once per 4 kB (the faults were a sixth of
+  // the filter's time on a 1M-triangle mesh).
+  T* allocate(std::size_t n)
+  {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes >= HugePage)
+    {
+      const std::size_t rounded = (bytes + HugePage - 1) / HugePage * HugePage;
+      void* p = std::aligned_alloc(HugePage, rounded);
+      if (!p)
+      {
+        throw std::bad_alloc();
+      }
+      madvise(p, rounded, MADV_HUGEPAGE);
+      return static_cast<T*>(p);
+    }
+#endif
+    return std::allocator<T>::allocate(n);
+  }
+  void deallocate(T* p, std::size_t n)
+  {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (n * sizeof(T) >= HugePage)
+    {
+      std::free(p);
+      return;
+    }
+#endif
+    std::allocator<T>::deallocate(p, n);
   }
   template <typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
@@ -714,28 +754,32 @@ private:
   // Vertex -> good triangles, each list in increasing triangle order.
   void BuildVertexTriangles()
   {
+    // Counts shifted by two places: after the prefix sum, entry v+1 is where v's list
+    // starts, and filling advances it to where v's list ends, which is the offset of v+1.
+    // No separate fill cursors.
     const vtkIdType nv = this->Mesh.NumberOfPoints;
-    this->VertexTriOffsets.assign(nv + 1, 0);
+    auto& offsets = this->VertexTriOffsets;
+    offsets.assign(nv + 2, 0);
     for (const auto& w : this->W)
     {
       for (vtkIdType v : w)
       {
-        ++this->VertexTriOffsets[v + 1];
+        ++offsets[v + 2];
       }
     }
     for (vtkIdType v = 0; v < nv; ++v)
     {
-      this->VertexTriOffsets[v + 1] += this->VertexTriOffsets[v];
+      offsets[v + 2] += offsets[v + 1];
     }
-    this->VertexTris.resize(this->VertexTriOffsets[nv]);
-    std::vector<vtkIdType> fill(this->VertexTriOffsets.begin(), this->VertexTriOffsets.end() - 1);
+    this->VertexTris.resize(offsets[nv + 1]);
     for (vtkIdType g = 0; g < this->NumberOfGood; ++g)
     {
       for (vtkIdType v : this->W[g])
       {
-        this->VertexTris[fill[v]++] = g;
+        this->VertexTris[offsets[v + 1]++] = g;
       }
     }
+    offsets.pop_back();
   }
 
   static int CornerOf(const std::array<vtkIdType, 3>& w, vtkIdType v)
