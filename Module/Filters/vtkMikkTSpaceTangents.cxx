@@ -1423,11 +1423,11 @@ int vtkMikkTSpaceTangents::RequestData(
   const vtkIdType nFaces = mesh.NumberOfFaces;
   const vtkIdType nCorners = mesh.NumberOfCorners;
   // Not zero-filled: 16 bytes per corner that the per-vertex pass writes anyway.
-  std::unique_ptr<std::array<float, 4>[]> cornerTangents(new std::array<float, 4>[nCorners]);
+  RawVector<std::array<float, 4>> cornerTangents(static_cast<size_t>(nCorners));
   std::vector<char> cornerSet;
   {
     MikkTSpace mikk(mesh, this->AngularThreshold);
-    mikk.Run(cornerTangents.get(), cornerSet);
+    mikk.Run(cornerTangents.data(), cornerSet);
   }
   this->UpdateProgress(0.7);
 
