@@ -452,6 +452,8 @@ struct Context
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
+  // Exact mode: the input normals normalised once (each is a neighbour of a dozen fits).
+  const double* UnitNormals = nullptr;
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -567,10 +569,12 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
     neighbours[b] = x;
   }
 
-  double pi[3], ni[3];
+  double pi[3], ni[3] = { 0.0, 0.0, 0.0 };
   c.Points->Get3(i, pi);
-  c.Normals->Get3(i, ni);
-  FastNormalize(ni);
+  if (wantN)
+  {
+    std::copy_n(c.UnitNormals + 3 * i, 3, ni);
+  }
   Fit fp, fn;
   double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
   for (int k = 0; k < count;)
@@ -597,8 +601,7 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
     }
     if (wantN)
     {
-      c.Normals->Get3(j, v);
-      FastNormalize(v);
+      std::copy_n(c.UnitNormals + 3 * j, 3, v);
       v[0] -= ni[0];
       v[1] -= ni[1];
       v[2] -= ni[2];
@@ -838,11 +841,12 @@ struct MeshPointNormalWorker
 // Seam candidates: a texture seam cuts the mesh, so its duplicated points lie on the
 // mesh's boundary. One flat sweep over the polygons' directed edges, no links and no
 // per-point sort: each edge a->b adds a hash of b to a's sum and subtracts a hash of a from
-// b's (so each corner adds the hash of its next point minus that of its previous one). Where every edge around a point is shared by two consistently oriented polygons
-// (an interior point), the sums cancel exactly; a boundary edge leaves a non-zero sum
-// (unless 64-bit hashes cancel by chance). Inconsistent orientation or non-manifold edges
-// only add candidates, which the position test then discards. Points without polygons are
-// candidates too. Serial, and integer sums commute: the flags never depend on threads.
+// b's (so each corner adds the hash of its next point minus that of its previous one). Where every
+// edge around a point is shared by two consistently oriented polygons (an interior point), the sums
+// cancel exactly; a boundary edge leaves a non-zero sum (unless 64-bit hashes cancel by chance).
+// Inconsistent orientation or non-manifold edges only add candidates, which the position test then
+// discards. Points without polygons are candidates too. Serial, and integer sums commute: the flags
+// never depend on threads.
 std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
 {
   // splitmix64's finaliser: neighbouring ids get unrelated hashes.
@@ -1270,6 +1274,22 @@ int vtkDisplacementMapFilter::RequestData(
     {
       mesh.Build(input->GetPolys(), numPts, needLinks);
       ctx.Polys = &mesh;
+    }
+    std::vector<double> unitNormals;
+    if (this->NormalMode == Exact)
+    {
+      unitNormals.resize(3 * static_cast<size_t>(numPts));
+      vtkSMPTools::For(0, numPts, Grain,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            double* n = unitNormals.data() + 3 * i;
+            nrm.Get3(i, n);
+            FastNormalize(n);
+          }
+        });
+      ctx.UnitNormals = unitNormals.data();
     }
     if (useDerivs)
     {
