@@ -501,25 +501,23 @@ inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 template <typename R>
 inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
 {
-  // Constant indices only: the compiler then keeps the tangent in registers, rather than on
-  // the stack where the pairwise loads of the conversion to R wait for the scalar stores.
-  const bool handedness = c.OutTangents->NC > 3;
-  double tg[4] = { c.Tangents->Get(i, 0), c.Tangents->Get(i, 1), c.Tangents->Get(i, 2),
-    handedness ? c.Tangents->Get(i, 3) : 1.0 };
+  const int tnc = c.OutTangents->NC;
+  double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
+  for (int k = 0; k < tnc; ++k)
+  {
+    tg[k] = c.Tangents->Get(i, k);
+  }
   RemoveNormalPart(m, tg);
   if (FastNormalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
   {
     const double zero[3] = { 0.0, 0.0, 0.0 };
-    double frame[4];
-    MakeTangentFrame(m, zero, zero, frame);
-    std::copy(frame, frame + 3, tg);
+    const double w = tg[3];
+    MakeTangentFrame(m, zero, zero, tg);
+    tg[3] = w;
   }
-  c.OutTangents->Set(i, 0, tg[0]);
-  c.OutTangents->Set(i, 1, tg[1]);
-  c.OutTangents->Set(i, 2, tg[2]);
-  if (handedness)
+  for (int k = 0; k < tnc; ++k)
   {
-    c.OutTangents->Set(i, 3, tg[3]);
+    c.OutTangents->Set(i, k, tg[k]);
   }
 }
 
