@@ -198,15 +198,17 @@ inline void CatmullRom(double f, double w[4], double dw[4])
   dw[3] = 0.5 * (3.0 * f2 - 2.0 * f);
 }
 
-// Height h(s,t) of the interpolant and its derivatives with respect to s and t.
-template <typename T>
+// Height h(s,t) of the interpolant and its derivatives with respect to s and t. The
+// interpolation is a template parameter: each kind then compiles small enough to be inlined
+// into the per-point loop, with no per-point test of the kind.
+template <int Interp, typename T>
 void SampleHeight(
-  const Texels<T>& tex, int wrap, int interp, double s, double t, double& h, double& hs, double& ht)
+  const Texels<T>& tex, int wrap, double s, double t, double& h, double& hs, double& ht)
 {
   s = TameCoordinate(s, wrap);
   t = TameCoordinate(t, wrap);
   const int W = tex.W, H = tex.H;
-  if (interp == vtkDisplacementMapFilter::Nearest)
+  if constexpr (Interp == vtkDisplacementMapFilter::Nearest)
   {
     const double x = std::floor(s * W), y = std::floor(t * H);
     const int i = std::isfinite(x) ? static_cast<int>(x) : 0;
@@ -221,7 +223,7 @@ void SampleHeight(
   LinearTexels(s, W, i0, fx);
   LinearTexels(t, H, j0, fy);
   const vtkIdType rowStride = static_cast<vtkIdType>(W) * tex.NC;
-  if (interp == vtkDisplacementMapFilter::Linear)
+  if constexpr (Interp == vtkDisplacementMapFilter::Linear)
   {
     const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
     const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
@@ -450,6 +452,8 @@ struct Context
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
+  // Exact mode: the input normals normalised once (each is a neighbour of a dozen fits).
+  const double* UnitNormals = nullptr;
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -563,10 +567,12 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
     neighbours[b] = x;
   }
 
-  double pi[3], ni[3];
+  double pi[3], ni[3] = { 0.0, 0.0, 0.0 };
   c.Points->Get3(i, pi);
-  c.Normals->Get3(i, ni);
-  FastNormalize(ni);
+  if (wantN)
+  {
+    std::copy_n(c.UnitNormals + 3 * i, 3, ni);
+  }
   Fit fp, fn;
   double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
   for (int k = 0; k < count;)
@@ -593,8 +599,7 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
     }
     if (wantN)
     {
-      c.Normals->Get3(j, v);
-      FastNormalize(v);
+      std::copy_n(c.UnitNormals + 3 * j, 3, v);
       v[0] -= ni[0];
       v[1] -= ni[1];
       v[2] -= ni[2];
@@ -613,17 +618,17 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
 
 // The displacement d at point @a i, with the height h and its derivatives in (s,t); one
 // function so that the seam pass sees the very values of pass 1.
-template <typename T, typename R>
+template <int Interp, typename T, typename R>
 inline double Displacement(
   const Context<R>& c, const Texels<T>& tex, vtkIdType i, double& h, double& hs, double& ht)
 {
-  SampleHeight(tex, c.Wrap, c.Interpolation, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h, hs, ht);
+  SampleHeight<Interp>(tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h, hs, ht);
   // An absurd Scale may overflow: keep every quantity finite so that no NaN comes out.
   return Finite(c.Scale * (h - c.Midlevel));
 }
 
 // Pass 1: displacement, and the analytic normals (Approximate, Exact).
-template <typename T, typename R>
+template <int Interp, typename T, typename R>
 struct DisplaceWorker
 {
   const Context<R>& C;
@@ -673,7 +678,7 @@ struct DisplaceWorker
     InputNormal(c, i, n);
     const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
     double h, hs, ht;
-    const double d = Displacement(c, this->Tex, i, h, hs, ht);
+    const double d = Displacement<Interp>(c, this->Tex, i, h, hs, ht);
     const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
     const double offset[3] = { d * n[0], d * n[1], d * n[2] };
     WritePoint(c, i, offset);
@@ -834,11 +839,12 @@ struct MeshPointNormalWorker
 // Seam candidates: a texture seam cuts the mesh, so its duplicated points lie on the
 // mesh's boundary. One flat sweep over the polygons' directed edges, no links and no
 // per-point sort: each edge a->b adds a hash of b to a's sum and subtracts a hash of a from
-// b's. Where every edge around a point is shared by two consistently oriented polygons
-// (an interior point), the sums cancel exactly; a boundary edge leaves a non-zero sum
-// (unless 64-bit hashes cancel by chance). Inconsistent orientation or non-manifold edges
-// only add candidates, which the position test then discards. Points without polygons are
-// candidates too. Serial, and integer sums commute: the flags never depend on threads.
+// b's (so each corner adds the hash of its next point minus that of its previous one). Where every
+// edge around a point is shared by two consistently oriented polygons (an interior point), the sums
+// cancel exactly; a boundary edge leaves a non-zero sum (unless 64-bit hashes cancel by chance).
+// Inconsistent orientation or non-manifold edges only add candidates, which the position test then
+// discards. Points without polygons are candidates too. Serial, and integer sums commute: the flags
+// never depend on threads.
 std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
 {
   // splitmix64's finaliser: neighbouring ids get unrelated hashes.
@@ -858,17 +864,19 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
     {
       continue;
     }
-    vtkIdType from = mesh.Conn[e - 1];
-    std::uint64_t fromHash = hash(from);
-    for (vtkIdType k = b; k < e; ++k)
+    // The two edges at a corner (prev->k and k->next) at once: one update per corner, and
+    // no corner's update waits for the previous corner's store.
+    const vtkIdType* corner = mesh.Conn + b;
+    const vtkIdType n = e - b;
+    const std::uint64_t firstHash = hash(corner[0]);
+    std::uint64_t prevHash = hash(corner[n - 1]), hereHash = firstHash;
+    for (vtkIdType k = 0; k < n; ++k)
     {
-      const vtkIdType to = mesh.Conn[k];
-      const std::uint64_t toHash = hash(to);
-      sum[from] += toHash;
-      sum[to] -= fromHash;
-      used[to] = 1;
-      from = to;
-      fromHash = toHash;
+      const std::uint64_t nextHash = k + 1 < n ? hash(corner[k + 1]) : firstHash;
+      sum[corner[k]] += nextHash - prevHash;
+      used[corner[k]] = 1;
+      prevHash = hereHash;
+      hereHash = nextHash;
     }
   }
   std::vector<vtkIdType> candidates;
@@ -1265,6 +1273,22 @@ int vtkDisplacementMapFilter::RequestData(
       mesh.Build(input->GetPolys(), numPts, needLinks);
       ctx.Polys = &mesh;
     }
+    std::vector<double> unitNormals;
+    if (this->NormalMode == Exact)
+    {
+      unitNormals.resize(3 * static_cast<size_t>(numPts));
+      vtkSMPTools::For(0, numPts, Grain,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            double* n = unitNormals.data() + 3 * i;
+            nrm.Get3(i, n);
+            FastNormalize(n);
+          }
+        });
+      ctx.UnitNormals = unitNormals.data();
+    }
     if (useDerivs)
     {
       EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
@@ -1332,32 +1356,48 @@ int vtkDisplacementMapFilter::RequestData(
         nonFinite = this->NonFiniteCount;
         tex.Clean = nonFinite == 0;
       }
-      DisplaceWorker<T, R> worker{ ctx, tex };
-      vtkSMPTools::For(0, numPts, Grain, worker);
-      // One displacement per group: the mean of the members' own.
-      forEachGroup(
-        [&](size_t b, size_t e)
-        {
-          double mean[3] = { 0.0, 0.0, 0.0 };
-          for (size_t g = b; g < e; ++g)
+      auto displace = [&](auto kind)
+      {
+        constexpr int interp = decltype(kind)::value;
+        DisplaceWorker<interp, T, R> worker{ ctx, tex };
+        vtkSMPTools::For(0, numPts, Grain, worker);
+        // One displacement per group: the mean of the members' own.
+        forEachGroup(
+          [&](size_t b, size_t e)
           {
-            double n[3], h, hs, ht;
-            InputNormal(ctx, groups[g].second, n);
-            const double d = Displacement(ctx, tex, groups[g].second, h, hs, ht);
+            double mean[3] = { 0.0, 0.0, 0.0 };
+            for (size_t g = b; g < e; ++g)
+            {
+              double n[3], h, hs, ht;
+              InputNormal(ctx, groups[g].second, n);
+              const double d = Displacement<interp>(ctx, tex, groups[g].second, h, hs, ht);
+              for (int k = 0; k < 3; ++k)
+              {
+                mean[k] += d * n[k];
+              }
+            }
             for (int k = 0; k < 3; ++k)
             {
-              mean[k] += d * n[k];
+              mean[k] /= static_cast<double>(e - b);
             }
-          }
-          for (int k = 0; k < 3; ++k)
-          {
-            mean[k] /= static_cast<double>(e - b);
-          }
-          for (size_t g = b; g < e; ++g)
-          {
-            WritePoint(ctx, groups[g].second, mean);
-          }
-        });
+            for (size_t g = b; g < e; ++g)
+            {
+              WritePoint(ctx, groups[g].second, mean);
+            }
+          });
+      };
+      switch (this->Interpolation)
+      {
+        case Nearest:
+          displace(std::integral_constant<int, Nearest>());
+          break;
+        case Linear:
+          displace(std::integral_constant<int, Linear>());
+          break;
+        default:
+          displace(std::integral_constant<int, Cubic>());
+          break;
+      }
     };
     switch (type)
     {
