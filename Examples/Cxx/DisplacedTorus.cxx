@@ -5,18 +5,15 @@
 // Usage: DisplacedTorus <output folder>   (writes DisplacedTorus.png)
 
 #include "vtkDisplacementMapFilter.h"
+#include "vtkParametricDonut.h"
+#include "vtkParametricSurfaceSource.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
@@ -31,63 +28,6 @@
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-// The torus as a (U+1) x (V+1) grid, seam points duplicated, with texture coordinates
-// (u,v), outward unit normals and the raw derivatives dPdu, dPdv.
-vtkSmartPointer<vtkPolyData> Torus(int U, int V, double R, double r)
-{
-  const vtkIdType n = static_cast<vtkIdType>(U + 1) * (V + 1);
-  vtkNew<vtkPoints> points;
-  points->SetNumberOfPoints(n);
-  vtkNew<vtkFloatArray> normals, tcoords, du, dv;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(n);
-  tcoords->SetName("TCoords");
-  tcoords->SetNumberOfComponents(2);
-  tcoords->SetNumberOfTuples(n);
-  du->SetName("dPdu");
-  du->SetNumberOfComponents(3);
-  du->SetNumberOfTuples(n);
-  dv->SetName("dPdv");
-  dv->SetNumberOfComponents(3);
-  dv->SetNumberOfTuples(n);
-  for (int j = 0; j <= V; ++j)
-  {
-    for (int i = 0; i <= U; ++i)
-    {
-      const vtkIdType id = static_cast<vtkIdType>(j) * (U + 1) + i;
-      const double u = static_cast<double>(i) / U, v = static_cast<double>(j) / V;
-      const double a = 2 * Pi * u, b = 2 * Pi * v, ring = R + r * std::cos(b);
-      points->SetPoint(id, ring * std::cos(a), ring * std::sin(a), r * std::sin(b));
-      normals->SetTuple3(id, std::cos(b) * std::cos(a), std::cos(b) * std::sin(a), std::sin(b));
-      tcoords->SetTuple2(id, u, v);
-      du->SetTuple3(id, -2 * Pi * ring * std::sin(a), 2 * Pi * ring * std::cos(a), 0.0);
-      dv->SetTuple3(id, -2 * Pi * r * std::sin(b) * std::cos(a),
-        -2 * Pi * r * std::sin(b) * std::sin(a), 2 * Pi * r * std::cos(b));
-    }
-  }
-  vtkNew<vtkCellArray> tris;
-  for (int j = 0; j < V; ++j)
-  {
-    for (int i = 0; i < U; ++i)
-    {
-      const vtkIdType a = static_cast<vtkIdType>(j) * (U + 1) + i, b = a + 1, c = a + U + 1,
-                      d = c + 1;
-      const vtkIdType t0[3] = { a, b, d }, t1[3] = { a, d, c };
-      tris->InsertNextCell(3, t0);
-      tris->InsertNextCell(3, t1);
-    }
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(tris);
-  poly->GetPointData()->SetNormals(normals);
-  poly->GetPointData()->SetTCoords(tcoords);
-  poly->GetPointData()->AddArray(du);
-  poly->GetPointData()->AddArray(dv);
-  return poly;
-}
 
 // A quilt of round bumps, 24 around the ring and 10 around the tube, as an 8-bit map.
 vtkSmartPointer<vtkImageData> Quilt(int W, int H)
@@ -113,8 +53,19 @@ int main(int argc, char* argv[])
 {
   const std::string folder = argc > 1 ? argv[1] : ".";
 
+  // The torus with texture coordinates (u,v), outward unit normals and the raw derivatives
+  // dPdu, dPdv, which the Exact normals use.
+  vtkNew<vtkParametricDonut> donut;
+  donut->SetRingRadius(1.0);
+  donut->SetCrossSectionRadius(0.4);
+  vtkNew<vtkParametricSurfaceSource> torus;
+  torus->SetParametricFunction(donut);
+  torus->SetUResolution(480);
+  torus->SetVResolution(200);
+  torus->GenerateDerivativesOn();
+
   vtkNew<vtkDisplacementMapFilter> displace;
-  displace->SetInputData(0, Torus(480, 200, 1.0, 0.4));
+  displace->SetInputConnection(0, torus->GetOutputPort());
   displace->SetInputData(1, Quilt(1024, 512));
   displace->SetScale(0.08);
   displace->SetMidlevel(0.0);
