@@ -61,8 +61,8 @@ bool AllocateTuples(vtkAOSDataArrayTemplate<ValueT>* array, vtkIdType tuples)
   {
     return false;
   }
-  array->SetArray(static_cast<ValueT*>(p), values, 0,
-    vtkAOSDataArrayTemplate<ValueT>::VTK_DATA_ARRAY_FREE);
+  array->SetArray(
+    static_cast<ValueT*>(p), values, 0, vtkAOSDataArrayTemplate<ValueT>::VTK_DATA_ARRAY_FREE);
   return true;
 }
 } // namespace vtkSurfaceDetailMemory
