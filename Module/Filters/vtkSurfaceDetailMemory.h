@@ -6,9 +6,9 @@
  * its time in the kernel: each first touch of a 4 kB page faults, and the faults contend
  * on the process's memory map when threads write. Asking for 2 MB-aligned memory with
  * `madvise(MADV_HUGEPAGE)` (Debian's default THP setting is `madvise`) makes that one
- * fault per 2 MB. The array stays an ordinary VTK array: its memory is released with
- * `free()` (VTK_DATA_ARRAY_FREE), which is also what VTK uses when it reallocates it.
- * Small arrays and other systems take the ordinary allocation.
+ * fault per 2 MB. The array stays an ordinary VTK array: VTK releases its memory through
+ * the array's free function (Release below), and when VTK grows such an array it copies
+ * it into memory of its own. Small arrays and other systems take the ordinary allocation.
  *
  * Shared by the filters of this module; not installed.
  */
@@ -29,7 +29,7 @@ namespace vtkSurfaceDetailMemory
 {
 constexpr std::size_t HugePageBytes = std::size_t(2) << 20;
 
-/// malloc-compatible memory of at least `bytes` (release with free()); huge-page backed
+/// Memory of at least `bytes`, to be given back with Release(); huge-page backed
 /// when `bytes` is at least one huge page and the system supports it. nullptr on failure.
 inline void* Allocate(std::size_t bytes)
 {
@@ -47,6 +47,12 @@ inline void* Allocate(std::size_t bytes)
   }
 #endif
   return std::malloc(bytes > 0 ? bytes : 1);
+}
+
+/// Gives back memory from Allocate() (nullptr is allowed).
+inline void Release(void* p)
+{
+  std::free(p);
 }
 
 /// Gives `array` storage for `tuples` tuples of its current number of components, without

@@ -21,6 +21,10 @@ void CheckArray(vtkIdType tuples, int components)
   EXPECT_EQ(array->GetNumberOfTuples(), tuples);
   EXPECT_EQ(array->GetNumberOfComponents(), components);
   const vtkIdType values = tuples * components;
+  if (values == 0)
+  {
+    return;
+  }
   auto* p = array->GetPointer(0);
   if (static_cast<std::size_t>(values) * sizeof(*p) >= vtkSurfaceDetailMemory::HugePageBytes)
   {
