@@ -17,6 +17,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailMemory.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 
@@ -446,43 +447,60 @@ void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connec
   offsets[2 * numQuads] = static_cast<Id>(6 * numQuads);
 }
 
+// Null when the memory is not available.
 template <typename IdArray>
 vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, int U, bool flip)
 {
   using Id = typename IdArray::ValueType;
   const vtkIdType numTriangles = 2 * numRows * U;
   vtkNew<IdArray> offsets;
-  offsets->SetNumberOfValues(numTriangles + 1);
   vtkNew<IdArray> connectivity;
-  connectivity->SetNumberOfValues(3 * numTriangles);
+  if (!vtkSurfaceDetailMemory::AllocateTuples(offsets.Get(), numTriangles + 1) ||
+    !vtkSurfaceDetailMemory::AllocateTuples(connectivity.Get(), 3 * numTriangles))
+  {
+    return nullptr;
+  }
   BuildTriangles<Id>(numRows, U, flip, offsets->GetPointer(0), connectivity->GetPointer(0));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
   return cells;
 }
 
-template <typename Real, typename RealArray>
-bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoords, bool tangents,
-  bool derivatives, vtkPolyData* output, vtkIdType& arbitrary)
+enum class Outcome
 {
-  auto newArray = [numPoints](auto array, const char* name, int components)
+  Done,
+  NonFinite,
+  OutOfMemory
+};
+
+template <typename Real, typename RealArray>
+Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoords,
+  bool tangents, bool derivatives, vtkPolyData* output, vtkIdType& arbitrary)
+{
+  // Every value is written below, so the arrays are not initialised; their memory comes in
+  // huge pages, warm from the cache when an earlier output was released.
+  bool allocated = true;
+  auto newArray = [numPoints, &allocated](auto array, const char* name, int components)
   {
     array->SetName(name);
     array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(numPoints);
-    return array;
+    allocated = allocated && vtkSurfaceDetailMemory::AllocateTuples(array, numPoints);
+    return allocated ? array->GetPointer(0) : nullptr;
   };
   vtkNew<RealArray> points;
-  newArray(points.Get(), "Points", 3);
   PointWorker<Real> worker(g);
-  worker.Points = points->GetPointer(0);
+  worker.Points = newArray(points.Get(), "Points", 3);
   vtkNew<vtkFloatArray> normalArray, tcoordArray, tangentArray;
   vtkNew<RealArray> dPdu, dPdv;
-  worker.Normals = normals ? newArray(normalArray.Get(), "Normals", 3)->GetPointer(0) : nullptr;
-  worker.TCoords = tcoords ? newArray(tcoordArray.Get(), "TCoords", 2)->GetPointer(0) : nullptr;
-  worker.Tangents = tangents ? newArray(tangentArray.Get(), "Tangents", 4)->GetPointer(0) : nullptr;
-  worker.DPdu = derivatives ? newArray(dPdu.Get(), "dPdu", 3)->GetPointer(0) : nullptr;
-  worker.DPdv = derivatives ? newArray(dPdv.Get(), "dPdv", 3)->GetPointer(0) : nullptr;
+  worker.Normals = normals ? newArray(normalArray.Get(), "Normals", 3) : nullptr;
+  worker.TCoords = tcoords ? newArray(tcoordArray.Get(), "TCoords", 2) : nullptr;
+  worker.Tangents = tangents ? newArray(tangentArray.Get(), "Tangents", 4) : nullptr;
+  worker.DPdu = derivatives ? newArray(dPdu.Get(), "dPdu", 3) : nullptr;
+  worker.DPdv = derivatives ? newArray(dPdv.Get(), "dPdv", 3) : nullptr;
+  if (!allocated)
+  {
+    return Outcome::OutOfMemory;
+  }
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   vtkSMPTools::For(0, numPoints, 4096, worker);
@@ -491,7 +509,7 @@ bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoor
   {
     if (bad)
     {
-      return false;
+      return Outcome::NonFinite;
     }
   }
   arbitrary = 0;
@@ -523,7 +541,7 @@ bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoor
     pd->AddArray(dPdu);
     pd->AddArray(dPdv);
   }
-  return true;
+  return Outcome::Done;
 }
 } // namespace
 
@@ -757,14 +775,20 @@ int vtkParametricSurfaceSource::RequestData(
 
   const vtkIdType numPoints = g.NumRows * rowLength;
   vtkIdType arbitrary = 0;
-  const bool ok = this->OutputPointsPrecision == DOUBLE_PRECISION
+  const Outcome outcome = this->OutputPointsPrecision == DOUBLE_PRECISION
     ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, this->GenerateNormals,
         this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
         arbitrary)
     : GeneratePoints<float, vtkFloatArray>(g, numPoints, this->GenerateNormals,
         this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
         arbitrary);
-  if (!ok)
+  if (outcome == Outcome::OutOfMemory)
+  {
+    output->Initialize();
+    vtkErrorMacro("Not enough memory for " << numPoints << " points: use a lower resolution.");
+    return 0;
+  }
+  if (outcome == Outcome::NonFinite)
   {
     output->Initialize();
     vtkErrorMacro("The parametric function " << function->GetClassName()
@@ -783,8 +807,18 @@ int vtkParametricSurfaceSource::RequestData(
   const bool flip = g.Orientation < 0.0;
   const bool fits32 = 3 * numTriangles < std::numeric_limits<vtkTypeInt32>::max() &&
     numPoints < std::numeric_limits<vtkTypeInt32>::max();
-  output->SetPolys(fits32 ? MakeTriangles<vtkTypeInt32Array>(g.NumRows - 1, g.U, flip)
-                          : MakeTriangles<vtkTypeInt64Array>(g.NumRows - 1, g.U, flip));
+  vtkSmartPointer<vtkCellArray> triangles = fits32
+    ? MakeTriangles<vtkTypeInt32Array>(g.NumRows - 1, g.U, flip)
+    : MakeTriangles<vtkTypeInt64Array>(g.NumRows - 1, g.U, flip);
+  if (!triangles)
+  {
+    output->Initialize();
+    vtkErrorMacro("Not enough memory for " << numTriangles
+                                           << " triangles: use a lower "
+                                              "resolution.");
+    return 0;
+  }
+  output->SetPolys(triangles);
   return 1;
 }
 
