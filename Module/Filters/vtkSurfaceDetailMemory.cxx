@@ -97,14 +97,26 @@ struct State
     return given;
   }
 
-  // Oldest blocks first until the cache fits its limit.
+  // Oldest blocks first until the cache fits its limit; the last one only loses its tail
+  // (joined blocks can be big, and what stays cached is still warm).
   void Evict()
   {
     while (this->CachedBytes > this->Limit)
     {
       auto oldest = std::min_element(this->Cache.begin(), this->Cache.end(),
         [](const auto& a, const auto& b) { return a.second.LastUsed < b.second.LastUsed; });
-      this->Unmap(oldest);
+      const std::size_t excess =
+        (this->CachedBytes - this->Limit + HugePageBytes - 1) / HugePageBytes * HugePageBytes;
+      if (oldest->second.Bytes > excess)
+      {
+        oldest->second.Bytes -= excess;
+        munmap(oldest->first + oldest->second.Bytes, excess);
+        this->CachedBytes -= excess;
+      }
+      else
+      {
+        this->Unmap(oldest);
+      }
     }
   }
 
@@ -195,12 +207,12 @@ std::size_t CacheLimitFromEnvironment()
 void* Allocate(std::size_t bytes)
 {
 #if defined(SURFACEDETAIL_MEMORY_MMAP)
+  State& state = GetState();
+  std::lock_guard<std::mutex> lock(state.Mutex);
+  state.Trim(Clock::now(), state.IdleSeconds);
   if (bytes >= HugePageBytes && bytes <= SIZE_MAX - 2 * HugePageBytes)
   {
     const std::size_t rounded = (bytes + HugePageBytes - 1) / HugePageBytes * HugePageBytes;
-    State& state = GetState();
-    std::lock_guard<std::mutex> lock(state.Mutex);
-    state.Trim(Clock::now(), state.IdleSeconds);
     void* p = state.Take(rounded);
     if (p)
     {
@@ -225,32 +237,26 @@ void* Allocate(std::size_t bytes)
 //------------------------------------------------------------------------------
 void Release(void* p)
 {
-  if (!p)
-  {
-    return;
-  }
 #if defined(SURFACEDETAIL_MEMORY_MMAP)
+  State& state = GetState();
+  std::lock_guard<std::mutex> lock(state.Mutex);
+  const Clock::time_point now = Clock::now();
+  state.Trim(now, state.IdleSeconds);
+  auto live = p ? state.Live.find(p) : state.Live.end();
+  if (live != state.Live.end())
   {
-    State& state = GetState();
-    std::lock_guard<std::mutex> lock(state.Mutex);
-    auto live = state.Live.find(p);
-    if (live != state.Live.end())
+    const std::size_t bytes = live->second;
+    state.Live.erase(live);
+    if (bytes > state.Limit)
     {
-      const std::size_t bytes = live->second;
-      state.Live.erase(live);
-      const Clock::time_point now = Clock::now();
-      state.Trim(now, state.IdleSeconds);
-      if (bytes > state.Limit)
-      {
-        munmap(p, bytes);
-      }
-      else
-      {
-        state.Keep(static_cast<char*>(p), bytes, now);
-        state.Evict();
-      }
-      return;
+      munmap(p, bytes);
     }
+    else
+    {
+      state.Keep(static_cast<char*>(p), bytes, now);
+      state.Evict();
+    }
+    return;
   }
 #endif
   std::free(p);
