@@ -31,6 +31,30 @@ void vtkParametricSeparableFunction::Evaluate(double uvw[3], double Pt[3], doubl
 }
 
 //------------------------------------------------------------------------------
+void vtkParametricSeparableFunction::EvaluateTermsBlock(const double* const* uTerms,
+  const double* vTerms, int count, double* const* P, double* const* Du, double* const* Dv)
+{
+  const int numUTerms = this->GetNumberOfUTerms();
+  for (int k = 0; k < count; ++k)
+  {
+    double u[MaximumNumberOfTerms];
+    for (int t = 0; t < numUTerms; ++t)
+    {
+      u[t] = uTerms[t][k];
+    }
+    double point[3];
+    double d[9];
+    this->EvaluateTerms(u, vTerms, point, d);
+    for (int c = 0; c < 3; ++c)
+    {
+      P[c][k] = point[c];
+      Du[c][k] = d[c];
+      Dv[c][k] = d[3 + c];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkParametricSeparableFunction::EvaluateTurn(double x, double* terms)
 {
   const double angle = 2.0 * vtkMath::Pi() * x;

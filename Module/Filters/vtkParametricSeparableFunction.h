@@ -11,7 +11,9 @@
  * - EvaluateVTerms(v, terms): the same for v;
  * - EvaluateTerms(uTerms, vTerms, P, D): the point and its derivatives from both, cheaply.
  * Evaluate() is exactly these three calls, so the split and the plain evaluation give
- * identical results. vtkParametricSurfaceSource uses the split for any such function.
+ * identical results. EvaluateTermsBlock() is EvaluateTerms() for a run of points of one
+ * row, which subclasses may override with a loop the compiler vectorises.
+ * vtkParametricSurfaceSource uses the split for any such function.
  *
  * @sa vtkParametricSurfaceSource vtkParametricSphere vtkParametricRevolution
  */
@@ -52,6 +54,16 @@ public:
 
   /** A surface: 2. */
   int GetDimension() override { return 2; }
+
+  /**
+   * EvaluateTerms() for @a count points that share the v terms @a vTerms (a run of one row
+   * of a grid), in structure-of-arrays form: uTerms[t][k] is u term t of point k, and
+   * component c of point k's position, dP/du and dP/dv goes to P[c][k], Du[c][k] and
+   * Dv[c][k]. The results are EvaluateTerms()' bit for bit. The default calls
+   * EvaluateTerms() per point. Thread-safe.
+   */
+  virtual void EvaluateTermsBlock(const double* const* uTerms, const double* vTerms, int count,
+    double* const* P, double* const* Du, double* const* Dv);
 
   /** EvaluateUTerms, EvaluateVTerms, then EvaluateTerms. */
   void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) final;

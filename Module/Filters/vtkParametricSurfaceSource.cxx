@@ -57,7 +57,8 @@ struct Grid
   std::vector<double> UUnit, VUnit;     // unit-square parameter of each column / row
   std::vector<double> UDomain, VDomain; // the function's parameter of each column / row
   std::vector<float> S, T;              // texture coordinate of each column / row
-  // Separable functions: their u terms of each column and v terms of each row.
+  // Separable functions: their u terms (term t of column i at t * (U + 1) + i, so that a
+  // run of columns is contiguous) and the v terms of each row.
   vtkParametricSeparableFunction* Separable = nullptr;
   int NumUTerms = 0, NumVTerms = 0;
   std::vector<double> UTerms, VTerms;
@@ -128,47 +129,57 @@ struct Grid
   }
 
   /**
-   * The function at @a count consecutive columns from @a col of row @a j: points in P (3 per
-   * point) and derivatives in D (9 per point, Duvw's layout) which, multiplied by
-   * DerivativeScale, are unit-square derivatives. Separable functions use the cached terms.
-   * A block is evaluated before any of it is read back, so that reading does not wait on
-   * the stores the function has just made (a 16-byte load of two 8-byte stores cannot be
-   * forwarded).
+   * The function at @a count consecutive columns from @a col of row @a j, in structure-of-
+   * arrays form: P[c][k] is component c of the point in column col + k, Du and Dv its
+   * unit-square derivatives. Separable functions work from the cached terms.
    */
-  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* P, double* D) const
+  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* const* P, double* const* Du,
+    double* const* Dv) const
   {
     if (this->Separable)
     {
-      const double* vTerms = this->VTerms.data() + j * this->NumVTerms;
-      const double* uTerms = this->UTerms.data() + col * this->NumUTerms;
-      for (int k = 0; k < count; ++k)
+      const double* uTerms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
+      for (int t = 0; t < this->NumUTerms; ++t)
       {
-        this->Separable->EvaluateTerms(uTerms + k * this->NumUTerms, vTerms, P + 3 * k, D + 9 * k);
+        uTerms[t] = this->UTerms.data() + t * (this->U + 1) + col;
       }
+      this->Separable->EvaluateTermsBlock(
+        uTerms, this->VTerms.data() + j * this->NumVTerms, count, P, Du, Dv);
+      for (int c = 0; c < 3; ++c)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          Du[c][k] *= this->UExtent;
+          Dv[c][k] *= this->VExtent;
+        }
+      }
+      return;
     }
-    else if (this->HasDerivatives)
+    for (int k = 0; k < count; ++k)
     {
-      for (int k = 0; k < count; ++k)
+      double p[3], du[3], dv[3];
+      if (this->HasDerivatives)
       {
         double uvw[3] = { this->UDomain[col + k], this->VDomain[j], 0.0 };
-        this->Function->Evaluate(uvw, P + 3 * k, D + 9 * k);
+        double d[9];
+        this->Function->Evaluate(uvw, p, d);
+        for (int c = 0; c < 3; ++c)
+        {
+          du[c] = d[c] * this->UExtent;
+          dv[c] = d[3 + c] * this->VExtent;
+        }
       }
-    }
-    else
-    {
-      for (int k = 0; k < count; ++k)
+      else
       {
-        this->Evaluate(
-          this->UDomain[col + k], this->VDomain[j], P + 3 * k, D + 9 * k, D + 9 * k + 3);
+        this->Evaluate(this->UDomain[col + k], this->VDomain[j], p, du, dv);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        P[c][k] = p[c];
+        Du[c][k] = du[c];
+        Dv[c][k] = dv[c];
       }
     }
-  }
-
-  // Factors from the derivatives EvaluateBlock gives to unit-square derivatives.
-  double DerivativeScale(int axis) const
-  {
-    return (this->Separable || this->HasDerivatives) ? (axis == 0 ? this->UExtent : this->VExtent)
-                                                     : 1.0;
   }
 
   // Unit-square derivatives only, at unit-square parameters (clamped to the domain).
@@ -288,6 +299,30 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
   return found;
 }
 
+// Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
+constexpr int BlockSize = 64;
+
+// out[C * k + c] = in[c][k] for a run of points: the structure-of-arrays scratch into the
+// interleaved VTK array.
+template <typename Out, int C>
+void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
+{
+  const double* __restrict x = in[0];
+  const double* __restrict y = in[1];
+  const double* __restrict z = in[2];
+  const double* __restrict w = in[C - 1];
+  for (int k = 0; k < count; ++k)
+  {
+    out[C * k] = static_cast<Out>(x[k]);
+    out[C * k + 1] = static_cast<Out>(y[k]);
+    out[C * k + 2] = static_cast<Out>(z[k]);
+    if (C == 4)
+    {
+      out[C * k + 3] = static_cast<Out>(w[k]);
+    }
+  }
+}
+
 // Points and point arrays of one piece; each point is computed from its own (i, j) alone,
 // so any split among threads gives the same bytes.
 template <typename Real>
@@ -318,133 +353,195 @@ struct PointWorker
   {
     const Grid& g = this->G;
     const vtkIdType rowLength = g.U + 1;
-    vtkIdType row = begin / rowLength;
-    vtkIdType col = begin % rowLength;
     vtkIdType& arbitrary = this->Arbitrary.Local();
-    bool finite = true;
     const bool frame = this->Normals || this->Tangents;
-    const double scaleU = g.DerivativeScale(0), scaleV = g.DerivativeScale(1);
-    constexpr int BlockSize = 64;
-    double blockP[3 * BlockSize];
-    double blockD[9 * BlockSize];
-    int inBlock = 0, blockLength = 0;
-    for (vtkIdType id = begin; id < end; ++id)
+    // Every loop over a run below has unit stride and no branch, so the compiler
+    // vectorises it.
+    double blockP[3][BlockSize], blockDu[3][BlockSize], blockDv[3][BlockSize];
+    double blockN[3][BlockSize], blockT[4][BlockSize];
+    double regular[BlockSize]; // 1: regular point, 0: take the limit frame
+    double* P[3] = { blockP[0], blockP[1], blockP[2] };
+    double* Du[3] = { blockDu[0], blockDu[1], blockDu[2] };
+    double* Dv[3] = { blockDv[0], blockDv[1], blockDv[2] };
+    double nonFinite = 0.0; // NaN once any sum below is not finite
+    for (vtkIdType id = begin; id < end;)
     {
-      const vtkIdType j = g.Row0 + row;
-      if (inBlock == blockLength)
+      const vtkIdType col = id % rowLength;
+      const vtkIdType j = g.Row0 + id / rowLength;
+      const int count =
+        static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
+      g.EvaluateBlock(col, j, count, P, Du, Dv);
+      for (int k = 0; k < count; ++k)
       {
-        blockLength =
-          static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
-        g.EvaluateBlock(col, j, blockLength, blockP, blockD);
-        inBlock = 0;
-      }
-      const double* p = blockP + 3 * inBlock;
-      const double* d = blockD + 9 * inBlock;
-      ++inBlock;
-      const double du[3] = { d[0] * scaleU, d[1] * scaleU, d[2] * scaleU };
-      const double dv[3] = { d[3] * scaleV, d[4] * scaleV, d[5] * scaleV };
-      finite = finite && std::isfinite(p[0] + p[1] + p[2]) &&
-        std::isfinite(du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2]);
-      Real* pt = this->Points + 3 * id;
-      pt[0] = static_cast<Real>(p[0]);
-      pt[1] = static_cast<Real>(p[1]);
-      pt[2] = static_cast<Real>(p[2]);
-      if (this->DPdu)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          this->DPdu[3 * id + k] = static_cast<Real>(du[k]);
-          this->DPdv[3 * id + k] = static_cast<Real>(dv[k]);
-        }
-      }
-      if (this->TCoords)
-      {
-        this->TCoords[2 * id] = g.S[col];
-        this->TCoords[2 * id + 1] = g.T[j];
+        const double p = blockP[0][k] + blockP[1][k] + blockP[2][k];
+        const double d = blockDu[0][k] + blockDu[1][k] + blockDu[2][k] + blockDv[0][k] +
+          blockDv[1][k] + blockDv[2][k];
+        nonFinite += (p - p) + (d - d);
       }
       if (frame)
       {
-        double n[3];
-        double t[4];
-        double du2;
-        if (RegularNormal(du, dv, g.Orientation, n, du2))
+        this->Frames(count, blockDu, blockDv, blockN, blockT, regular);
+        for (int k = 0; k < count; ++k)
         {
+          if (regular[k] != 0.0)
+          {
+            continue;
+          }
+          const double du[3] = { blockDu[0][k], blockDu[1][k], blockDu[2][k] };
+          const double dv[3] = { blockDv[0][k], blockDv[1][k], blockDv[2][k] };
+          double n[3], t[4];
+          if (!DegenerateFrame(
+                g, g.UUnit[col + k], g.VUnit[j], du, dv, n, this->Tangents ? t : nullptr))
+          {
+            ++arbitrary;
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            blockN[c][k] = n[c];
+          }
           if (this->Tangents)
           {
-            // Here N = +-(Du x Dv)/|Du x Dv| is orthogonal to Du already, and the shared
-            // frame (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the
-            // sign of the s repeat, with w = cross(N,T).dP/dt of constant sign.
-            const double scale = g.TangentSign / std::sqrt(du2);
-            t[0] = du[0] * scale;
-            t[1] = du[1] * scale;
-            t[2] = du[2] * scale;
-            t[3] = g.Handedness;
+            for (int c = 0; c < 4; ++c)
+            {
+              blockT[c][k] = t[c];
+            }
           }
         }
-        else if (!DegenerateFrame(
-                   g, g.UUnit[col], g.VUnit[j], du, dv, n, this->Tangents ? t : nullptr))
-        {
-          ++arbitrary;
-        }
-        if (this->Normals)
-        {
-          float* out = this->Normals + 3 * id;
-          out[0] = static_cast<float>(n[0]);
-          out[1] = static_cast<float>(n[1]);
-          out[2] = static_cast<float>(n[2]);
-        }
-        if (this->Tangents)
-        {
-          float* out = this->Tangents + 4 * id;
-          out[0] = static_cast<float>(t[0]);
-          out[1] = static_cast<float>(t[1]);
-          out[2] = static_cast<float>(t[2]);
-          out[3] = static_cast<float>(t[3]);
-        }
       }
-      if (++col == rowLength)
+      Interleave<Real, 3>(count, blockP, this->Points + 3 * id);
+      if (this->DPdu)
       {
-        col = 0;
-        ++row;
+        Interleave<Real, 3>(count, blockDu, this->DPdu + 3 * id);
+        Interleave<Real, 3>(count, blockDv, this->DPdv + 3 * id);
       }
+      if (this->TCoords)
+      {
+        float* out = this->TCoords + 2 * id;
+        const float* s = g.S.data() + col;
+        const float t = g.T[j];
+        for (int k = 0; k < count; ++k)
+        {
+          out[2 * k] = s[k];
+          out[2 * k + 1] = t;
+        }
+      }
+      if (this->Normals)
+      {
+        Interleave<float, 3>(count, blockN, this->Normals + 3 * id);
+      }
+      if (this->Tangents)
+      {
+        Interleave<float, 4>(count, blockT, this->Tangents + 4 * id);
+      }
+      id += count;
     }
-    if (!finite)
+    if (nonFinite != 0.0)
     {
       this->NonFinite.Local() = 1;
+    }
+  }
+
+  /**
+   * Unit normals (N = +-(Du x Dv)/|Du x Dv|) and tangents of a run of points; regular[k]
+   * says whether the derivatives of point k span a plane (see RegularNormal, whose tests
+   * and operations this repeats so the bits are the same). Where they do, N is orthogonal
+   * to Du already and the shared frame (vtkSurfaceDetail::MakeTangentFrame) reduces to
+   * T = Du/|Du| times the sign of the s repeat, with w = cross(N,T).dP/dt of constant sign.
+   * Elsewhere the values are meaningless and the caller replaces them.
+   */
+  void Frames(int count, const double (&du)[3][BlockSize], const double (&dv)[3][BlockSize],
+    double (&n)[3][BlockSize], double (&t)[4][BlockSize], double* __restrict regular) const
+  {
+    const double orientation = this->G.Orientation;
+    const double tangentSign = this->G.TangentSign;
+    const double handedness = this->G.Handedness;
+    const double* __restrict dux = du[0];
+    const double* __restrict duy = du[1];
+    const double* __restrict duz = du[2];
+    const double* __restrict dvx = dv[0];
+    const double* __restrict dvy = dv[1];
+    const double* __restrict dvz = dv[2];
+    double* __restrict n0 = n[0];
+    double* __restrict n1 = n[1];
+    double* __restrict n2 = n[2];
+    double* __restrict t0 = t[0];
+    double* __restrict t1 = t[1];
+    double* __restrict t2 = t[2];
+    double* __restrict t3 = t[3];
+    for (int k = 0; k < count; ++k)
+    {
+      const double ax = dux[k], ay = duy[k], az = duz[k];
+      const double bx = dvx[k], by = dvy[k], bz = dvz[k];
+      const double nx = ay * bz - az * by;
+      const double ny = az * bx - ax * bz;
+      const double nz = ax * by - ay * bx;
+      const double a2 = ax * ax + ay * ay + az * az;
+      const double b2 = bx * bx + by * by + bz * bz;
+      const double c2 = nx * nx + ny * ny + nz * nz;
+      // A double flag: a mask of another width would stop the vectorisation.
+      const bool ok = (c2 > DegenerateTolerance2 * a2 * b2) & (a2 > DegenerateTolerance2 * b2) &
+        (b2 > DegenerateTolerance2 * a2) & (c2 - c2 == 0.0);
+      regular[k] = ok ? 1.0 : 0.0;
+      const double normalScale = orientation / std::sqrt(c2);
+      n0[k] = nx * normalScale;
+      n1[k] = ny * normalScale;
+      n2[k] = nz * normalScale;
+      const double tangentScale = tangentSign / std::sqrt(a2);
+      t0[k] = ax * tangentScale;
+      t1[k] = ay * tangentScale;
+      t2[k] = az * tangentScale;
+      t3[k] = handedness;
     }
   }
 
   void Reduce() {}
 };
 
-// Two triangles per grid quad, counter-clockwise around the normal.
+// Two triangles per grid quad, counter-clockwise around the normal. Every row of quads has
+// the connectivity of the first shifted by a multiple of the row length, so each row is one
+// vectorisable add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
 template <typename Id>
 void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connectivity)
 {
-  const vtkIdType numQuads = numRows * U;
-  vtkSMPTools::For(0, numQuads,
+  const vtkIdType rowValues = 6 * static_cast<vtkIdType>(U);
+  std::vector<Id> pattern(rowValues);
+  for (int i = 0; i < U; ++i)
+  {
+    const Id p00 = static_cast<Id>(i);
+    const Id p10 = p00 + 1;
+    const Id p01 = static_cast<Id>(p00 + U + 1);
+    const Id p11 = p01 + 1;
+    Id* c = pattern.data() + 6 * i;
+    c[0] = p00;
+    c[1] = flip ? p11 : p10;
+    c[2] = flip ? p10 : p11;
+    c[3] = p00;
+    c[4] = flip ? p01 : p11;
+    c[5] = flip ? p11 : p01;
+  }
+  vtkSMPTools::For(0, numRows,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType q = begin; q < end; ++q)
+      for (vtkIdType r = begin; r < end; ++r)
       {
-        const vtkIdType r = q / U;
-        const vtkIdType i = q % U;
-        const Id p00 = static_cast<Id>(r * (U + 1) + i);
-        const Id p10 = p00 + 1;
-        const Id p01 = static_cast<Id>(p00 + U + 1);
-        const Id p11 = p01 + 1;
-        Id* c = connectivity + 6 * q;
-        c[0] = p00;
-        c[1] = flip ? p11 : p10;
-        c[2] = flip ? p10 : p11;
-        c[3] = p00;
-        c[4] = flip ? p01 : p11;
-        c[5] = flip ? p11 : p01;
-        offsets[2 * q] = static_cast<Id>(6 * q);
-        offsets[2 * q + 1] = static_cast<Id>(6 * q + 3);
+        const Id shift = static_cast<Id>(r * (U + 1));
+        const Id* __restrict in = pattern.data();
+        Id* __restrict out = connectivity + r * rowValues;
+        for (vtkIdType k = 0; k < rowValues; ++k)
+        {
+          out[k] = in[k] + shift;
+        }
       }
     });
-  offsets[2 * numQuads] = static_cast<Id>(6 * numQuads);
+  const vtkIdType numTriangles = 2 * numRows * U;
+  vtkSMPTools::For(0, numTriangles + 1,
+    [offsets](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        offsets[t] = static_cast<Id>(3 * t);
+      }
+    });
 }
 
 // Null when the memory is not available.
@@ -756,11 +853,16 @@ int vtkParametricSurfaceSource::RequestData(
     g.UTerms.resize(rowLength * g.NumUTerms);
     g.VTerms.resize((V + 1) * g.NumVTerms);
     vtkSMPTools::For(0, rowLength,
-      [&g](vtkIdType begin, vtkIdType end)
+      [&g, rowLength](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          g.Separable->EvaluateUTerms(g.UDomain[i], g.UTerms.data() + i * g.NumUTerms);
+          double terms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
+          g.Separable->EvaluateUTerms(g.UDomain[i], terms);
+          for (int t = 0; t < g.NumUTerms; ++t)
+          {
+            g.UTerms[t * rowLength + i] = terms[t];
+          }
         }
       });
     vtkSMPTools::For(cellRow0, cellRow1 + 1,
