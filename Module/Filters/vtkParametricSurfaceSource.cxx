@@ -145,12 +145,16 @@ struct Grid
       }
       this->Separable->EvaluateTermsBlock(
         uTerms, this->VTerms.data() + j * this->NumVTerms, count, P, Du, Dv);
-      for (int c = 0; c < 3; ++c)
+      // Our own functions live on the unit square, where the factors are 1 (exact anyway).
+      if (this->UExtent != 1.0 || this->VExtent != 1.0)
       {
-        for (int k = 0; k < count; ++k)
+        for (int c = 0; c < 3; ++c)
         {
-          Du[c][k] *= this->UExtent;
-          Dv[c][k] *= this->VExtent;
+          for (int k = 0; k < count; ++k)
+          {
+            Du[c][k] *= this->UExtent;
+            Dv[c][k] *= this->VExtent;
+          }
         }
       }
       return;
@@ -323,6 +327,21 @@ void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
   }
 }
 
+// nonFinite[k] becomes NaN when point k's sum of coordinates or of derivatives is not finite.
+void CheckFinite(int count, const double (*p)[BlockSize], const double (*du)[BlockSize],
+  const double (*dv)[BlockSize], double* __restrict nonFinite)
+{
+  const double* __restrict px = p[0], * __restrict py = p[1], * __restrict pz = p[2];
+  const double* __restrict dux = du[0], * __restrict duy = du[1], * __restrict duz = du[2];
+  const double* __restrict dvx = dv[0], * __restrict dvy = dv[1], * __restrict dvz = dv[2];
+  for (int k = 0; k < count; ++k)
+  {
+    const double sp = px[k] + py[k] + pz[k];
+    const double sd = dux[k] + duy[k] + duz[k] + dvx[k] + dvy[k] + dvz[k];
+    nonFinite[k] += (sp - sp) + (sd - sd);
+  }
+}
+
 // Points and point arrays of one piece; each point is computed from its own (i, j) alone,
 // so any split among threads gives the same bytes.
 template <typename Real>
@@ -363,7 +382,9 @@ struct PointWorker
     double* P[3] = { blockP[0], blockP[1], blockP[2] };
     double* Du[3] = { blockDu[0], blockDu[1], blockDu[2] };
     double* Dv[3] = { blockDv[0], blockDv[1], blockDv[2] };
-    double nonFinite = 0.0; // NaN once any sum below is not finite
+    // Lane k becomes NaN once a sum below is not finite; kept per lane, because a running
+    // floating-point sum would not vectorise.
+    double nonFinite[BlockSize] = {};
     for (vtkIdType id = begin; id < end;)
     {
       const vtkIdType col = id % rowLength;
@@ -371,13 +392,7 @@ struct PointWorker
       const int count =
         static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
       g.EvaluateBlock(col, j, count, P, Du, Dv);
-      for (int k = 0; k < count; ++k)
-      {
-        const double p = blockP[0][k] + blockP[1][k] + blockP[2][k];
-        const double d = blockDu[0][k] + blockDu[1][k] + blockDu[2][k] + blockDv[0][k] +
-          blockDv[1][k] + blockDv[2][k];
-        nonFinite += (p - p) + (d - d);
-      }
+      CheckFinite(count, blockP, blockDu, blockDv, nonFinite);
       if (frame)
       {
         this->Frames(count, blockDu, blockDv, blockN, blockT, regular);
@@ -435,7 +450,12 @@ struct PointWorker
       }
       id += count;
     }
-    if (nonFinite != 0.0)
+    double anyNonFinite = 0.0;
+    for (double lane : nonFinite)
+    {
+      anyNonFinite += lane;
+    }
+    if (anyNonFinite != 0.0)
     {
       this->NonFinite.Local() = 1;
     }
