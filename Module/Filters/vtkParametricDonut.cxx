@@ -45,31 +45,15 @@ void vtkParametricDonut::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
-void vtkParametricDonut::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
-  int count, double* const* P, double* const* Du, double* const* Dv)
+namespace
 {
-  // EvaluateTerms() with its products that depend on v only taken out of the loop, in the
-  // same order of operations, so the results are the same bits.
-  const double twoPi = 2.0 * vtkMath::Pi();
-  const double cv = vTerms[0], sv = vTerms[1];
-  const double r = this->CrossSectionRadius;
-  const double ring = this->RingRadius + r * cv;
-  const double z = r * sv;
-  const double duxScale = -twoPi * ring;
-  const double duyScale = twoPi * ring;
-  const double dvScale = -twoPi * r * sv;
-  const double dvz = twoPi * r * cv;
-  const double* __restrict cu = uTerms[0];
-  const double* __restrict su = uTerms[1];
-  double* __restrict px = P[0];
-  double* __restrict py = P[1];
-  double* __restrict pz = P[2];
-  double* __restrict dux = Du[0];
-  double* __restrict duy = Du[1];
-  double* __restrict duz = Du[2];
-  double* __restrict dvx = Dv[0];
-  double* __restrict dvy = Dv[1];
-  double* __restrict dvzOut = Dv[2];
+// One run of a row; the restrict parameters tell the compiler that the nine outputs do not
+// overlap (it gives up on checking that many pointers at run time and would stay scalar).
+void DonutRun(int count, const double* __restrict cu, const double* __restrict su, double ring,
+  double z, double duxScale, double duyScale, double dvScale, double dvz, double* __restrict px,
+  double* __restrict py, double* __restrict pz, double* __restrict dux, double* __restrict duy,
+  double* __restrict duz, double* __restrict dvx, double* __restrict dvy, double* __restrict dvzOut)
+{
   for (int k = 0; k < count; ++k)
   {
     px[k] = ring * cu[k];
@@ -82,6 +66,20 @@ void vtkParametricDonut::EvaluateTermsBlock(const double* const* uTerms, const d
     dvy[k] = dvScale * su[k];
     dvzOut[k] = dvz;
   }
+}
+} // namespace
+
+void vtkParametricDonut::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
+  int count, double* const* P, double* const* Du, double* const* Dv)
+{
+  // EvaluateTerms() with its products that depend on v only taken out of the loop, in the
+  // same order of operations, so the results are the same bits.
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double cv = vTerms[0], sv = vTerms[1];
+  const double r = this->CrossSectionRadius;
+  const double ring = this->RingRadius + r * cv;
+  DonutRun(count, uTerms[0], uTerms[1], ring, r * sv, -twoPi * ring, twoPi * ring, -twoPi * r * sv,
+    twoPi * r * cv, P[0], P[1], P[2], Du[0], Du[1], Du[2], Dv[0], Dv[1], Dv[2]);
 }
 
 //------------------------------------------------------------------------------

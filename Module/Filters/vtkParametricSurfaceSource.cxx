@@ -308,6 +308,15 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
   return found;
 }
 
+// The frame loop is bound by square roots and divisions, which AVX does four at a time where
+// SSE2 does two; on x86-64 Linux the loader picks the AVX2 build on processors that have it.
+// Neither build contracts a*b+c into a fused multiply-add, so both give the same bits.
+#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
+#define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
+#else
+#define SURFACEDETAIL_WIDE_VECTORS
+#endif
+
 // Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
 constexpr int BlockSize = 64;
 
@@ -369,17 +378,67 @@ void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
 }
 
 // nonFinite[k] becomes NaN when point k's sum of coordinates or of derivatives is not finite.
-void CheckFinite(int count, const double (*p)[BlockSize], const double (*du)[BlockSize],
-  const double (*dv)[BlockSize], double* __restrict nonFinite)
+void CheckFinite(int count, const double* __restrict px, const double* __restrict py,
+  const double* __restrict pz, const double* __restrict dux, const double* __restrict duy,
+  const double* __restrict duz, const double* __restrict dvx, const double* __restrict dvy,
+  const double* __restrict dvz, double* __restrict nonFinite)
 {
-  const double* __restrict px = p[0], * __restrict py = p[1], * __restrict pz = p[2];
-  const double* __restrict dux = du[0], * __restrict duy = du[1], * __restrict duz = du[2];
-  const double* __restrict dvx = dv[0], * __restrict dvy = dv[1], * __restrict dvz = dv[2];
   for (int k = 0; k < count; ++k)
   {
     const double sp = px[k] + py[k] + pz[k];
     const double sd = dux[k] + duy[k] + duz[k] + dvx[k] + dvy[k] + dvz[k];
     nonFinite[k] += (sp - sp) + (sd - sd);
+  }
+}
+
+/**
+ * CheckFinite, and the unit normals (N = +-(Du x Dv)/|Du x Dv|) and tangents of a run of
+ * points, in one pass over the derivatives. regular[k] is 1 where the derivatives of point
+ * k span a plane (the tests and operations of RegularNormal, in its order, so the bits are
+ * the same); there N is orthogonal to Du already and the shared frame
+ * (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the sign of the s
+ * repeat, with w = cross(N,T).dP/dt of constant sign. Elsewhere regular[k] is 0 and the
+ * values are meaningless: the caller replaces them. Restrict parameters rather than locals:
+ * the compiler does not check that many pointers at run time and would stay scalar.
+ */
+template <bool WithTangents>
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px, const double* __restrict py,
+  const double* __restrict pz, const double* __restrict dux, const double* __restrict duy,
+  const double* __restrict duz, const double* __restrict dvx, const double* __restrict dvy,
+  const double* __restrict dvz, double orientation, double tangentSign, double handedness,
+  double* __restrict nonFinite, double* __restrict regular, double* __restrict n0,
+  double* __restrict n1, double* __restrict n2, double* __restrict t0, double* __restrict t1,
+  double* __restrict t2, double* __restrict t3)
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const double ax = dux[k], ay = duy[k], az = duz[k];
+    const double bx = dvx[k], by = dvy[k], bz = dvz[k];
+    const double sp = px[k] + py[k] + pz[k];
+    const double sd = ax + ay + az + bx + by + bz;
+    nonFinite[k] += (sp - sp) + (sd - sd);
+    const double nx = ay * bz - az * by;
+    const double ny = az * bx - ax * bz;
+    const double nz = ax * by - ay * bx;
+    const double a2 = ax * ax + ay * ay + az * az;
+    const double b2 = bx * bx + by * by + bz * bz;
+    const double c2 = nx * nx + ny * ny + nz * nz;
+    // A double flag: a mask of another width would stop the vectorisation.
+    const bool ok = (c2 > DegenerateTolerance2 * a2 * b2) & (a2 > DegenerateTolerance2 * b2) &
+      (b2 > DegenerateTolerance2 * a2) & (c2 - c2 == 0.0);
+    regular[k] = ok ? 1.0 : 0.0;
+    const double normalScale = orientation / std::sqrt(c2);
+    n0[k] = nx * normalScale;
+    n1[k] = ny * normalScale;
+    n2[k] = nz * normalScale;
+    if (WithTangents)
+    {
+      const double tangentScale = tangentSign / std::sqrt(a2);
+      t0[k] = ax * tangentScale;
+      t1[k] = ay * tangentScale;
+      t2[k] = az * tangentScale;
+      t3[k] = handedness;
+    }
   }
 }
 
@@ -433,10 +492,12 @@ struct PointWorker
       const int count =
         static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
       g.EvaluateBlock(col, j, count, P, Du, Dv);
-      CheckFinite(count, blockP, blockDu, blockDv, nonFinite);
       if (frame)
       {
-        this->Frames(count, blockDu, blockDv, blockN, blockT, regular);
+        (this->Tangents ? CheckFiniteAndFrames<true> : CheckFiniteAndFrames<false>)(count,
+          blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0],
+          blockDv[1], blockDv[2], g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular,
+          blockN[0], blockN[1], blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
         for (int k = 0; k < count; ++k)
         {
           if (regular[k] != 0.0)
@@ -463,6 +524,11 @@ struct PointWorker
             }
           }
         }
+      }
+      else
+      {
+        CheckFinite(count, blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2],
+          blockDv[0], blockDv[1], blockDv[2], nonFinite);
       }
       Interleave<Real, 3>(count, blockP, this->Points + 3 * id);
       if (this->DPdu)
@@ -499,59 +565,6 @@ struct PointWorker
     if (anyNonFinite != 0.0)
     {
       this->NonFinite.Local() = 1;
-    }
-  }
-
-  /**
-   * Unit normals (N = +-(Du x Dv)/|Du x Dv|) and tangents of a run of points; regular[k]
-   * says whether the derivatives of point k span a plane (see RegularNormal, whose tests
-   * and operations this repeats so the bits are the same). Where they do, N is orthogonal
-   * to Du already and the shared frame (vtkSurfaceDetail::MakeTangentFrame) reduces to
-   * T = Du/|Du| times the sign of the s repeat, with w = cross(N,T).dP/dt of constant sign.
-   * Elsewhere the values are meaningless and the caller replaces them.
-   */
-  void Frames(int count, const double (&du)[3][BlockSize], const double (&dv)[3][BlockSize],
-    double (&n)[3][BlockSize], double (&t)[4][BlockSize], double* __restrict regular) const
-  {
-    const double orientation = this->G.Orientation;
-    const double tangentSign = this->G.TangentSign;
-    const double handedness = this->G.Handedness;
-    const double* __restrict dux = du[0];
-    const double* __restrict duy = du[1];
-    const double* __restrict duz = du[2];
-    const double* __restrict dvx = dv[0];
-    const double* __restrict dvy = dv[1];
-    const double* __restrict dvz = dv[2];
-    double* __restrict n0 = n[0];
-    double* __restrict n1 = n[1];
-    double* __restrict n2 = n[2];
-    double* __restrict t0 = t[0];
-    double* __restrict t1 = t[1];
-    double* __restrict t2 = t[2];
-    double* __restrict t3 = t[3];
-    for (int k = 0; k < count; ++k)
-    {
-      const double ax = dux[k], ay = duy[k], az = duz[k];
-      const double bx = dvx[k], by = dvy[k], bz = dvz[k];
-      const double nx = ay * bz - az * by;
-      const double ny = az * bx - ax * bz;
-      const double nz = ax * by - ay * bx;
-      const double a2 = ax * ax + ay * ay + az * az;
-      const double b2 = bx * bx + by * by + bz * bz;
-      const double c2 = nx * nx + ny * ny + nz * nz;
-      // A double flag: a mask of another width would stop the vectorisation.
-      const bool ok = (c2 > DegenerateTolerance2 * a2 * b2) & (a2 > DegenerateTolerance2 * b2) &
-        (b2 > DegenerateTolerance2 * a2) & (c2 - c2 == 0.0);
-      regular[k] = ok ? 1.0 : 0.0;
-      const double normalScale = orientation / std::sqrt(c2);
-      n0[k] = nx * normalScale;
-      n1[k] = ny * normalScale;
-      n2[k] = nz * normalScale;
-      const double tangentScale = tangentSign / std::sqrt(a2);
-      t0[k] = ax * tangentScale;
-      t1[k] = ay * tangentScale;
-      t2[k] = az * tangentScale;
-      t3[k] = handedness;
     }
   }
 
