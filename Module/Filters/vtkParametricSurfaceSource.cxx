@@ -22,6 +22,7 @@
 #include "vtkTypeInt64Array.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -320,15 +321,48 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
 // Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
 constexpr int BlockSize = 64;
 
+// Outputs bigger than this are written with streaming (non-temporal) stores: they do not fit
+// in the caches anyway, and ordinary stores would first read every line they write.
+constexpr std::size_t StreamingBytes = std::size_t(8) << 20;
+
+#if defined(__SSE2__)
+inline bool Aligned16(const void* p)
+{
+  return (reinterpret_cast<std::uintptr_t>(p) & 15) == 0;
+}
+
+inline void Store(float* p, __m128 v, bool stream)
+{
+  if (stream)
+  {
+    _mm_stream_ps(p, v);
+  }
+  else
+  {
+    _mm_storeu_ps(p, v);
+  }
+}
+#endif
+
 // out[C * k + c] = in[c][k] for a run of points: the structure-of-arrays scratch into the
-// interleaved VTK array.
+// interleaved VTK array; @a stream asks for streaming stores where the output allows.
 template <typename Out, int C>
-void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
+void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out, bool stream)
 {
   const double* __restrict x = in[0];
   const double* __restrict y = in[1];
   const double* __restrict z = in[2];
   const double* __restrict w = in[C - 1];
+  auto one = [&](int k)
+  {
+    out[C * k] = static_cast<Out>(x[k]);
+    out[C * k + 1] = static_cast<Out>(y[k]);
+    out[C * k + 2] = static_cast<Out>(z[k]);
+    if (C == 4)
+    {
+      out[C * k + 3] = static_cast<Out>(w[k]);
+    }
+  };
   int k = 0;
 #if defined(__SSE2__)
   // Float output, four points at a time: the compiler leaves this transpose scalar (eight
@@ -336,6 +370,11 @@ void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
   if constexpr (std::is_same<Out, float>::value)
   {
     float* o = out;
+    for (; stream && k < count && k < 4 && !Aligned16(o + C * k); ++k)
+    {
+      one(k);
+    }
+    const bool streaming = stream && Aligned16(o + C * k);
     auto four = [](const double* v)
     { return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(v)), _mm_cvtpd_ps(_mm_loadu_pd(v + 2))); };
     for (; k + 4 <= count; k += 4)
@@ -345,10 +384,10 @@ void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
       {
         __m128 d = four(w + k);
         _MM_TRANSPOSE4_PS(a, b, c, d);
-        _mm_storeu_ps(o + 4 * k, a);
-        _mm_storeu_ps(o + 4 * k + 4, b);
-        _mm_storeu_ps(o + 4 * k + 8, c);
-        _mm_storeu_ps(o + 4 * k + 12, d);
+        Store(o + 4 * k, a, streaming);
+        Store(o + 4 * k + 4, b, streaming);
+        Store(o + 4 * k + 8, c, streaming);
+        Store(o + 4 * k + 12, d, streaming);
       }
       else
       {
@@ -358,22 +397,47 @@ void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out)
         const __m128 b1c1 = _mm_shuffle_ps(ab01, c, _MM_SHUFFLE(1, 1, 3, 3));
         const __m128 c2a3 = _mm_shuffle_ps(c, ab23, _MM_SHUFFLE(2, 2, 2, 2));
         const __m128 b3c3 = _mm_shuffle_ps(ab23, c, _MM_SHUFFLE(3, 3, 3, 3));
-        _mm_storeu_ps(o + 3 * k, _mm_shuffle_ps(ab01, c0a1, _MM_SHUFFLE(2, 0, 1, 0)));
-        _mm_storeu_ps(o + 3 * k + 4, _mm_shuffle_ps(b1c1, ab23, _MM_SHUFFLE(1, 0, 2, 0)));
-        _mm_storeu_ps(o + 3 * k + 8, _mm_shuffle_ps(c2a3, b3c3, _MM_SHUFFLE(2, 0, 2, 0)));
+        Store(o + 3 * k, _mm_shuffle_ps(ab01, c0a1, _MM_SHUFFLE(2, 0, 1, 0)), streaming);
+        Store(o + 3 * k + 4, _mm_shuffle_ps(b1c1, ab23, _MM_SHUFFLE(1, 0, 2, 0)), streaming);
+        Store(o + 3 * k + 8, _mm_shuffle_ps(c2a3, b3c3, _MM_SHUFFLE(2, 0, 2, 0)), streaming);
       }
     }
   }
+#else
+  (void)stream;
 #endif
   for (; k < count; ++k)
   {
-    out[C * k] = static_cast<Out>(x[k]);
-    out[C * k + 1] = static_cast<Out>(y[k]);
-    out[C * k + 2] = static_cast<Out>(z[k]);
-    if (C == 4)
-    {
-      out[C * k + 3] = static_cast<Out>(w[k]);
-    }
+    one(k);
+  }
+}
+
+// Texture coordinates (s[k], t) of a run of one row.
+void InterleaveTCoords(
+  int count, const float* __restrict s, float t, float* __restrict out, bool stream)
+{
+  int k = 0;
+#if defined(__SSE2__)
+  for (; stream && k < count && k < 2 && !Aligned16(out + 2 * k); ++k)
+  {
+    out[2 * k] = s[k];
+    out[2 * k + 1] = t;
+  }
+  const bool streaming = stream && Aligned16(out + 2 * k);
+  const __m128 tt = _mm_set1_ps(t);
+  for (; k + 4 <= count; k += 4)
+  {
+    const __m128 ss = _mm_loadu_ps(s + k);
+    Store(out + 2 * k, _mm_unpacklo_ps(ss, tt), streaming);
+    Store(out + 2 * k + 4, _mm_unpackhi_ps(ss, tt), streaming);
+  }
+#else
+  (void)stream;
+#endif
+  for (; k < count; ++k)
+  {
+    out[2 * k] = s[k];
+    out[2 * k + 1] = t;
   }
 }
 
@@ -402,13 +466,13 @@ void CheckFinite(int count, const double* __restrict px, const double* __restric
  * the compiler does not check that many pointers at run time and would stay scalar.
  */
 template <bool WithTangents>
-SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px, const double* __restrict py,
-  const double* __restrict pz, const double* __restrict dux, const double* __restrict duy,
-  const double* __restrict duz, const double* __restrict dvx, const double* __restrict dvy,
-  const double* __restrict dvz, double orientation, double tangentSign, double handedness,
-  double* __restrict nonFinite, double* __restrict regular, double* __restrict n0,
-  double* __restrict n1, double* __restrict n2, double* __restrict t0, double* __restrict t1,
-  double* __restrict t2, double* __restrict t3)
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
 {
   for (int k = 0; k < count; ++k)
   {
@@ -454,6 +518,7 @@ struct PointWorker
   float* Tangents;
   Real* DPdu;
   Real* DPdv;
+  bool Stream = false;                    // output too big for the caches: streaming stores
   vtkSMPThreadLocal<vtkIdType> Arbitrary; // points with an arbitrary frame
   vtkSMPThreadLocal<unsigned char> NonFinite;
 
@@ -530,33 +595,33 @@ struct PointWorker
         CheckFinite(count, blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2],
           blockDv[0], blockDv[1], blockDv[2], nonFinite);
       }
-      Interleave<Real, 3>(count, blockP, this->Points + 3 * id);
+      Interleave<Real, 3>(count, blockP, this->Points + 3 * id, this->Stream);
       if (this->DPdu)
       {
-        Interleave<Real, 3>(count, blockDu, this->DPdu + 3 * id);
-        Interleave<Real, 3>(count, blockDv, this->DPdv + 3 * id);
+        Interleave<Real, 3>(count, blockDu, this->DPdu + 3 * id, this->Stream);
+        Interleave<Real, 3>(count, blockDv, this->DPdv + 3 * id, this->Stream);
       }
       if (this->TCoords)
       {
-        float* out = this->TCoords + 2 * id;
-        const float* s = g.S.data() + col;
-        const float t = g.T[j];
-        for (int k = 0; k < count; ++k)
-        {
-          out[2 * k] = s[k];
-          out[2 * k + 1] = t;
-        }
+        InterleaveTCoords(count, g.S.data() + col, g.T[j], this->TCoords + 2 * id, this->Stream);
       }
       if (this->Normals)
       {
-        Interleave<float, 3>(count, blockN, this->Normals + 3 * id);
+        Interleave<float, 3>(count, blockN, this->Normals + 3 * id, this->Stream);
       }
       if (this->Tangents)
       {
-        Interleave<float, 4>(count, blockT, this->Tangents + 4 * id);
+        Interleave<float, 4>(count, blockT, this->Tangents + 4 * id, this->Stream);
       }
       id += count;
     }
+#if defined(__SSE2__)
+    if (this->Stream)
+    {
+      // Streaming stores are weakly ordered: make them visible before the threads join.
+      _mm_sfence();
+    }
+#endif
     double anyNonFinite = 0.0;
     for (double lane : nonFinite)
     {
@@ -672,6 +737,7 @@ Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tc
   {
     return Outcome::OutOfMemory;
   }
+  worker.Stream = static_cast<std::size_t>(numPoints) * (3 * sizeof(Real) + 28) > StreamingBytes;
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   vtkSMPTools::For(0, numPoints, 4096, worker);
