@@ -636,6 +636,83 @@ struct PointWorker
   void Reduce() {}
 };
 
+// Makes streaming stores visible to other threads (they are weakly ordered).
+inline void Fence(bool stream)
+{
+#if defined(__SSE2__)
+  if (stream)
+  {
+    _mm_sfence();
+  }
+#else
+  (void)stream;
+#endif
+}
+
+// out[k] = in[k] + shift for k < n; 32-bit ids can stream.
+template <typename Id>
+void ShiftedCopy(const Id* __restrict in, vtkIdType n, Id shift, Id* __restrict out, bool stream)
+{
+  vtkIdType k = 0;
+#if defined(__SSE2__)
+  if constexpr (sizeof(Id) == 4)
+  {
+    for (; stream && k < n && !Aligned16(out + k); ++k)
+    {
+      out[k] = in[k] + shift;
+    }
+    if (stream && Aligned16(out + k))
+    {
+      const __m128i add = _mm_set1_epi32(shift);
+      for (; k + 4 <= n; k += 4)
+      {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + k));
+        _mm_stream_si128(reinterpret_cast<__m128i*>(out + k), _mm_add_epi32(v, add));
+      }
+    }
+  }
+#else
+  (void)stream;
+#endif
+  for (; k < n; ++k)
+  {
+    out[k] = in[k] + shift;
+  }
+}
+
+// offsets[t] = 3 t for begin <= t < end; 32-bit ids can stream.
+template <typename Id>
+void Ramp(vtkIdType begin, vtkIdType end, Id* __restrict offsets, bool stream)
+{
+  vtkIdType t = begin;
+#if defined(__SSE2__)
+  if constexpr (sizeof(Id) == 4)
+  {
+    for (; stream && t < end && !Aligned16(offsets + t); ++t)
+    {
+      offsets[t] = static_cast<Id>(3 * t);
+    }
+    if (stream && Aligned16(offsets + t))
+    {
+      const Id first = static_cast<Id>(3 * t);
+      __m128i v = _mm_setr_epi32(first, first + 3, first + 6, first + 9);
+      const __m128i step = _mm_set1_epi32(12);
+      for (; t + 4 <= end; t += 4)
+      {
+        _mm_stream_si128(reinterpret_cast<__m128i*>(offsets + t), v);
+        v = _mm_add_epi32(v, step);
+      }
+    }
+  }
+#else
+  (void)stream;
+#endif
+  for (; t < end; ++t)
+  {
+    offsets[t] = static_cast<Id>(3 * t);
+  }
+}
+
 // Two triangles per grid quad, counter-clockwise around the normal. Every row of quads has
 // the connectivity of the first shifted by a multiple of the row length, so each row is one
 // vectorisable add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
@@ -658,28 +735,23 @@ void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connec
     c[4] = flip ? p01 : p11;
     c[5] = flip ? p11 : p01;
   }
+  const vtkIdType numTriangles = 2 * numRows * U;
+  const bool stream = static_cast<std::size_t>(numTriangles) * 4 * sizeof(Id) > StreamingBytes;
   vtkSMPTools::For(0, numRows,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType r = begin; r < end; ++r)
       {
-        const Id shift = static_cast<Id>(r * (U + 1));
-        const Id* __restrict in = pattern.data();
-        Id* __restrict out = connectivity + r * rowValues;
-        for (vtkIdType k = 0; k < rowValues; ++k)
-        {
-          out[k] = in[k] + shift;
-        }
+        ShiftedCopy(pattern.data(), rowValues, static_cast<Id>(r * (U + 1)),
+          connectivity + r * rowValues, stream);
       }
+      Fence(stream);
     });
-  const vtkIdType numTriangles = 2 * numRows * U;
   vtkSMPTools::For(0, numTriangles + 1,
-    [offsets](vtkIdType begin, vtkIdType end)
+    [offsets, stream](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        offsets[t] = static_cast<Id>(3 * t);
-      }
+      Ramp(begin, end, offsets, stream);
+      Fence(stream);
     });
 }
 
