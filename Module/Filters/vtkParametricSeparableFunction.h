@@ -78,6 +78,17 @@ protected:
   /** terms[0] = cos(2 pi x), terms[1] = sin(2 pi x): the turn of the round surfaces. */
   static void EvaluateTurn(double x, double* terms);
 
+  /**
+   * EvaluateTermsBlock() of a surface turned about the y axis, from the turn's terms
+   * (c, s) = (uTerms[0][k], uTerms[1][k]) and seven numbers of the row:
+   * P = (row[0] c, row[1], row[2] s), dP/du = (row[3] s, 0, row[3] c),
+   * dP/dv = (row[4] c, row[5], row[6] s). A subclass gets EvaluateTerms()' bits when it
+   * computes the row numbers as the products EvaluateTerms() forms before multiplying by
+   * c or s.
+   */
+  static void EvaluateTurnBlock(const double* const* uTerms, const double row[7], int count,
+    double* const* P, double* const* Du, double* const* Dv);
+
 private:
   vtkParametricSeparableFunction(const vtkParametricSeparableFunction&) = delete;
   void operator=(const vtkParametricSeparableFunction&) = delete;
