@@ -317,6 +317,11 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
 #else
 #define SURFACEDETAIL_WIDE_VECTORS
 #endif
+#if defined(__GNUC__) || defined(__clang__)
+#define SURFACEDETAIL_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define SURFACEDETAIL_ALWAYS_INLINE
+#endif
 
 // Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
 constexpr int BlockSize = 64;
@@ -464,15 +469,16 @@ void CheckFinite(int count, const double* __restrict px, const double* __restric
  * repeat, with w = cross(N,T).dP/dt of constant sign. Elsewhere regular[k] is 0 and the
  * values are meaningless: the caller replaces them. Restrict parameters rather than locals:
  * the compiler does not check that many pointers at run time and would stay scalar.
+ * Always inlined, so that each target clone below vectorises it for its own instruction set.
  */
 template <bool WithTangents>
-SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
-  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
-  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
-  const double* __restrict dvy, const double* __restrict dvz, double orientation,
-  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
-  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
-  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+SURFACEDETAIL_ALWAYS_INLINE inline void CheckFiniteAndFramesRun(int count,
+  const double* __restrict px, const double* __restrict py, const double* __restrict pz,
+  const double* __restrict dux, const double* __restrict duy, const double* __restrict duz,
+  const double* __restrict dvx, const double* __restrict dvy, const double* __restrict dvz,
+  double orientation, double tangentSign, double handedness, double* __restrict nonFinite,
+  double* __restrict regular, double* __restrict n0, double* __restrict n1, double* __restrict n2,
+  double* __restrict t0, double* __restrict t1, double* __restrict t2, double* __restrict t3)
 {
   for (int k = 0; k < count; ++k)
   {
@@ -504,6 +510,31 @@ SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __
       t3[k] = handedness;
     }
   }
+}
+
+// Two plain functions rather than one template: clang rejects target_clones on templates.
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndNormals(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+{
+  CheckFiniteAndFramesRun<false>(count, px, py, pz, dux, duy, duz, dvx, dvy, dvz, orientation,
+    tangentSign, handedness, nonFinite, regular, n0, n1, n2, t0, t1, t2, t3);
+}
+
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+{
+  CheckFiniteAndFramesRun<true>(count, px, py, pz, dux, duy, duz, dvx, dvy, dvz, orientation,
+    tangentSign, handedness, nonFinite, regular, n0, n1, n2, t0, t1, t2, t3);
 }
 
 // Points and point arrays of one piece; each point is computed from its own (i, j) alone,
@@ -559,10 +590,10 @@ struct PointWorker
       g.EvaluateBlock(col, j, count, P, Du, Dv);
       if (frame)
       {
-        (this->Tangents ? CheckFiniteAndFrames<true> : CheckFiniteAndFrames<false>)(count,
-          blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0],
-          blockDv[1], blockDv[2], g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular,
-          blockN[0], blockN[1], blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
+        (this->Tangents ? CheckFiniteAndFrames : CheckFiniteAndNormals)(count, blockP[0], blockP[1],
+          blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0], blockDv[1], blockDv[2],
+          g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular, blockN[0], blockN[1],
+          blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
         for (int k = 0; k < count; ++k)
         {
           if (regular[k] != 0.0)
