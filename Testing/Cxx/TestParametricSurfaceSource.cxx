@@ -41,8 +41,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -621,4 +623,146 @@ TEST(ParametricSurfaceSource, VTKClosedSurfacesFaceOutward)
   EXPECT_LT(angle, 1e-6);
   vtkNew<vtkParametricDonut> donut;
   EXPECT_GT(MinOutwardness(run(donut), ring(donut->GetRingRadius())), 1 - 1e-6);
+}
+
+namespace
+{
+// A user subclass that changes the shape through EvaluateTerms() alone (the customisation
+// point of vtkParametricSeparableFunction): the surface stretched 3 times along y.
+template <typename Base>
+class StretchedY : public Base
+{
+public:
+  static StretchedY* New()
+  {
+    auto* object = new StretchedY;
+    object->InitializeObjectBase();
+    return object;
+  }
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override
+  {
+    this->Base::EvaluateTerms(uTerms, vTerms, Pt, Duvw);
+    Pt[1] *= 3.0;
+    Duvw[1] *= 3.0;
+    Duvw[4] *= 3.0;
+  }
+};
+
+template <typename Base>
+void ExpectSubclassShapeIsHonoured()
+{
+  vtkNew<Base> plain;
+  vtkNew<StretchedY<Base>> stretched;
+  // 70 columns: more than one run of the source's row loop.
+  auto plainSource = MakeSource(plain, 70, 9);
+  auto stretchedSource = MakeSource(stretched, 70, 9);
+  for (auto* source : { plainSource.Get(), stretchedSource.Get() })
+  {
+    source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    source->Update();
+  }
+  vtkDataArray* a = plainSource->GetOutput()->GetPoints()->GetData();
+  vtkDataArray* b = stretchedSource->GetOutput()->GetPoints()->GetData();
+  vtkDataArray* da = plainSource->GetOutput()->GetPointData()->GetArray("dPdv");
+  vtkDataArray* db = stretchedSource->GetOutput()->GetPointData()->GetArray("dPdv");
+  ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+  int bad = 0;
+  for (vtkIdType id = 0; id < a->GetNumberOfTuples(); ++id)
+  {
+    // Multiplying by 3 is exact up to rounding the same way in both: compare the bits.
+    bad += b->GetComponent(id, 0) != a->GetComponent(id, 0) ||
+      b->GetComponent(id, 1) != 3.0 * a->GetComponent(id, 1) ||
+      b->GetComponent(id, 2) != a->GetComponent(id, 2) ||
+      db->GetComponent(id, 1) != 3.0 * da->GetComponent(id, 1);
+  }
+  EXPECT_EQ(bad, 0) << plain->GetClassName();
+  // And Evaluate() gives the same point as the source at a grid point.
+  double uvw[3] = { 3.0 / 70.0, 4.0 / 9.0, 0.0 }, P[3], D[9];
+  stretched->Evaluate(uvw, P, D);
+  const vtkIdType id = 4 * 71 + 3;
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(b->GetComponent(id, c), P[c], 1e-12);
+  }
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, SubclassOverridingEvaluateTermsIsHonoured)
+{
+  ExpectSubclassShapeIsHonoured<vtkParametricSphere>();
+  ExpectSubclassShapeIsHonoured<vtkParametricDonut>();
+  ExpectSubclassShapeIsHonoured<vtkParametricRevolution>();
+}
+
+namespace
+{
+// EvaluateTermsBlock() against EvaluateTerms() point by point, bit for bit, for every run
+// length the source uses (1..64) and random terms of real parameters.
+int CountBlockDifferences(vtkParametricSeparableFunction* f, std::uint64_t seed)
+{
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  constexpr int N = vtkParametricSeparableFunction::MaximumNumberOfTerms;
+  int bad = 0;
+  for (int rep = 0; rep < 3; ++rep)
+  {
+    for (int count = 1; count <= 64; ++count)
+    {
+      double uTerms[N][64], vTerms[N];
+      f->EvaluateVTerms(unit(random), vTerms);
+      for (int k = 0; k < count; ++k)
+      {
+        double t[N];
+        f->EvaluateUTerms(unit(random), t);
+        for (int i = 0; i < f->GetNumberOfUTerms(); ++i)
+        {
+          uTerms[i][k] = t[i];
+        }
+      }
+      const double* u[N];
+      for (int i = 0; i < N; ++i)
+      {
+        u[i] = uTerms[i];
+      }
+      double P[3][64], Du[3][64], Dv[3][64];
+      double* p[3] = { P[0], P[1], P[2] };
+      double* du[3] = { Du[0], Du[1], Du[2] };
+      double* dv[3] = { Dv[0], Dv[1], Dv[2] };
+      f->EvaluateTermsBlock(u, vTerms, count, p, du, dv);
+      for (int k = 0; k < count; ++k)
+      {
+        double point[N], q[3], d[9];
+        for (int i = 0; i < f->GetNumberOfUTerms(); ++i)
+        {
+          point[i] = uTerms[i][k];
+        }
+        f->EvaluateTerms(point, vTerms, q, d);
+        for (int c = 0; c < 3; ++c)
+        {
+          bad += std::memcmp(&q[c], &P[c][k], sizeof(double)) != 0;
+          bad += std::memcmp(&d[c], &Du[c][k], sizeof(double)) != 0;
+          bad += std::memcmp(&d[3 + c], &Dv[c][k], sizeof(double)) != 0;
+        }
+      }
+    }
+  }
+  return bad;
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, EvaluateTermsBlockIsEvaluateTermsBitForBit)
+{
+  vtkNew<vtkParametricSphere> sphere;
+  sphere->SetRadius(1.7);
+  vtkNew<vtkParametricDonut> donut;
+  donut->SetRingRadius(1.3);
+  donut->SetCrossSectionRadius(0.45);
+  vtkNew<vtkParametricRevolution> vase;
+  vtkNew<vtkParametricRevolution> vaseByArcLength;
+  vaseByArcLength->GetProfile()->ArcLengthParameterizationOn();
+  EXPECT_EQ(CountBlockDifferences(sphere, 1), 0);
+  EXPECT_EQ(CountBlockDifferences(donut, 2), 0);
+  EXPECT_EQ(CountBlockDifferences(vase, 3), 0);
+  EXPECT_EQ(CountBlockDifferences(vaseByArcLength, 4), 0);
 }
