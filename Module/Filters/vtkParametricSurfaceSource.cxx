@@ -51,7 +51,7 @@ constexpr double LimitStep = 1e-4;
 struct Grid
 {
   vtkParametricFunction* Function = nullptr;
-  int U = 1;
+  vtkIdType U = 1;       // cells per row (vtkIdType: U + 1 and the indexes below fit)
   vtkIdType Row0 = 0;    // first point row of this piece
   vtkIdType NumRows = 0; // point rows in this piece
   double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
@@ -748,11 +748,11 @@ void Ramp(vtkIdType begin, vtkIdType end, Id* __restrict offsets, bool stream)
 // the connectivity of the first shifted by a multiple of the row length, so each row is one
 // vectorisable add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
 template <typename Id>
-void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connectivity)
+void BuildTriangles(vtkIdType numRows, vtkIdType U, bool flip, Id* offsets, Id* connectivity)
 {
-  const vtkIdType rowValues = 6 * static_cast<vtkIdType>(U);
+  const vtkIdType rowValues = 6 * U;
   std::vector<Id> pattern(rowValues);
-  for (int i = 0; i < U; ++i)
+  for (vtkIdType i = 0; i < U; ++i)
   {
     const Id p00 = static_cast<Id>(i);
     const Id p10 = p00 + 1;
@@ -788,7 +788,7 @@ void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connec
 
 // Null when the memory is not available.
 template <typename IdArray>
-vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, int U, bool flip)
+vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, vtkIdType U, bool flip)
 {
   using Id = typename IdArray::ValueType;
   const vtkIdType numTriangles = 2 * numRows * U;
@@ -1001,9 +1001,18 @@ int vtkParametricSurfaceSource::RequestData(
   const vtkIdType U = this->UResolution;
   const vtkIdType V = this->VResolution;
   const vtkIdType rowLength = U + 1;
-  if (rowLength * (V + 1) > std::numeric_limits<vtkIdType>::max() / 8)
+  // Each factor is below 2^31, so the products are exact in vtkIdType. The biggest array
+  // per point has 32 bytes (double points or derivatives: 24, float tangents: 16), the
+  // connectivity 48 bytes per quad (6 ids of 8 bytes): both must be indexable in bytes.
+  constexpr vtkIdType mostIndex = std::numeric_limits<vtkIdType>::max();
+  if (rowLength * (V + 1) > mostIndex / 32 || U * V > mostIndex / 48)
   {
-    vtkErrorMacro("Resolution " << U << " x " << V << " is too large to index.");
+    vtkErrorMacro("Resolution " << U << " x " << V << " is too large: (UResolution+1) x "
+                                << "(VResolution+1) = " << rowLength * (V + 1)
+                                << " points (at most " << mostIndex / 32 << ") and 2 x "
+                                << "UResolution x VResolution = " << 2 * U * V
+                                << " triangles (at most " << 2 * (mostIndex / 48)
+                                << ") must fit the output's arrays: use smaller resolutions.");
     return 0;
   }
 

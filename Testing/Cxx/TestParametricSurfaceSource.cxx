@@ -296,6 +296,16 @@ TEST(ParametricSurfaceSource, BadInputIsAClearError)
   source->SetUResolution(8);
   source->SetVResolution(-3);
   expectError(source, "at least 1");
+  // Point and triangle counts beyond what the output's arrays can index (their bytes
+  // would overflow 64 bits): an error naming the products, before any memory is asked for.
+  source->SetUResolution(VTK_INT_MAX);
+  source->SetVResolution(VTK_INT_MAX);
+  expectError(source, "= 4611686018427387904 points"); // 2^31 x 2^31
+  expectError(source, "= 9223372028264841218 triangles");
+  source->SetUResolution(VTK_INT_MAX - 1);
+  source->SetVResolution((1 << 29) - 1);
+  expectError(source, "= 1152921504069976064 points"); // (2^31 - 1) x 2^29: 24 bytes each
+  source->SetUResolution(8);
   source->SetVResolution(4);
 
   source->GenerateTangentsOn();
