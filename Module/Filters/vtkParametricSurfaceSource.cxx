@@ -840,7 +840,11 @@ Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tc
   {
     return Outcome::OutOfMemory;
   }
-  worker.Stream = static_cast<std::size_t>(numPoints) * (3 * sizeof(Real) + 28) > StreamingBytes;
+  // The bytes the workers write per point: the arrays asked for.
+  const std::size_t bytesPerPoint = 3 * sizeof(Real) + (normals ? 3 * sizeof(float) : 0) +
+    (tcoords ? 2 * sizeof(float) : 0) + (tangents ? 4 * sizeof(float) : 0) +
+    (derivatives ? 6 * sizeof(Real) : 0);
+  worker.Stream = static_cast<std::size_t>(numPoints) * bytesPerPoint > StreamingBytes;
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   vtkSMPTools::For(0, numPoints, 4096, worker);
