@@ -39,7 +39,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -775,4 +777,138 @@ TEST(ParametricSurfaceSource, EvaluateTermsBlockIsEvaluateTermsBitForBit)
   EXPECT_EQ(CountBlockDifferences(donut, 2), 0);
   EXPECT_EQ(CountBlockDifferences(vase, 3), 0);
   EXPECT_EQ(CountBlockDifferences(vaseByArcLength, 4), 0);
+}
+
+namespace
+{
+vtkSmartPointer<vtkParametricSurfaceSource> BigFloatDonut(vtkParametricDonut* donut)
+{
+  // 1000 x 701 points of 48 bytes (float points, normals, texture coordinates, tangents)
+  // and 1.4M triangles: 34 MB of point arrays and 22 MB of connectivity, above the 8 MB
+  // from which the source writes with streaming stores, and many blocks of 64 points.
+  auto source = MakeSource(donut, 999, 700);
+  source->GenerateDerivativesOff();
+  return source;
+}
+
+// The bytes of `count` tuples of `part` equal those of `whole` from tuple `first`.
+bool SameTuples(vtkDataArray* part, vtkDataArray* whole, vtkIdType first)
+{
+  if (!part || !whole || part->GetDataType() != whole->GetDataType() ||
+    part->GetNumberOfComponents() != whole->GetNumberOfComponents() ||
+    first + part->GetNumberOfTuples() > whole->GetNumberOfTuples())
+  {
+    return false;
+  }
+  const std::size_t tupleBytes =
+    static_cast<std::size_t>(part->GetNumberOfComponents()) * part->GetDataTypeSize();
+  return std::memcmp(part->GetVoidPointer(0),
+           static_cast<const char*>(whole->GetVoidPointer(0)) + first * tupleBytes,
+           static_cast<std::size_t>(part->GetNumberOfTuples()) * tupleBytes) == 0;
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, BigFloatOutputIsTheClosedFormAtAnySplit)
+{
+  vtkNew<vtkParametricDonut> donut;
+  const double R = 1.2, r = 0.4;
+  donut->SetRingRadius(R);
+  donut->SetCrossSectionRadius(r);
+  const int U = 999, V = 700;
+  const vtkIdType rowLength = U + 1;
+
+  std::vector<vtkSmartPointer<vtkPolyData>> wholes;
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    auto source = BigFloatDonut(donut);
+    source->Update();
+    wholes.emplace_back(source->GetOutput());
+  }
+  vtkSMPTools::Initialize(0);
+  vtkPolyData* whole = wholes[0];
+  ASSERT_EQ(whole->GetNumberOfPoints(), rowLength * (V + 1));
+  ASSERT_NE(vtkFloatArray::SafeDownCast(whole->GetPoints()->GetData()), nullptr);
+  const char* names[] = { "Normals", "TCoords", "Tangents" };
+
+  // One thread or two: the same bytes.
+  EXPECT_TRUE(SameArrays(whole->GetPoints()->GetData(), wholes[1]->GetPoints()->GetData()));
+  for (const char* name : names)
+  {
+    EXPECT_TRUE(
+      SameArrays(whole->GetPointData()->GetArray(name), wholes[1]->GetPointData()->GetArray(name)))
+      << name;
+  }
+  vtkCellArray* cells = whole->GetPolys();
+  EXPECT_TRUE(
+    SameArrays(cells->GetConnectivityArray(), wholes[1]->GetPolys()->GetConnectivityArray()));
+  EXPECT_TRUE(SameArrays(cells->GetOffsetsArray(), wholes[1]->GetPolys()->GetOffsetsArray()));
+
+  // Positions, normals and texture coordinates against the donut's closed form, in double:
+  // only the rounding to float separates them.
+  auto* points = vtkFloatArray::SafeDownCast(whole->GetPoints()->GetData());
+  auto* normals = vtkFloatArray::SafeDownCast(whole->GetPointData()->GetArray("Normals"));
+  auto* tcoords = vtkFloatArray::SafeDownCast(whole->GetPointData()->GetArray("TCoords"));
+  ASSERT_NE(normals, nullptr);
+  ASSERT_NE(tcoords, nullptr);
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double pointTolerance = 4 * FLT_EPSILON * (R + r);
+  const double unitTolerance = 4 * FLT_EPSILON;
+  double worstPoint = 0, worstNormal = 0, worstTCoord = 0;
+  for (int j = 0; j <= V; ++j)
+  {
+    const double v = static_cast<double>(j) / V;
+    for (int i = 0; i <= U; ++i)
+    {
+      const double u = static_cast<double>(i) / U;
+      const vtkIdType id = i + j * rowLength;
+      const double ring = R + r * std::cos(twoPi * v);
+      const double exact[3] = { ring * std::cos(twoPi * u), ring * std::sin(twoPi * u),
+        r * std::sin(twoPi * v) };
+      const double outward[3] = { std::cos(twoPi * v) * std::cos(twoPi * u),
+        std::cos(twoPi * v) * std::sin(twoPi * u), std::sin(twoPi * v) };
+      for (int c = 0; c < 3; ++c)
+      {
+        worstPoint = std::max(worstPoint, std::abs(points->GetValue(3 * id + c) - exact[c]));
+        worstNormal = std::max(worstNormal, std::abs(normals->GetValue(3 * id + c) - outward[c]));
+      }
+      worstTCoord = std::max(worstTCoord, std::abs(tcoords->GetValue(2 * id) - u));
+      worstTCoord = std::max(worstTCoord, std::abs(tcoords->GetValue(2 * id + 1) - v));
+    }
+  }
+  EXPECT_LE(worstPoint, pointTolerance);
+  EXPECT_LE(worstNormal, unitTolerance);
+  EXPECT_LE(worstTCoord, unitTolerance);
+
+  // Pieces: each is the whole's rows cellRow0..cellRow1 of points, byte for byte, and its
+  // triangles are the whole's of those rows, shifted to the piece's first point.
+  const int numPieces = 3;
+  for (int piece = 0; piece < numPieces; ++piece)
+  {
+    SCOPED_TRACE("piece " + std::to_string(piece));
+    auto source = BigFloatDonut(donut);
+    source->UpdatePiece(piece, numPieces, 0);
+    vtkPolyData* out = source->GetOutput();
+    const vtkIdType row0 = piece * V / numPieces, row1 = (piece + 1) * V / numPieces;
+    const vtkIdType first = row0 * rowLength;
+    ASSERT_EQ(out->GetNumberOfPoints(), (row1 - row0 + 1) * rowLength);
+    EXPECT_TRUE(SameTuples(out->GetPoints()->GetData(), whole->GetPoints()->GetData(), first));
+    for (const char* name : names)
+    {
+      EXPECT_TRUE(SameTuples(
+        out->GetPointData()->GetArray(name), whole->GetPointData()->GetArray(name), first))
+        << name;
+    }
+    vtkDataArray* connectivity = out->GetPolys()->GetConnectivityArray();
+    vtkDataArray* wholeConnectivity = cells->GetConnectivityArray();
+    const vtkIdType firstValue = 6 * U * row0;
+    ASSERT_EQ(connectivity->GetNumberOfValues(), 6 * U * (row1 - row0));
+    int badIds = 0;
+    for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+    {
+      badIds += connectivity->GetComponent(k, 0) + first !=
+        wholeConnectivity->GetComponent(firstValue + k, 0);
+    }
+    EXPECT_EQ(badIds, 0);
+  }
 }
