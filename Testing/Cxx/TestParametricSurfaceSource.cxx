@@ -881,34 +881,38 @@ TEST(ParametricSurfaceSource, BigFloatOutputIsTheClosedFormAtAnySplit)
   EXPECT_LE(worstTCoord, unitTolerance);
 
   // Pieces: each is the whole's rows cellRow0..cellRow1 of points, byte for byte, and its
-  // triangles are the whole's of those rows, shifted to the piece's first point.
-  const int numPieces = 3;
-  for (int piece = 0; piece < numPieces; ++piece)
+  // triangles are the whole's of those rows, shifted to the piece's first point. Pieces of
+  // a third are still above the streaming threshold; pieces of an eighth (4 MB of point
+  // arrays, 3 MB of connectivity) are written with ordinary stores.
+  for (int numPieces : { 3, 8 })
   {
-    SCOPED_TRACE("piece " + std::to_string(piece));
-    auto source = BigFloatDonut(donut);
-    source->UpdatePiece(piece, numPieces, 0);
-    vtkPolyData* out = source->GetOutput();
-    const vtkIdType row0 = piece * V / numPieces, row1 = (piece + 1) * V / numPieces;
-    const vtkIdType first = row0 * rowLength;
-    ASSERT_EQ(out->GetNumberOfPoints(), (row1 - row0 + 1) * rowLength);
-    EXPECT_TRUE(SameTuples(out->GetPoints()->GetData(), whole->GetPoints()->GetData(), first));
-    for (const char* name : names)
+    for (int piece = 0; piece < numPieces; ++piece)
     {
-      EXPECT_TRUE(SameTuples(
-        out->GetPointData()->GetArray(name), whole->GetPointData()->GetArray(name), first))
-        << name;
+      SCOPED_TRACE(std::to_string(numPieces) + " pieces, piece " + std::to_string(piece));
+      auto source = BigFloatDonut(donut);
+      source->UpdatePiece(piece, numPieces, 0);
+      vtkPolyData* out = source->GetOutput();
+      const vtkIdType row0 = piece * V / numPieces, row1 = (piece + 1) * V / numPieces;
+      const vtkIdType first = row0 * rowLength;
+      ASSERT_EQ(out->GetNumberOfPoints(), (row1 - row0 + 1) * rowLength);
+      EXPECT_TRUE(SameTuples(out->GetPoints()->GetData(), whole->GetPoints()->GetData(), first));
+      for (const char* name : names)
+      {
+        EXPECT_TRUE(SameTuples(
+          out->GetPointData()->GetArray(name), whole->GetPointData()->GetArray(name), first))
+          << name;
+      }
+      vtkDataArray* connectivity = out->GetPolys()->GetConnectivityArray();
+      vtkDataArray* wholeConnectivity = cells->GetConnectivityArray();
+      const vtkIdType firstValue = 6 * U * row0;
+      ASSERT_EQ(connectivity->GetNumberOfValues(), 6 * U * (row1 - row0));
+      int badIds = 0;
+      for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+      {
+        badIds += connectivity->GetComponent(k, 0) + first !=
+          wholeConnectivity->GetComponent(firstValue + k, 0);
+      }
+      EXPECT_EQ(badIds, 0);
     }
-    vtkDataArray* connectivity = out->GetPolys()->GetConnectivityArray();
-    vtkDataArray* wholeConnectivity = cells->GetConnectivityArray();
-    const vtkIdType firstValue = 6 * U * row0;
-    ASSERT_EQ(connectivity->GetNumberOfValues(), 6 * U * (row1 - row0));
-    int badIds = 0;
-    for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
-    {
-      badIds += connectivity->GetComponent(k, 0) + first !=
-        wholeConnectivity->GetComponent(firstValue + k, 0);
-    }
-    EXPECT_EQ(badIds, 0);
   }
 }
