@@ -4,6 +4,7 @@
 #include "vtkObjectFactory.h"
 
 #include <cmath>
+#include <typeinfo>
 
 vtkStandardNewMacro(vtkParametricDonut);
 
@@ -81,6 +82,13 @@ SURFACEDETAIL_WIDE_VECTORS void DonutRun(int count, const double* __restrict cu,
 void vtkParametricDonut::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
   int count, double* const* P, double* const* Du, double* const* Dv)
 {
+  // The loop below repeats this class's EvaluateTerms(); a subclass that overrides
+  // EvaluateTerms() alone gets its own shape from the per-point block instead.
+  if (typeid(*this) != typeid(vtkParametricDonut))
+  {
+    this->vtkParametricSeparableFunction::EvaluateTermsBlock(uTerms, vTerms, count, P, Du, Dv);
+    return;
+  }
   // EvaluateTerms() with its products that depend on v only taken out of the loop, in the
   // same order of operations, so the results are the same bits.
   const double twoPi = 2.0 * vtkMath::Pi();

@@ -5,6 +5,7 @@
 #include "vtkObjectFactory.h"
 
 #include <cmath>
+#include <typeinfo>
 
 vtkStandardNewMacro(vtkParametricRevolution);
 
@@ -49,6 +50,13 @@ void vtkParametricRevolution::EvaluateTerms(
 void vtkParametricRevolution::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
   int count, double* const* P, double* const* Du, double* const* Dv)
 {
+  // The loop below repeats this class's EvaluateTerms(); a subclass that overrides
+  // EvaluateTerms() alone gets its own shape from the per-point block instead.
+  if (typeid(*this) != typeid(vtkParametricRevolution))
+  {
+    this->vtkParametricSeparableFunction::EvaluateTermsBlock(uTerms, vTerms, count, P, Du, Dv);
+    return;
+  }
   // EvaluateTerms()' products of the row, in its order, so the results are the same bits.
   const double twoPi = 2.0 * vtkMath::Pi();
   const double r = vTerms[0], y = vTerms[1], dr = vTerms[2], dy = vTerms[3];

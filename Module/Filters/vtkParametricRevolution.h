@@ -28,7 +28,11 @@ public:
   ///@{
   /**
    * The split evaluation (see vtkParametricSeparableFunction). An invalid or missing
-   * profile is reported as an error and gives zeros.
+   * profile is reported as an error and gives zeros. EvaluateTermsBlock() is the fast
+   * path: a vectorised copy of EvaluateTerms() used only when the object is exactly a
+   * vtkParametricRevolution. A subclass that overrides EvaluateTerms() alone is honoured
+   * (the source then calls its EvaluateTerms() per point); one that wants the speed back
+   * overrides EvaluateTermsBlock() too.
    */
   int GetNumberOfUTerms() override { return 2; }
   int GetNumberOfVTerms() override { return 4; }

@@ -12,7 +12,11 @@
  * - EvaluateTerms(uTerms, vTerms, P, D): the point and its derivatives from both, cheaply.
  * Evaluate() is exactly these three calls, so the split and the plain evaluation give
  * identical results. EvaluateTermsBlock() is EvaluateTerms() for a run of points of one
- * row, which subclasses may override with a loop the compiler vectorises.
+ * row, which subclasses may override with a loop the compiler vectorises: the fast path.
+ * EvaluateTerms() stays the customisation point: a class whose EvaluateTermsBlock() copies
+ * its EvaluateTerms() uses that copy only for objects of exactly its own type, so that a
+ * subclass overriding EvaluateTerms() alone gets its own shape from Evaluate() and from
+ * vtkParametricSurfaceSource alike.
  * vtkParametricSurfaceSource uses the split for any such function.
  *
  * @sa vtkParametricSurfaceSource vtkParametricSphere vtkParametricRevolution

@@ -4,6 +4,7 @@
 #include "vtkObjectFactory.h"
 
 #include <cmath>
+#include <typeinfo>
 
 vtkStandardNewMacro(vtkParametricSphere);
 
@@ -49,6 +50,13 @@ void vtkParametricSphere::EvaluateTerms(
 void vtkParametricSphere::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
   int count, double* const* P, double* const* Du, double* const* Dv)
 {
+  // The loop below repeats this class's EvaluateTerms(); a subclass that overrides
+  // EvaluateTerms() alone gets its own shape from the per-point block instead.
+  if (typeid(*this) != typeid(vtkParametricSphere))
+  {
+    this->vtkParametricSeparableFunction::EvaluateTermsBlock(uTerms, vTerms, count, P, Du, Dv);
+    return;
+  }
   // EvaluateTerms() with its products that depend on v only taken out of the loop, in the
   // same order of operations, so the results are the same bits.
   const double twoPi = 2.0 * vtkMath::Pi();

@@ -32,7 +32,13 @@ public:
   ///@}
 
   ///@{
-  /** The split evaluation (see vtkParametricSeparableFunction). */
+  /**
+   * The split evaluation (see vtkParametricSeparableFunction). EvaluateTermsBlock() is the
+   * fast path: a vectorised copy of EvaluateTerms() used only when the object is exactly a
+   * vtkParametricSphere. A subclass that overrides EvaluateTerms() alone is honoured (the
+   * source then calls its EvaluateTerms() per point); one that wants the speed back
+   * overrides EvaluateTermsBlock() too.
+   */
   int GetNumberOfUTerms() override { return 2; }
   int GetNumberOfVTerms() override { return 2; }
   void EvaluateUTerms(double u, double* terms) override;

@@ -51,7 +51,7 @@ constexpr double LimitStep = 1e-4;
 struct Grid
 {
   vtkParametricFunction* Function = nullptr;
-  int U = 1;
+  vtkIdType U = 1;       // cells per row (vtkIdType: U + 1 and the indexes below fit)
   vtkIdType Row0 = 0;    // first point row of this piece
   vtkIdType NumRows = 0; // point rows in this piece
   double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
@@ -317,6 +317,11 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
 #else
 #define SURFACEDETAIL_WIDE_VECTORS
 #endif
+#if defined(__GNUC__) || defined(__clang__)
+#define SURFACEDETAIL_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define SURFACEDETAIL_ALWAYS_INLINE
+#endif
 
 // Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
 constexpr int BlockSize = 64;
@@ -464,15 +469,16 @@ void CheckFinite(int count, const double* __restrict px, const double* __restric
  * repeat, with w = cross(N,T).dP/dt of constant sign. Elsewhere regular[k] is 0 and the
  * values are meaningless: the caller replaces them. Restrict parameters rather than locals:
  * the compiler does not check that many pointers at run time and would stay scalar.
+ * Always inlined, so that each target clone below vectorises it for its own instruction set.
  */
 template <bool WithTangents>
-SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
-  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
-  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
-  const double* __restrict dvy, const double* __restrict dvz, double orientation,
-  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
-  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
-  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+SURFACEDETAIL_ALWAYS_INLINE inline void CheckFiniteAndFramesRun(int count,
+  const double* __restrict px, const double* __restrict py, const double* __restrict pz,
+  const double* __restrict dux, const double* __restrict duy, const double* __restrict duz,
+  const double* __restrict dvx, const double* __restrict dvy, const double* __restrict dvz,
+  double orientation, double tangentSign, double handedness, double* __restrict nonFinite,
+  double* __restrict regular, double* __restrict n0, double* __restrict n1, double* __restrict n2,
+  double* __restrict t0, double* __restrict t1, double* __restrict t2, double* __restrict t3)
 {
   for (int k = 0; k < count; ++k)
   {
@@ -504,6 +510,31 @@ SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __
       t3[k] = handedness;
     }
   }
+}
+
+// Two plain functions rather than one template: clang rejects target_clones on templates.
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndNormals(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+{
+  CheckFiniteAndFramesRun<false>(count, px, py, pz, dux, duy, duz, dvx, dvy, dvz, orientation,
+    tangentSign, handedness, nonFinite, regular, n0, n1, n2, t0, t1, t2, t3);
+}
+
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+{
+  CheckFiniteAndFramesRun<true>(count, px, py, pz, dux, duy, duz, dvx, dvy, dvz, orientation,
+    tangentSign, handedness, nonFinite, regular, n0, n1, n2, t0, t1, t2, t3);
 }
 
 // Points and point arrays of one piece; each point is computed from its own (i, j) alone,
@@ -559,10 +590,10 @@ struct PointWorker
       g.EvaluateBlock(col, j, count, P, Du, Dv);
       if (frame)
       {
-        (this->Tangents ? CheckFiniteAndFrames<true> : CheckFiniteAndFrames<false>)(count,
-          blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0],
-          blockDv[1], blockDv[2], g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular,
-          blockN[0], blockN[1], blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
+        (this->Tangents ? CheckFiniteAndFrames : CheckFiniteAndNormals)(count, blockP[0], blockP[1],
+          blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0], blockDv[1], blockDv[2],
+          g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular, blockN[0], blockN[1],
+          blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
         for (int k = 0; k < count; ++k)
         {
           if (regular[k] != 0.0)
@@ -717,11 +748,11 @@ void Ramp(vtkIdType begin, vtkIdType end, Id* __restrict offsets, bool stream)
 // the connectivity of the first shifted by a multiple of the row length, so each row is one
 // vectorisable add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
 template <typename Id>
-void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connectivity)
+void BuildTriangles(vtkIdType numRows, vtkIdType U, bool flip, Id* offsets, Id* connectivity)
 {
-  const vtkIdType rowValues = 6 * static_cast<vtkIdType>(U);
+  const vtkIdType rowValues = 6 * U;
   std::vector<Id> pattern(rowValues);
-  for (int i = 0; i < U; ++i)
+  for (vtkIdType i = 0; i < U; ++i)
   {
     const Id p00 = static_cast<Id>(i);
     const Id p10 = p00 + 1;
@@ -757,7 +788,7 @@ void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connec
 
 // Null when the memory is not available.
 template <typename IdArray>
-vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, int U, bool flip)
+vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, vtkIdType U, bool flip)
 {
   using Id = typename IdArray::ValueType;
   const vtkIdType numTriangles = 2 * numRows * U;
@@ -809,7 +840,11 @@ Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tc
   {
     return Outcome::OutOfMemory;
   }
-  worker.Stream = static_cast<std::size_t>(numPoints) * (3 * sizeof(Real) + 28) > StreamingBytes;
+  // The bytes the workers write per point: the arrays asked for.
+  const std::size_t bytesPerPoint = 3 * sizeof(Real) + (normals ? 3 * sizeof(float) : 0) +
+    (tcoords ? 2 * sizeof(float) : 0) + (tangents ? 4 * sizeof(float) : 0) +
+    (derivatives ? 6 * sizeof(Real) : 0);
+  worker.Stream = static_cast<std::size_t>(numPoints) * bytesPerPoint > StreamingBytes;
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   vtkSMPTools::For(0, numPoints, 4096, worker);
@@ -970,9 +1005,18 @@ int vtkParametricSurfaceSource::RequestData(
   const vtkIdType U = this->UResolution;
   const vtkIdType V = this->VResolution;
   const vtkIdType rowLength = U + 1;
-  if (rowLength * (V + 1) > std::numeric_limits<vtkIdType>::max() / 8)
+  // Each factor is below 2^31, so the products are exact in vtkIdType. The biggest array
+  // per point has 32 bytes (double points or derivatives: 24, float tangents: 16), the
+  // connectivity 48 bytes per quad (6 ids of 8 bytes): both must be indexable in bytes.
+  constexpr vtkIdType mostIndex = std::numeric_limits<vtkIdType>::max();
+  if (rowLength * (V + 1) > mostIndex / 32 || U * V > mostIndex / 48)
   {
-    vtkErrorMacro("Resolution " << U << " x " << V << " is too large to index.");
+    vtkErrorMacro("Resolution " << U << " x " << V << " is too large: (UResolution+1) x "
+                                << "(VResolution+1) = " << rowLength * (V + 1)
+                                << " points (at most " << mostIndex / 32 << ") and 2 x "
+                                << "UResolution x VResolution = " << 2 * U * V
+                                << " triangles (at most " << 2 * (mostIndex / 48)
+                                << ") must fit the output's arrays: use smaller resolutions.");
     return 0;
   }
 

@@ -50,8 +50,11 @@
  * Speed: a vtkParametricSeparableFunction (all of SurfaceDetail's functions) is evaluated
  * from per-row and per-column terms, a run of a row at a time; big output arrays are 2 MB
  * huge pages kept for reuse when the previous output is released, so a re-executing source
- * writes into warm memory (the environment variable SURFACEDETAIL_ARRAY_CACHE_MB bounds
- * that cache, default 1024, 0 turns it off; idle blocks go back to the system after 5 s).
+ * writes into warm memory. The environment variable SURFACEDETAIL_ARRAY_CACHE_MB bounds
+ * that cache in MiB (default 1024, 0 turns it off); it is read once, when the process first
+ * allocates or frees such an array (the first call of any cache function). A cached block
+ * unused for 5 s does not go back to the system by itself: it goes back at the first
+ * allocation or release of such an array after that time, so an idle process keeps it.
  *
  * The function is evaluated from several threads at once. VTK's functions and SurfaceDetail's
  * allow that; a function that builds state lazily is evaluated once before the threads start.

@@ -6,9 +6,11 @@
 #include <cstring>
 #include <map>
 #include <mutex>
+#include <new>
 #include <unordered_map>
 
 #if defined(__linux__)
+#include <pthread.h>
 #include <sys/mman.h>
 #define SURFACEDETAIL_MEMORY_MMAP 1
 #endif
@@ -122,7 +124,7 @@ struct State
 
   // The smallest cached block of at least `bytes`, split so that only `bytes` leave the
   // cache; nullptr when none fits.
-  void* Take(std::size_t bytes)
+  void* Take(std::size_t bytes) noexcept
   {
     auto best = this->Cache.end();
     for (auto it = this->Cache.begin(); it != this->Cache.end(); ++it)
@@ -143,15 +145,23 @@ struct State
     this->CachedBytes -= block.Bytes;
     if (block.Bytes > bytes)
     {
-      this->Cache.emplace(p + bytes, CachedBlock{ block.Bytes - bytes, block.LastUsed });
-      this->CachedBytes += block.Bytes - bytes;
+      try
+      {
+        this->Cache.emplace(p + bytes, CachedBlock{ block.Bytes - bytes, block.LastUsed });
+        this->CachedBytes += block.Bytes - bytes;
+      }
+      catch (const std::bad_alloc&)
+      {
+        // No memory for the cache's bookkeeping: the rest goes back to the system.
+        munmap(p + bytes, block.Bytes - bytes);
+      }
     }
     return p;
   }
 
   // Keeps a released block, joined with the cached blocks right before and after it so
   // that a later, bigger request can still be served warm.
-  void Keep(char* p, std::size_t bytes, Clock::time_point now)
+  void Keep(char* p, std::size_t bytes, Clock::time_point now) noexcept
   {
     auto next = this->Cache.lower_bound(p);
     if (next != this->Cache.end() && p + bytes == next->first)
@@ -171,16 +181,65 @@ struct State
         this->Cache.erase(previous);
       }
     }
-    this->Cache.emplace(p, CachedBlock{ bytes, now });
-    this->CachedBytes += bytes;
+    try
+    {
+      this->Cache.emplace(p, CachedBlock{ bytes, now });
+      this->CachedBytes += bytes;
+    }
+    catch (const std::bad_alloc&)
+    {
+      // Release() runs in vtkBuffer's destructor, where an exception would terminate:
+      // without room to record the block, it goes back to the system.
+      munmap(p, bytes);
+    }
   }
 };
 
 // Never destroyed: VTK arrays held by static objects may be released after main().
+State* TheState = nullptr;
+
+// A fork() while another thread holds the mutex would leave the child's copy locked for
+// ever (that thread does not exist in the child). The handlers take the mutex around
+// fork(), so the state is consistent in both processes, and the child starts a fresh,
+// unlocked mutex; the child keeps the cache (its mappings are inherited).
+void LockBeforeFork()
+{
+  TheState->Mutex.lock();
+}
+
+void UnlockInParent()
+{
+  TheState->Mutex.unlock();
+}
+
+void ResetInChild()
+{
+  new (&TheState->Mutex) std::mutex;
+}
+
 State& GetState()
 {
-  static State* const state = new State;
+  static State* const state = []()
+  {
+    TheState = new State;
+    pthread_atfork(&LockBeforeFork, &UnlockInParent, &ResetInChild);
+    return TheState;
+  }();
   return *state;
+}
+
+// GetState() for Allocate() and Release(), which must not throw: nullptr when even the
+// state cannot be made (then no big block was ever handed out).
+State* FindState() noexcept
+{
+  try
+  {
+    return &GetState();
+  }
+  catch (...)
+  {
+    return nullptr;
+  }
 }
 #endif
 } // namespace
@@ -204,10 +263,15 @@ std::size_t CacheLimitFromEnvironment()
 }
 
 //------------------------------------------------------------------------------
-void* Allocate(std::size_t bytes)
+void* Allocate(std::size_t bytes) noexcept
 {
 #if defined(SURFACEDETAIL_MEMORY_MMAP)
-  State& state = GetState();
+  State* found = FindState();
+  if (!found)
+  {
+    return std::malloc(bytes > 0 ? bytes : 1);
+  }
+  State& state = *found;
   std::lock_guard<std::mutex> lock(state.Mutex);
   state.Trim(Clock::now(), state.IdleSeconds);
   if (bytes >= HugePageBytes && bytes <= SIZE_MAX - 2 * HugePageBytes)
@@ -227,7 +291,16 @@ void* Allocate(std::size_t bytes)
         return nullptr;
       }
     }
-    state.Live.emplace(p, rounded);
+    try
+    {
+      state.Live.emplace(p, rounded);
+    }
+    catch (const std::bad_alloc&)
+    {
+      // Without a record of its size the block could not be released: give it back now.
+      munmap(p, rounded);
+      return nullptr;
+    }
     return p;
   }
 #endif
@@ -235,10 +308,16 @@ void* Allocate(std::size_t bytes)
 }
 
 //------------------------------------------------------------------------------
-void Release(void* p)
+void Release(void* p) noexcept
 {
 #if defined(SURFACEDETAIL_MEMORY_MMAP)
-  State& state = GetState();
+  State* found = FindState();
+  if (!found)
+  {
+    std::free(p);
+    return;
+  }
+  State& state = *found;
   std::lock_guard<std::mutex> lock(state.Mutex);
   const Clock::time_point now = Clock::now();
   state.Trim(now, state.IdleSeconds);

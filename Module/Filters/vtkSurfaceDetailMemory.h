@@ -12,15 +12,22 @@
  *   sources and vtkDataObject::PrepareForNewData release them first), so a re-executing
  *   pipeline (a user dragging a resolution or parameter slider) gets warm memory back,
  *   with no page fault and no zeroing. The cache holds at most GetCacheLimit() bytes
- *   (default 1 GiB; the environment variable SURFACEDETAIL_ARRAY_CACHE_MB sets it in MiB
- *   when the process first allocates, 0 turns the cache off), and blocks unused for
- *   GetCacheIdleTime() seconds (default 5) go back to the system at the next
- *   Allocate() or Release().
+ *   (default 1 GiB; the environment variable SURFACEDETAIL_ARRAY_CACHE_MB sets it in MiB,
+ *   0 turns the cache off; it is read once, at the first call of any function of this
+ *   header except CacheLimitFromEnvironment(), and SetCacheLimit() overrides it).
+ *   A cached block unused for GetCacheIdleTime() seconds (default 5) does not go back by
+ *   itself (there is no timer thread): it goes back to the system at the first
+ *   Allocate() or Release() after that time, or at TrimCache(). An idle process
+ *   therefore keeps up to the limit of cached memory until it allocates or frees again
+ *   or calls TrimCache().
  *
  * The array stays an ordinary VTK array: VTK releases its memory through the array's free
  * function (Release below), and when VTK grows such an array it copies it into memory of
  * its own. Small blocks (below one huge page) and systems other than Linux take the
- * ordinary malloc. Thread-safe.
+ * ordinary malloc. Thread-safe, and safe across fork() (handlers installed with
+ * pthread_atfork keep the cache's lock usable in the child, which keeps the cache).
+ * Allocate() and Release() never throw: when the cache cannot record a block, the block
+ * goes back to the system (Allocate() then returns nullptr).
  *
  * Shared by the filters of this module; not installed.
  */
@@ -32,6 +39,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace vtkSurfaceDetailMemory
 {
@@ -40,11 +48,11 @@ constexpr std::size_t HugePageBytes = std::size_t(2) << 20;
 /// Memory of at least `bytes`, to be given back with Release(); huge-page backed (and
 /// taken from the cache when a freed block fits) when `bytes` is at least one huge page
 /// and the system supports it. Not initialised. nullptr on failure.
-SURFACEDETAILFILTERS_EXPORT void* Allocate(std::size_t bytes);
+SURFACEDETAILFILTERS_EXPORT void* Allocate(std::size_t bytes) noexcept;
 
 /// Gives back memory from Allocate() (nullptr is allowed): big blocks go to the cache
 /// while it has room, the rest to the system.
-SURFACEDETAILFILTERS_EXPORT void Release(void* p);
+SURFACEDETAILFILTERS_EXPORT void Release(void* p) noexcept;
 
 ///@{
 /// Most bytes the cache keeps (0: no cache). Lowering it gives back the excess at once.
@@ -64,7 +72,8 @@ SURFACEDETAILFILTERS_EXPORT double GetCacheIdleTime();
 SURFACEDETAILFILTERS_EXPORT std::size_t TrimCache(double idleSeconds = 0.0);
 
 /// The limit SURFACEDETAIL_ARRAY_CACHE_MB asks for now (the default when it is unset or
-/// not a whole number of MiB); the cache reads it once, when the process first allocates.
+/// not a whole number of MiB); the cache reads it once, at the first call of any other
+/// function of this header.
 SURFACEDETAILFILTERS_EXPORT std::size_t CacheLimitFromEnvironment();
 
 /// What the cache holds and how often it served a big Allocate().
@@ -79,11 +88,18 @@ SURFACEDETAILFILTERS_EXPORT CacheStatistics GetCacheStatistics();
 
 /// Gives `array` storage for `tuples` tuples of its current number of components, without
 /// initialising the values (the caller writes every one). Returns false (array untouched)
-/// when the memory is not available.
+/// when the memory is not available, or when `tuples` is negative or the size in bytes
+/// does not fit a vtkIdType and a std::size_t.
 template <typename ValueT>
 bool AllocateTuples(vtkAOSDataArrayTemplate<ValueT>* array, vtkIdType tuples)
 {
-  const vtkIdType values = tuples * array->GetNumberOfComponents();
+  const vtkIdType components = array->GetNumberOfComponents();
+  if (tuples < 0 || components < 1 || tuples > std::numeric_limits<vtkIdType>::max() / components ||
+    static_cast<std::uint64_t>(tuples * components) > SIZE_MAX / sizeof(ValueT))
+  {
+    return false;
+  }
+  const vtkIdType values = tuples * components;
   void* p = Allocate(static_cast<std::size_t>(values) * sizeof(ValueT));
   if (!p)
   {

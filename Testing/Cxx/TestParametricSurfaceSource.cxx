@@ -39,10 +39,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -294,6 +298,16 @@ TEST(ParametricSurfaceSource, BadInputIsAClearError)
   source->SetUResolution(8);
   source->SetVResolution(-3);
   expectError(source, "at least 1");
+  // Point and triangle counts beyond what the output's arrays can index (their bytes
+  // would overflow 64 bits): an error naming the products, before any memory is asked for.
+  source->SetUResolution(VTK_INT_MAX);
+  source->SetVResolution(VTK_INT_MAX);
+  expectError(source, "= 4611686018427387904 points"); // 2^31 x 2^31
+  expectError(source, "= 9223372028264841218 triangles");
+  source->SetUResolution(VTK_INT_MAX - 1);
+  source->SetVResolution((1 << 29) - 1);
+  expectError(source, "= 1152921504069976064 points"); // (2^31 - 1) x 2^29: 24 bytes each
+  source->SetUResolution(8);
   source->SetVResolution(4);
 
   source->GenerateTangentsOn();
@@ -621,4 +635,284 @@ TEST(ParametricSurfaceSource, VTKClosedSurfacesFaceOutward)
   EXPECT_LT(angle, 1e-6);
   vtkNew<vtkParametricDonut> donut;
   EXPECT_GT(MinOutwardness(run(donut), ring(donut->GetRingRadius())), 1 - 1e-6);
+}
+
+namespace
+{
+// A user subclass that changes the shape through EvaluateTerms() alone (the customisation
+// point of vtkParametricSeparableFunction): the surface stretched 3 times along y.
+template <typename Base>
+class StretchedY : public Base
+{
+public:
+  static StretchedY* New()
+  {
+    auto* object = new StretchedY;
+    object->InitializeObjectBase();
+    return object;
+  }
+  void EvaluateTerms(
+    const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override
+  {
+    this->Base::EvaluateTerms(uTerms, vTerms, Pt, Duvw);
+    Pt[1] *= 3.0;
+    Duvw[1] *= 3.0;
+    Duvw[4] *= 3.0;
+  }
+};
+
+template <typename Base>
+void ExpectSubclassShapeIsHonoured()
+{
+  vtkNew<Base> plain;
+  vtkNew<StretchedY<Base>> stretched;
+  // 70 columns: more than one run of the source's row loop.
+  auto plainSource = MakeSource(plain, 70, 9);
+  auto stretchedSource = MakeSource(stretched, 70, 9);
+  for (auto* source : { plainSource.Get(), stretchedSource.Get() })
+  {
+    source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    source->Update();
+  }
+  vtkDataArray* a = plainSource->GetOutput()->GetPoints()->GetData();
+  vtkDataArray* b = stretchedSource->GetOutput()->GetPoints()->GetData();
+  vtkDataArray* da = plainSource->GetOutput()->GetPointData()->GetArray("dPdv");
+  vtkDataArray* db = stretchedSource->GetOutput()->GetPointData()->GetArray("dPdv");
+  ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+  int bad = 0;
+  for (vtkIdType id = 0; id < a->GetNumberOfTuples(); ++id)
+  {
+    // Multiplying by 3 is exact up to rounding the same way in both: compare the bits.
+    bad += b->GetComponent(id, 0) != a->GetComponent(id, 0) ||
+      b->GetComponent(id, 1) != 3.0 * a->GetComponent(id, 1) ||
+      b->GetComponent(id, 2) != a->GetComponent(id, 2) ||
+      db->GetComponent(id, 1) != 3.0 * da->GetComponent(id, 1);
+  }
+  EXPECT_EQ(bad, 0) << plain->GetClassName();
+  // And Evaluate() gives the same point as the source at a grid point.
+  double uvw[3] = { 3.0 / 70.0, 4.0 / 9.0, 0.0 }, P[3], D[9];
+  stretched->Evaluate(uvw, P, D);
+  const vtkIdType id = 4 * 71 + 3;
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(b->GetComponent(id, c), P[c], 1e-12);
+  }
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, SubclassOverridingEvaluateTermsIsHonoured)
+{
+  ExpectSubclassShapeIsHonoured<vtkParametricSphere>();
+  ExpectSubclassShapeIsHonoured<vtkParametricDonut>();
+  ExpectSubclassShapeIsHonoured<vtkParametricRevolution>();
+}
+
+namespace
+{
+// EvaluateTermsBlock() against EvaluateTerms() point by point, bit for bit, for every run
+// length the source uses (1..64) and random terms of real parameters.
+int CountBlockDifferences(vtkParametricSeparableFunction* f, std::uint64_t seed)
+{
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  constexpr int N = vtkParametricSeparableFunction::MaximumNumberOfTerms;
+  int bad = 0;
+  for (int rep = 0; rep < 3; ++rep)
+  {
+    for (int count = 1; count <= 64; ++count)
+    {
+      double uTerms[N][64], vTerms[N];
+      f->EvaluateVTerms(unit(random), vTerms);
+      for (int k = 0; k < count; ++k)
+      {
+        double t[N];
+        f->EvaluateUTerms(unit(random), t);
+        for (int i = 0; i < f->GetNumberOfUTerms(); ++i)
+        {
+          uTerms[i][k] = t[i];
+        }
+      }
+      const double* u[N];
+      for (int i = 0; i < N; ++i)
+      {
+        u[i] = uTerms[i];
+      }
+      double P[3][64], Du[3][64], Dv[3][64];
+      double* p[3] = { P[0], P[1], P[2] };
+      double* du[3] = { Du[0], Du[1], Du[2] };
+      double* dv[3] = { Dv[0], Dv[1], Dv[2] };
+      f->EvaluateTermsBlock(u, vTerms, count, p, du, dv);
+      for (int k = 0; k < count; ++k)
+      {
+        double point[N], q[3], d[9];
+        for (int i = 0; i < f->GetNumberOfUTerms(); ++i)
+        {
+          point[i] = uTerms[i][k];
+        }
+        f->EvaluateTerms(point, vTerms, q, d);
+        for (int c = 0; c < 3; ++c)
+        {
+          bad += std::memcmp(&q[c], &P[c][k], sizeof(double)) != 0;
+          bad += std::memcmp(&d[c], &Du[c][k], sizeof(double)) != 0;
+          bad += std::memcmp(&d[3 + c], &Dv[c][k], sizeof(double)) != 0;
+        }
+      }
+    }
+  }
+  return bad;
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, EvaluateTermsBlockIsEvaluateTermsBitForBit)
+{
+  vtkNew<vtkParametricSphere> sphere;
+  sphere->SetRadius(1.7);
+  vtkNew<vtkParametricDonut> donut;
+  donut->SetRingRadius(1.3);
+  donut->SetCrossSectionRadius(0.45);
+  vtkNew<vtkParametricRevolution> vase;
+  vtkNew<vtkParametricRevolution> vaseByArcLength;
+  vaseByArcLength->GetProfile()->ArcLengthParameterizationOn();
+  EXPECT_EQ(CountBlockDifferences(sphere, 1), 0);
+  EXPECT_EQ(CountBlockDifferences(donut, 2), 0);
+  EXPECT_EQ(CountBlockDifferences(vase, 3), 0);
+  EXPECT_EQ(CountBlockDifferences(vaseByArcLength, 4), 0);
+}
+
+namespace
+{
+vtkSmartPointer<vtkParametricSurfaceSource> BigFloatDonut(vtkParametricDonut* donut)
+{
+  // 1000 x 701 points of 48 bytes (float points, normals, texture coordinates, tangents)
+  // and 1.4M triangles: 34 MB of point arrays and 22 MB of connectivity, above the 8 MB
+  // from which the source writes with streaming stores, and many blocks of 64 points.
+  auto source = MakeSource(donut, 999, 700);
+  source->GenerateDerivativesOff();
+  return source;
+}
+
+// The bytes of `count` tuples of `part` equal those of `whole` from tuple `first`.
+bool SameTuples(vtkDataArray* part, vtkDataArray* whole, vtkIdType first)
+{
+  if (!part || !whole || part->GetDataType() != whole->GetDataType() ||
+    part->GetNumberOfComponents() != whole->GetNumberOfComponents() ||
+    first + part->GetNumberOfTuples() > whole->GetNumberOfTuples())
+  {
+    return false;
+  }
+  const std::size_t tupleBytes =
+    static_cast<std::size_t>(part->GetNumberOfComponents()) * part->GetDataTypeSize();
+  return std::memcmp(part->GetVoidPointer(0),
+           static_cast<const char*>(whole->GetVoidPointer(0)) + first * tupleBytes,
+           static_cast<std::size_t>(part->GetNumberOfTuples()) * tupleBytes) == 0;
+}
+} // namespace
+
+TEST(ParametricSurfaceSource, BigFloatOutputIsTheClosedFormAtAnySplit)
+{
+  vtkNew<vtkParametricDonut> donut;
+  const double R = 1.2, r = 0.4;
+  donut->SetRingRadius(R);
+  donut->SetCrossSectionRadius(r);
+  const int U = 999, V = 700;
+  const vtkIdType rowLength = U + 1;
+
+  std::vector<vtkSmartPointer<vtkPolyData>> wholes;
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    auto source = BigFloatDonut(donut);
+    source->Update();
+    wholes.emplace_back(source->GetOutput());
+  }
+  vtkSMPTools::Initialize(0);
+  vtkPolyData* whole = wholes[0];
+  ASSERT_EQ(whole->GetNumberOfPoints(), rowLength * (V + 1));
+  ASSERT_NE(vtkFloatArray::SafeDownCast(whole->GetPoints()->GetData()), nullptr);
+  const char* names[] = { "Normals", "TCoords", "Tangents" };
+
+  // One thread or two: the same bytes.
+  EXPECT_TRUE(SameArrays(whole->GetPoints()->GetData(), wholes[1]->GetPoints()->GetData()));
+  for (const char* name : names)
+  {
+    EXPECT_TRUE(
+      SameArrays(whole->GetPointData()->GetArray(name), wholes[1]->GetPointData()->GetArray(name)))
+      << name;
+  }
+  vtkCellArray* cells = whole->GetPolys();
+  EXPECT_TRUE(
+    SameArrays(cells->GetConnectivityArray(), wholes[1]->GetPolys()->GetConnectivityArray()));
+  EXPECT_TRUE(SameArrays(cells->GetOffsetsArray(), wholes[1]->GetPolys()->GetOffsetsArray()));
+
+  // Positions, normals and texture coordinates against the donut's closed form, in double:
+  // only the rounding to float separates them.
+  auto* points = vtkFloatArray::SafeDownCast(whole->GetPoints()->GetData());
+  auto* normals = vtkFloatArray::SafeDownCast(whole->GetPointData()->GetArray("Normals"));
+  auto* tcoords = vtkFloatArray::SafeDownCast(whole->GetPointData()->GetArray("TCoords"));
+  ASSERT_NE(normals, nullptr);
+  ASSERT_NE(tcoords, nullptr);
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double pointTolerance = 4 * FLT_EPSILON * (R + r);
+  const double unitTolerance = 4 * FLT_EPSILON;
+  double worstPoint = 0, worstNormal = 0, worstTCoord = 0;
+  for (int j = 0; j <= V; ++j)
+  {
+    const double v = static_cast<double>(j) / V;
+    for (int i = 0; i <= U; ++i)
+    {
+      const double u = static_cast<double>(i) / U;
+      const vtkIdType id = i + j * rowLength;
+      const double ring = R + r * std::cos(twoPi * v);
+      const double exact[3] = { ring * std::cos(twoPi * u), ring * std::sin(twoPi * u),
+        r * std::sin(twoPi * v) };
+      const double outward[3] = { std::cos(twoPi * v) * std::cos(twoPi * u),
+        std::cos(twoPi * v) * std::sin(twoPi * u), std::sin(twoPi * v) };
+      for (int c = 0; c < 3; ++c)
+      {
+        worstPoint = std::max(worstPoint, std::abs(points->GetValue(3 * id + c) - exact[c]));
+        worstNormal = std::max(worstNormal, std::abs(normals->GetValue(3 * id + c) - outward[c]));
+      }
+      worstTCoord = std::max(worstTCoord, std::abs(tcoords->GetValue(2 * id) - u));
+      worstTCoord = std::max(worstTCoord, std::abs(tcoords->GetValue(2 * id + 1) - v));
+    }
+  }
+  EXPECT_LE(worstPoint, pointTolerance);
+  EXPECT_LE(worstNormal, unitTolerance);
+  EXPECT_LE(worstTCoord, unitTolerance);
+
+  // Pieces: each is the whole's rows cellRow0..cellRow1 of points, byte for byte, and its
+  // triangles are the whole's of those rows, shifted to the piece's first point. Pieces of
+  // a third are still above the streaming threshold; pieces of an eighth (4 MB of point
+  // arrays, 3 MB of connectivity) are written with ordinary stores.
+  for (int numPieces : { 3, 8 })
+  {
+    for (int piece = 0; piece < numPieces; ++piece)
+    {
+      SCOPED_TRACE(std::to_string(numPieces) + " pieces, piece " + std::to_string(piece));
+      auto source = BigFloatDonut(donut);
+      source->UpdatePiece(piece, numPieces, 0);
+      vtkPolyData* out = source->GetOutput();
+      const vtkIdType row0 = piece * V / numPieces, row1 = (piece + 1) * V / numPieces;
+      const vtkIdType first = row0 * rowLength;
+      ASSERT_EQ(out->GetNumberOfPoints(), (row1 - row0 + 1) * rowLength);
+      EXPECT_TRUE(SameTuples(out->GetPoints()->GetData(), whole->GetPoints()->GetData(), first));
+      for (const char* name : names)
+      {
+        EXPECT_TRUE(SameTuples(
+          out->GetPointData()->GetArray(name), whole->GetPointData()->GetArray(name), first))
+          << name;
+      }
+      vtkDataArray* connectivity = out->GetPolys()->GetConnectivityArray();
+      vtkDataArray* wholeConnectivity = cells->GetConnectivityArray();
+      const vtkIdType firstValue = 6 * U * row0;
+      ASSERT_EQ(connectivity->GetNumberOfValues(), 6 * U * (row1 - row0));
+      int badIds = 0;
+      for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+      {
+        badIds += connectivity->GetComponent(k, 0) + first !=
+          wholeConnectivity->GetComponent(firstValue + k, 0);
+      }
+      EXPECT_EQ(badIds, 0);
+    }
+  }
 }

@@ -3,6 +3,7 @@
 // memory, respects its limit, can be turned off, and gives memory back to the system.
 #include "vtkSurfaceDetailMemory.h"
 
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkParametricSurfaceSource.h"
@@ -12,17 +13,57 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <new>
+#include <string>
 #include <thread>
 #include <vector>
 
 #if defined(__linux__)
+#include <csignal>
+#include <sys/wait.h>
 #include <unistd.h>
 #endif
+
+// While set, every operator new of the process throws: the cache's bookkeeping runs out of
+// memory. (A replacement of the global operator new, as the standard allows.)
+static std::atomic<bool> FailOperatorNew{ false };
+
+void* operator new(std::size_t bytes)
+{
+  if (FailOperatorNew.load(std::memory_order_relaxed))
+  {
+    throw std::bad_alloc();
+  }
+  if (void* p = std::malloc(bytes > 0 ? bytes : 1))
+  {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+
+// GCC takes the free() below for a mismatch with operator new, which is this malloc().
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+
+void operator delete(void* p) noexcept
+{
+  std::free(p);
+}
+
+void operator delete(void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
 
 namespace
 {
@@ -37,12 +78,27 @@ void ResetCache()
   vtkSurfaceDetailMemory::SetCacheIdleTime(5.0);
 }
 
+std::size_t RoundedToHugePages(std::size_t bytes)
+{
+  const std::size_t page = vtkSurfaceDetailMemory::HugePageBytes;
+  return (bytes + page - 1) / page * page;
+}
+
+bool SameStatistics(const vtkSurfaceDetailMemory::CacheStatistics& a,
+  const vtkSurfaceDetailMemory::CacheStatistics& b)
+{
+  return a.CachedBytes == b.CachedBytes && a.CachedBlocks == b.CachedBlocks && a.Hits == b.Hits &&
+    a.Misses == b.Misses;
+}
+
 template <typename ArrayT>
 void CheckArray(vtkIdType tuples, int components)
 {
+  const auto initial = vtkSurfaceDetailMemory::GetCacheStatistics();
   vtkNew<ArrayT> array;
   array->SetNumberOfComponents(components);
   ASSERT_TRUE(vtkSurfaceDetailMemory::AllocateTuples(array.Get(), tuples));
+  const auto allocated = vtkSurfaceDetailMemory::GetCacheStatistics();
   EXPECT_EQ(array->GetNumberOfTuples(), tuples);
   EXPECT_EQ(array->GetNumberOfComponents(), components);
   const vtkIdType values = tuples * components;
@@ -51,11 +107,19 @@ void CheckArray(vtkIdType tuples, int components)
     return;
   }
   auto* p = array->GetPointer(0);
-  if (static_cast<std::size_t>(values) * sizeof(*p) >= vtkSurfaceDetailMemory::HugePageBytes)
+  const std::size_t bytes = static_cast<std::size_t>(values) * sizeof(*p);
+  const bool big = bytes >= vtkSurfaceDetailMemory::HugePageBytes;
+#if defined(__linux__)
+  if (big)
   {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % vtkSurfaceDetailMemory::HugePageBytes, 0u);
+    EXPECT_EQ(allocated.Hits + allocated.Misses, initial.Hits + initial.Misses + 1);
+  }
 #endif
+  if (!big)
+  {
+    // A small array is ordinary malloc memory: the cache does not see it.
+    EXPECT_TRUE(SameStatistics(allocated, initial));
   }
   for (vtkIdType i = 0; i < values; ++i)
   {
@@ -64,6 +128,19 @@ void CheckArray(vtkIdType tuples, int components)
   // VTK grows the array through its own reallocation; values must survive.
   array->InsertNextTuple(array->GetTuple(0));
   EXPECT_EQ(array->GetNumberOfTuples(), tuples + 1);
+  EXPECT_NE(array->GetPointer(0), p);
+  const auto grown = vtkSurfaceDetailMemory::GetCacheStatistics();
+#if defined(__linux__)
+  if (big)
+  {
+    // VTK gave the old block back through our free function: it is in the cache now.
+    EXPECT_EQ(grown.CachedBytes, allocated.CachedBytes + RoundedToHugePages(bytes));
+  }
+#endif
+  if (!big)
+  {
+    EXPECT_TRUE(SameStatistics(grown, initial));
+  }
   for (vtkIdType i = 0; i < values; i += 997)
   {
     ASSERT_EQ(array->GetValue(i), static_cast<typename ArrayT::ValueType>(i % 1000));
@@ -103,8 +180,36 @@ vtkSmartPointer<vtkFloatArray> BigArray(std::size_t bytes)
 TEST(TestSurfaceDetailMemory, SmallArrayIsOrdinary)
 {
   ResetCache();
+  const auto before = vtkSurfaceDetailMemory::GetCacheStatistics();
   CheckArray<vtkFloatArray>(10, 3);
   CheckArray<vtkFloatArray>(0, 4);
+  CheckArray<vtkFloatArray>(vtkSurfaceDetailMemory::HugePageBytes / sizeof(float) - 1, 1);
+  EXPECT_TRUE(SameStatistics(vtkSurfaceDetailMemory::GetCacheStatistics(), before));
+}
+
+TEST(TestSurfaceDetailMemory, AllocateTuplesRejectsImpossibleSizes)
+{
+  ResetCache();
+  vtkNew<vtkDoubleArray> array;
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(2);
+  array->SetValue(0, 7.0);
+  const double* storage = array->GetPointer(0);
+  const auto before = vtkSurfaceDetailMemory::GetCacheStatistics();
+  const vtkIdType most = std::numeric_limits<vtkIdType>::max();
+  EXPECT_FALSE(vtkSurfaceDetailMemory::AllocateTuples(array.Get(), -1));
+  EXPECT_FALSE(vtkSurfaceDetailMemory::AllocateTuples(array.Get(), most / 2)); // values overflow
+  EXPECT_FALSE(vtkSurfaceDetailMemory::AllocateTuples(array.Get(), most));
+  vtkNew<vtkDoubleArray> single;
+  single->SetNumberOfComponents(1);
+  // 2^62 doubles: the byte count would wrap to 0 in 64 bits.
+  EXPECT_FALSE(vtkSurfaceDetailMemory::AllocateTuples(single.Get(), vtkIdType(1) << 62));
+  EXPECT_EQ(single->GetNumberOfTuples(), 0);
+  // The arrays are untouched.
+  EXPECT_EQ(array->GetNumberOfTuples(), 2);
+  EXPECT_EQ(array->GetPointer(0), storage);
+  EXPECT_EQ(array->GetValue(0), 7.0);
+  EXPECT_TRUE(SameStatistics(vtkSurfaceDetailMemory::GetCacheStatistics(), before));
 }
 
 TEST(TestSurfaceDetailMemory, BigArrayIsHugePageAlignedAndBehavesAsVTKArray)
@@ -257,6 +362,7 @@ TEST(TestSurfaceDetailMemory, EnvironmentSetsTheLimit)
   // The cache itself reads the variable when the process first allocates: in a fresh
   // process started with 0, released blocks go straight back to the system.
   setenv(name, "0", 1);
+  const std::string style = GTEST_FLAG_GET(death_test_style);
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(
     {
@@ -265,6 +371,7 @@ TEST(TestSurfaceDetailMemory, EnvironmentSetsTheLimit)
       std::exit(off && vtkSurfaceDetailMemory::GetCacheStatistics().CachedBytes == 0 ? 0 : 1);
     },
     testing::ExitedWithCode(0), "");
+  GTEST_FLAG_SET(death_test_style, style);
   unsetenv(name);
 }
 
@@ -309,19 +416,61 @@ TEST(TestSurfaceDetailMemory, ThreadsShareTheCacheSafely)
 {
   ResetCache();
   vtkSurfaceDetailMemory::SetCacheLimit(24 * MiB);
+  const auto before = vtkSurfaceDetailMemory::GetCacheStatistics();
+  // The blocks live now, by address: no two may overlap.
+  std::mutex liveMutex;
+  std::map<const unsigned char*, std::size_t> live;
+  std::atomic<int> overlaps{ 0 }, corrupted{ 0 }, failed{ 0 };
+  auto track = [&](const unsigned char* p, std::size_t bytes)
+  {
+    std::lock_guard<std::mutex> lock(liveMutex);
+    auto next = live.lower_bound(p);
+    if (next != live.end() && next->first < p + bytes)
+    {
+      ++overlaps;
+    }
+    if (next != live.begin() && std::prev(next)->first + std::prev(next)->second > p)
+    {
+      ++overlaps;
+    }
+    live.emplace(p, bytes);
+  };
+  auto untrack = [&](const unsigned char* p)
+  {
+    std::lock_guard<std::mutex> lock(liveMutex);
+    live.erase(p);
+  };
   std::vector<std::thread> threads;
   for (int t = 0; t < 4; ++t)
   {
     threads.emplace_back(
-      [t]()
+      [&, t]()
       {
         for (int i = 0; i < 40; ++i)
         {
-          const std::size_t bytes = (1 + (i * 7 + t) % 5) * MiB + 4096 * t;
+          // At least one huge page, so that every request goes through the cache.
+          const std::size_t bytes = (2 + (i * 7 + t) % 5) * MiB + 4096 * t;
           auto* p = static_cast<unsigned char*>(vtkSurfaceDetailMemory::Allocate(bytes));
-          ASSERT_NE(p, nullptr);
-          std::memset(p, t, bytes);
-          EXPECT_EQ(p[bytes - 1], t);
+          if (!p)
+          {
+            ++failed;
+            continue;
+          }
+          track(p, bytes);
+          const unsigned char value = static_cast<unsigned char>(1 + t + 4 * (i % 60));
+          std::memset(p, value, bytes);
+          // Let the other threads allocate and release meanwhile, then check that none
+          // of them wrote into this block.
+          std::this_thread::yield();
+          for (std::size_t k = 0; k < bytes; ++k)
+          {
+            if (p[k] != value)
+            {
+              ++corrupted;
+              break;
+            }
+          }
+          untrack(p);
           vtkSurfaceDetailMemory::Release(p);
         }
       });
@@ -330,8 +479,114 @@ TEST(TestSurfaceDetailMemory, ThreadsShareTheCacheSafely)
   {
     thread.join();
   }
+  EXPECT_EQ(failed, 0);
+  EXPECT_EQ(overlaps, 0);
+  EXPECT_EQ(corrupted, 0);
   const auto statistics = vtkSurfaceDetailMemory::GetCacheStatistics();
   EXPECT_LE(statistics.CachedBytes, 24 * MiB);
-  EXPECT_GT(statistics.Hits, 0u);
+  EXPECT_EQ(statistics.Hits + statistics.Misses, before.Hits + before.Misses + 4 * 40);
+  EXPECT_GT(statistics.Hits, before.Hits);
+}
+
+TEST(TestSurfaceDetailMemory, AllocateAndReleaseNeverThrow)
+{
+  static_assert(noexcept(vtkSurfaceDetailMemory::Allocate(0)), "Allocate must not throw");
+  static_assert(noexcept(vtkSurfaceDetailMemory::Release(nullptr)), "Release must not throw");
+  ResetCache();
+  // Allocate cannot record the new block: nullptr, and nothing kept.
+  FailOperatorNew = true;
+  void* p = vtkSurfaceDetailMemory::Allocate(4 * MiB);
+  FailOperatorNew = false;
+  EXPECT_EQ(p, nullptr);
+  EXPECT_EQ(vtkSurfaceDetailMemory::GetCacheStatistics().CachedBytes, 0u);
+  // Release (VTK calls it from a destructor) cannot record the block in the cache: the
+  // block goes back to the system.
+  p = vtkSurfaceDetailMemory::Allocate(4 * MiB);
+  ASSERT_NE(p, nullptr);
+  FailOperatorNew = true;
+  vtkSurfaceDetailMemory::Release(p);
+  FailOperatorNew = false;
+  EXPECT_EQ(vtkSurfaceDetailMemory::GetCacheStatistics().CachedBytes, 0u);
+  // A cached block split for a smaller request, with no memory to record either part.
+  vtkSurfaceDetailMemory::Release(vtkSurfaceDetailMemory::Allocate(8 * MiB));
+  EXPECT_EQ(vtkSurfaceDetailMemory::GetCacheStatistics().CachedBytes, 8 * MiB);
+  FailOperatorNew = true;
+  p = vtkSurfaceDetailMemory::Allocate(4 * MiB);
+  FailOperatorNew = false;
+  EXPECT_EQ(p, nullptr);
+  EXPECT_EQ(vtkSurfaceDetailMemory::GetCacheStatistics().CachedBytes, 0u);
+  // The cache still works.
+  vtkSurfaceDetailMemory::Release(vtkSurfaceDetailMemory::Allocate(8 * MiB));
+  EXPECT_EQ(vtkSurfaceDetailMemory::GetCacheStatistics().CachedBytes, 8 * MiB);
+}
+
+TEST(TestSurfaceDetailMemory, ForkWhileAnotherThreadUsesTheCache)
+{
+  ResetCache();
+  // Blocks bigger than the limit are unmapped under the cache's lock: a wide window for
+  // a fork() to happen while the other thread holds it.
+  vtkSurfaceDetailMemory::SetCacheLimit(16 * MiB);
+  auto* cached = static_cast<unsigned char*>(vtkSurfaceDetailMemory::Allocate(8 * MiB));
+  ASSERT_NE(cached, nullptr);
+  std::memset(cached, 0x5a, 8 * MiB);
+  vtkSurfaceDetailMemory::Release(cached);
+  std::atomic<bool> stop{ false };
+  std::thread churn(
+    [&stop]()
+    {
+      while (!stop)
+      {
+        vtkSurfaceDetailMemory::Release(vtkSurfaceDetailMemory::Allocate(64 * MiB));
+      }
+    });
+  int stuck = 0, failed = 0, forkFailed = 0;
+  for (int i = 0; i < 100 && stuck == 0; ++i)
+  {
+    const pid_t pid = fork();
+    if (pid < 0)
+    {
+      ++forkFailed;
+      break;
+    }
+    if (pid == 0)
+    {
+      // The child inherits the cache: the cached block is served warm, then it allocates
+      // and releases fresh memory.
+      const auto before = vtkSurfaceDetailMemory::GetCacheStatistics();
+      auto* p = static_cast<unsigned char*>(vtkSurfaceDetailMemory::Allocate(8 * MiB));
+      bool ok = p == cached && p[12345] == 0x5a &&
+        vtkSurfaceDetailMemory::GetCacheStatistics().Hits == before.Hits + 1;
+      vtkSurfaceDetailMemory::Release(p);
+      void* q = vtkSurfaceDetailMemory::Allocate(32 * MiB);
+      ok = ok && q;
+      vtkSurfaceDetailMemory::Release(q);
+      _exit(ok ? 0 : 1);
+    }
+    // A child that does not finish in 5 s is stuck on the cache's lock.
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    pid_t done = 0;
+    while (
+      (done = waitpid(pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    if (done == 0)
+    {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      ++stuck;
+    }
+    else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
+      ++failed;
+    }
+  }
+  stop = true;
+  churn.join();
+  EXPECT_EQ(forkFailed, 0);
+  EXPECT_EQ(stuck, 0);
+  EXPECT_EQ(failed, 0);
+  vtkSurfaceDetailMemory::TrimCache();
 }
 #endif
