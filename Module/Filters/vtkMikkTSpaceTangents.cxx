@@ -1,12 +1,14 @@
 #include "vtkMikkTSpaceTangents.h"
 
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailMemory.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -31,6 +33,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <new>
 #include <numeric>
@@ -38,10 +41,6 @@
 #include <unordered_map>
 #include <utility>
 #include <vector>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
 
@@ -118,8 +117,6 @@ inline std::uint64_t HashDouble(std::uint64_t h, double v)
   return h;
 }
 
-constexpr std::size_t HugePage = std::size_t(2) << 20;
-
 // An allocator whose resize() leaves new elements default-initialised: the big per-point
 // and per-triangle arrays are written entirely by a parallel pass right after, and
 // zero-filling them first is a serial pass over up to ~100 MB.
@@ -136,38 +133,18 @@ struct NoInitAllocator : std::allocator<T>
   NoInitAllocator(const NoInitAllocator<U>&) noexcept
   {
   }
-  // Big arrays are asked for in transparent huge pages where the system has them: first
-  // touch then faults once per 2 MB instead of once per 4 kB (the faults were a sixth of
-  // the filter's time on a 1M-triangle mesh).
+  // Big arrays in transparent huge pages where the system has them: first touch then
+  // faults once per 2 MB instead of once per 4 kB.
   T* allocate(std::size_t n)
   {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const std::size_t bytes = n * sizeof(T);
-    if (bytes >= HugePage)
+    void* p = vtkSurfaceDetailMemory::Allocate(n * sizeof(T));
+    if (!p)
     {
-      const std::size_t rounded = (bytes + HugePage - 1) / HugePage * HugePage;
-      void* p = std::aligned_alloc(HugePage, rounded);
-      if (!p)
-      {
-        throw std::bad_alloc();
-      }
-      madvise(p, rounded, MADV_HUGEPAGE);
-      return static_cast<T*>(p);
+      throw std::bad_alloc();
     }
-#endif
-    return std::allocator<T>::allocate(n);
+    return static_cast<T*>(p);
   }
-  void deallocate(T* p, std::size_t n)
-  {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (n * sizeof(T) >= HugePage)
-    {
-      std::free(p);
-      return;
-    }
-#endif
-    std::allocator<T>::deallocate(p, n);
-  }
+  void deallocate(T* p, std::size_t) { vtkSurfaceDetailMemory::Release(p); }
   template <typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
   {
@@ -1321,6 +1298,721 @@ private:
   }
 };
 
+// ---------------------------------------------------------------------------------------
+// The fast path, for the usual input: triangles only, point coordinates, normals and
+// texture coordinates in float or double arrays, the default angular threshold, no
+// degenerate or non-finite input, and every vertex a simple fan (one connected run of
+// triangles of one texture orientation, all of which MikkTSpace joins). There every
+// corner of a vertex gets the same frame, so the frames are computed per point, in one
+// parallel pass over a vertex -> corner list, with no per-corner arrays and no point
+// splitting. Anything else makes the fast path give up (Run returns false) and the
+// general algorithm above does the whole job; the checks are conservative, with margins
+// far above the rounding of the quantities they test, so the two paths take the same
+// decisions wherever the fast one finishes.
+
+// acos with an absolute error below 2.2e-8 rad (Abramowitz & Stegun 4.4.46); as a corner
+// weight its relative error is far below what the reference's single precision leaves.
+inline double FastAcos(double x)
+{
+  // Estrin's scheme: a short dependency chain, as a corner's weight waits for it.
+  const double a = std::abs(x), a2 = a * a, a4 = a2 * a2;
+  const double p01 = 1.5707963050 - 0.2145988016 * a, p23 = 0.0889789874 - 0.0501743046 * a;
+  const double p45 = 0.0308918810 - 0.0170881256 * a, p67 = 0.0066700901 - 0.0012624911 * a;
+  const double p = (p01 + p23 * a2) + (p45 + p67 * a2) * a4;
+  const double r = std::sqrt(1.0 - a) * p;
+  return x < 0.0 ? vtkMath::Pi() - r : r;
+}
+
+inline void PrefetchForWrite(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p, 1);
+#else
+  (void)p;
+#endif
+}
+
+// Memory from vtkSurfaceDetailMemory (huge pages for big blocks), not initialised.
+template <typename T>
+class Block
+{
+public:
+  explicit Block(std::size_t n)
+    : Data(static_cast<T*>(vtkSurfaceDetailMemory::Allocate(n * sizeof(T))))
+  {
+    if (!this->Data)
+    {
+      throw std::bad_alloc();
+    }
+  }
+  ~Block() { vtkSurfaceDetailMemory::Release(this->Data); }
+  Block(const Block&) = delete;
+  Block& operator=(const Block&) = delete;
+  T* Get() const { return this->Data; }
+  T& operator[](std::size_t i) const { return this->Data[i]; }
+
+private:
+  T* Data;
+};
+
+// Fans larger than this (poles) go the general way.
+constexpr int MaxFastFan = 32;
+// Margins of the fast path's checks: squared sine of ~0.06 degrees for projections onto
+// the tangent plane, cosine of 89.94 degrees for directions within a quarter turn.
+constexpr double FastProjection2 = 1e-6;
+constexpr double FastCos = 1e-3;
+
+template <typename PT, typename NT, typename TT>
+class FastMikk
+{
+public:
+  FastMikk(const PT* p, const NT* n, const TT* t, int tcStride, vtkIdType nPts)
+    : P(p)
+    , N(n)
+    , T(t)
+    , TcStride(tcStride)
+    , NumberOfPoints(static_cast<std::int32_t>(nPts))
+  {
+  }
+
+  /// Tangents of all points into @a out (4 floats each), or false if the input needs the
+  /// general algorithm (then @a out holds garbage).
+  template <typename IdT>
+  bool Run(const IdT* offsets, const IdT* conn, vtkIdType nTris, float* out)
+  {
+    const std::size_t nt = static_cast<std::size_t>(nTris);
+    Block<std::int32_t> weld(this->NumberOfPoints);
+    if (!this->Weld(weld))
+    {
+      return false;
+    }
+    std::unique_ptr<Block<std::atomic<unsigned char>>> referenced;
+    if (this->Welded)
+    {
+      referenced.reset(new Block<std::atomic<unsigned char>>(this->NumberOfPoints));
+      auto* r = referenced->Get();
+      vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+        [r](vtkIdType b, vtkIdType e)
+        {
+          for (vtkIdType i = b; i < e; ++i)
+          {
+            r[i].store(0, std::memory_order_relaxed);
+          }
+        });
+    }
+    Block<std::int32_t> w(3 * nt);
+    Block<std::array<float, 6>> dir(nt);
+    Block<unsigned char> orient(nt);
+    if (!this->Triangles(offsets, conn, nTris, weld.Get(), referenced ? referenced->Get() : nullptr,
+          w.Get(), dir.Get(), orient.Get()))
+    {
+      return false;
+    }
+    Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
+    Block<std::int32_t> corners(3 * nt);
+    this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get());
+    if (!this->Vertices(w.Get(), dir.Get(), orient.Get(), first.Get(), corners.Get(), weld.Get(),
+          referenced ? referenced->Get() : nullptr, out))
+    {
+      return false;
+    }
+    return true;
+  }
+
+private:
+  const PT* P;
+  const NT* N;
+  const TT* T;
+  const int TcStride;
+  const std::int32_t NumberOfPoints;
+  bool Welded = false;
+
+  V3 Position(std::int32_t i) const
+  {
+    return { double(this->P[3 * i]), double(this->P[3 * i + 1]), double(this->P[3 * i + 2]) };
+  }
+  std::array<double, 2> TCoord(std::int32_t i) const
+  {
+    const TT* t = this->T + std::size_t(this->TcStride) * i;
+    return { double(t[0]), double(t[1]) };
+  }
+  // Hash of a point's values (0 and -0 alike, as they compare equal); false if any value
+  // is not finite. Independent products rather than a chain: the weld is latency bound.
+  bool Hash(std::int32_t i, std::uint64_t& h) const
+  {
+    const TT* t = this->T + std::size_t(this->TcStride) * i;
+    const double v[8] = { double(this->P[3 * i]), double(this->P[3 * i + 1]),
+      double(this->P[3 * i + 2]), double(this->N[3 * i]), double(this->N[3 * i + 1]),
+      double(this->N[3 * i + 2]), double(t[0]), double(t[1]) };
+    static constexpr std::uint64_t K[8] = { 0x9e3779b97f4a7c15ULL, 0xc2b2ae3d27d4eb4fULL,
+      0x165667b19e3779f9ULL, 0xd6e8feb86659fd93ULL, 0xa0761d6478bd642fULL, 0xe7037ed1a0b428dbULL,
+      0x8ebc6af09c88c6e3ULL, 0x589965cc75374cc3ULL };
+    double finite = 0.0;
+    h = 0;
+    for (int c = 0; c < 8; ++c)
+    {
+      finite += v[c] * 0.0;
+      const double x = v[c] == 0.0 ? 0.0 : v[c];
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof(bits));
+      h += bits * K[c];
+    }
+    h ^= h >> 31;
+    h *= 0x7fb5d329728ea185ULL;
+    h ^= h >> 27;
+    h *= 0x81dadef4bc2dd44dULL;
+    h ^= h >> 33;
+    return finite == 0.0;
+  }
+  bool SameValues(std::int32_t i, std::int32_t o) const
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (this->P[3 * i + c] != this->P[3 * o + c] || this->N[3 * i + c] != this->N[3 * o + c])
+      {
+        return false;
+      }
+    }
+    const TT* ti = this->T + std::size_t(this->TcStride) * i;
+    const TT* to = this->T + std::size_t(this->TcStride) * o;
+    return ti[0] == to[0] && ti[1] == to[1];
+  }
+
+  // The weld of the general path, in parallel: points with identical values meet in one
+  // slot of a lock-free open-addressing table, which keeps the smallest id among them, so
+  // the result is the general path's whatever the threads do. Non-finite values anywhere
+  // send the input to the general path (which warns about them).
+  bool Weld(const Block<std::int32_t>& weld)
+  {
+    const std::int32_t n = this->NumberOfPoints;
+    std::uint64_t capacity = 16;
+    while (capacity < 2 * static_cast<std::uint64_t>(n))
+    {
+      capacity *= 2;
+    }
+    const std::uint64_t mask = capacity - 1;
+    Block<std::atomic<std::int32_t>> table(capacity);
+    vtkSMPTools::For(0, vtkIdType(capacity),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType s = b; s < e; ++s)
+        {
+          table[s].store(-1, std::memory_order_relaxed);
+        }
+      });
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, vtkIdType(n),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        // Slots are random places in a table of megabytes: hash a batch of points and
+        // prefetch their slots before inserting any, so that the misses overlap.
+        constexpr vtkIdType Batch = 16;
+        std::uint64_t slot[Batch];
+        for (vtkIdType i0 = b; i0 < e; i0 += Batch)
+        {
+          const vtkIdType m = std::min(Batch, e - i0);
+          for (vtkIdType j = 0; j < m; ++j)
+          {
+            const std::int32_t i = static_cast<std::int32_t>(i0 + j);
+            std::uint64_t h;
+            if (!this->Hash(i, h))
+            {
+              fail.store(true, std::memory_order_relaxed);
+              return;
+            }
+            slot[j] = h & mask;
+            PrefetchForWrite(table.Get() + slot[j]);
+          }
+          for (vtkIdType j = 0; j < m; ++j)
+          {
+            const std::int32_t i = static_cast<std::int32_t>(i0 + j);
+            for (std::uint64_t s = slot[j];; s = (s + 1) & mask)
+            {
+              std::int32_t o = table[s].load(std::memory_order_relaxed);
+              if (o < 0 && table[s].compare_exchange_strong(o, i, std::memory_order_relaxed))
+              {
+                weld[i] = std::int32_t(s);
+                break;
+              }
+              // o is the slot's occupant now; equal points replace it by the smaller id.
+              if (this->SameValues(i, o))
+              {
+                while (i < o && !table[s].compare_exchange_weak(o, i, std::memory_order_relaxed))
+                {
+                }
+                weld[i] = std::int32_t(s);
+                break;
+              }
+            }
+          }
+        }
+      });
+    if (fail)
+    {
+      return false;
+    }
+    std::atomic<bool> welded(false);
+    vtkSMPTools::For(0, vtkIdType(n),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        bool any = false;
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          weld[i] = table[weld[i]].load(std::memory_order_relaxed);
+          any |= weld[i] != i;
+        }
+        if (any)
+        {
+          welded.store(true, std::memory_order_relaxed);
+        }
+      });
+    this->Welded = welded;
+    return true;
+  }
+
+  // Per triangle: welded corners, the directions of dP/ds and dP/dt as the general path's
+  // InitTriangles computes them (then stored in single precision: every use below has a
+  // margin far above that rounding), and the orientation. Quads, larger polygons,
+  // degenerate triangles and triangles without usable derivatives need the general path.
+  template <typename IdT>
+  bool Triangles(const IdT* offsets, const IdT* conn, vtkIdType nTris, const std::int32_t* weld,
+    std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
+    unsigned char* orient) const
+  {
+    if (offsets[nTris] != 3 * nTris)
+    {
+      return false;
+    }
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, nTris,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType t = b; t < e; ++t)
+        {
+          if (offsets[t] != 3 * t || fail.load(std::memory_order_relaxed))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+          std::int32_t pt[3];
+          for (int k = 0; k < 3; ++k)
+          {
+            pt[k] = static_cast<std::int32_t>(conn[3 * t + k]);
+            w[3 * t + k] = this->Welded ? weld[pt[k]] : pt[k];
+            if (referenced)
+            {
+              referenced[pt[k]].store(1, std::memory_order_relaxed);
+            }
+          }
+          const V3 v1 = this->Position(pt[0]), v2 = this->Position(pt[1]),
+                   v3 = this->Position(pt[2]);
+          if (Equal(v1, v2) || Equal(v1, v3) || Equal(v2, v3))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+          const auto t1 = this->TCoord(pt[0]), t2 = this->TCoord(pt[1]), t3 = this->TCoord(pt[2]);
+          const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
+          const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
+          const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
+          const double area2 = t21x * t31y - t21y * t31x;
+          const V3 os = Sub(Scale(t31y, d1), Scale(t21y, d2));
+          const V3 ot = Sub(Scale(t21x, d2), Scale(t31x, d1));
+          const double absArea = std::abs(area2);
+          const double l1 = std::sqrt(Dot(d1, d1)), l2 = std::sqrt(Dot(d2, d2));
+          const double lenOs = std::sqrt(Dot(os, os));
+          const double lenOt = std::sqrt(Dot(ot, ot));
+          if (!NotZero(area2) ||
+            lenOs <= CancellationEps * (std::abs(t31y) * l1 + std::abs(t21y) * l2) ||
+            lenOt <= CancellationEps * (std::abs(t31x) * l1 + std::abs(t21x) * l2) ||
+            !NotZero(lenOs / absArea) || !NotZero(lenOt / absArea))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+          const double sign = area2 > 0.0 ? 1.0 : -1.0;
+          const double ss = sign / lenOs, st = sign / lenOt;
+          dir[t] = { float(ss * os[0]), float(ss * os[1]), float(ss * os[2]), float(st * ot[0]),
+            float(st * ot[1]), float(st * ot[2]) };
+          orient[t] = area2 > 0.0 ? 1 : 0;
+        }
+      });
+    return !fail;
+  }
+
+  // Vertex -> its corners (3 * triangle + corner), each list in triangle order. Two tasks:
+  // the first half of the triangles counts into one array and fills each list from its
+  // front, the second half into another and fills from the back, walking backwards; no
+  // atomics, and the order does not depend on the number of threads.
+  void VertexCorners(
+    const std::int32_t* w, vtkIdType nTris, std::int32_t* first, std::int32_t* corners) const
+  {
+    const std::size_t nv = static_cast<std::size_t>(this->NumberOfPoints);
+    const vtkIdType half = 3 * (nTris / 2), end = 3 * nTris;
+    Block<std::int32_t> count0(nv), count1(nv);
+    std::memset(count0.Get(), 0, nv * sizeof(std::int32_t));
+    std::memset(count1.Get(), 0, nv * sizeof(std::int32_t));
+    vtkSMPTools::For(0, 2, 1,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType part = b; part < e; ++part)
+        {
+          std::int32_t* count = part == 0 ? count0.Get() : count1.Get();
+          for (vtkIdType c = part == 0 ? 0 : half; c < (part == 0 ? half : end); ++c)
+          {
+            ++count[w[c]];
+          }
+        }
+      });
+    std::int32_t sum = 0;
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      const std::int32_t n0 = count0[v], n1 = count1[v];
+      first[v] = sum;
+      count0[v] = sum; // the front cursor
+      sum += n0 + n1;
+      count1[v] = sum; // the back cursor
+    }
+    first[nv] = sum;
+    vtkSMPTools::For(0, 2, 1,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType part = b; part < e; ++part)
+        {
+          if (part == 0)
+          {
+            for (vtkIdType c = 0; c < half; ++c)
+            {
+              corners[count0[w[c]]++] = static_cast<std::int32_t>(c);
+            }
+          }
+          else
+          {
+            for (vtkIdType c = end - 1; c >= half; --c)
+            {
+              corners[--count1[w[c]]] = static_cast<std::int32_t>(c);
+            }
+          }
+        }
+      });
+  }
+
+  bool Vertices(const std::int32_t* w, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+    const std::atomic<unsigned char>* referenced, float* out) const
+  {
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        if (fail.load(std::memory_order_relaxed))
+        {
+          return;
+        }
+        for (std::int32_t v = std::int32_t(b); v < std::int32_t(e); ++v)
+        {
+          if (this->Welded && weld[v] != v)
+          {
+            continue; // a copy of a smaller point, filled below
+          }
+          if (!this->Vertex(v, w, dir, orient, first, corners, out + 4 * std::size_t(v)))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+        }
+      });
+    if (fail)
+    {
+      return false;
+    }
+    if (!this->Welded)
+    {
+      return true;
+    }
+    // Welded points share their vertex's frame if a polygon uses them; the frame of a point
+    // no polygon uses is the default one, as in the general path.
+    auto unused = [&](std::int32_t p, float* t)
+    {
+      const V3 n = this->UnitNormal(p);
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, t);
+    };
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (std::int32_t p = std::int32_t(b); p < std::int32_t(e); ++p)
+        {
+          if (weld[p] == p)
+          {
+            continue;
+          }
+          if (referenced[p].load(std::memory_order_relaxed))
+          {
+            std::copy_n(out + 4 * std::size_t(weld[p]), 4, out + 4 * std::size_t(p));
+          }
+          else
+          {
+            unused(p, out + 4 * std::size_t(p));
+          }
+        }
+      });
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (std::int32_t p = std::int32_t(b); p < std::int32_t(e); ++p)
+        {
+          if (weld[p] == p && !referenced[p].load(std::memory_order_relaxed))
+          {
+            unused(p, out + 4 * std::size_t(p));
+          }
+        }
+      });
+    return true;
+  }
+
+  V3 UnitNormal(std::int32_t v) const
+  {
+    V3 n{ double(this->N[3 * v]), double(this->N[3 * v + 1]), double(this->N[3 * v + 2]) };
+    const double len = std::sqrt(Dot(n, n));
+    if (len > 0.0 && std::isfinite(len))
+    {
+      n = Scale(1.0 / len, n);
+    }
+    return n;
+  }
+
+  // One vertex: false if it is not a simple fan. Loops over the fan are kept apart and
+  // free of early exits (checks are accumulated) so that the compiler can vectorise them.
+  bool Vertex(std::int32_t v, const std::int32_t* w, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    float* out) const
+  {
+    const int k = first[v + 1] - first[v];
+    const V3 n = this->UnitNormal(v);
+    if (k == 0)
+    {
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
+      return true;
+    }
+    if (k > MaxFastFan || !(std::abs(Dot(n, n) - 1.0) < 1e-6))
+    {
+      return false;
+    }
+    std::int32_t tri[MaxFastFan], next[MaxFastFan], prev[MaxFastFan];
+    const std::int32_t* list = corners + first[v];
+    const unsigned char o = orient[list[0] / 3];
+    int same = 1;
+    for (int a = 0; a < k; ++a)
+    {
+      const std::int32_t c = list[a], t = c / 3, i = c - 3 * t;
+      tri[a] = t;
+      next[a] = w[3 * t + (i == 2 ? 0 : i + 1)];
+      prev[a] = w[3 * t + (i == 0 ? 2 : i - 1)];
+      same &= orient[t] == o;
+    }
+    if (!same)
+    {
+      return false;
+    }
+    // Links across the edges at v; each edge must join exactly two triangles or bound the
+    // fan (then the general path's greedy pairing finds the same links), and the links
+    // must chain all the triangles into one run. "Has a predecessor" is a bit mask.
+    int link[MaxFastFan];
+    std::uint32_t hasIn = 0;
+    for (int a = 0; a < k; ++a)
+    {
+      int l = -1, count = 0;
+      for (int b = 0; b < k; ++b)
+      {
+        const bool m = prev[b] == next[a];
+        l = m ? b : l;
+        count += m;
+      }
+      if (count > 1 || (l >= 0 && ((hasIn >> l) & 1u)))
+      {
+        return false;
+      }
+      link[a] = l;
+      hasIn |= l >= 0 ? 1u << l : 0u;
+    }
+    const std::uint32_t noIn = ~hasIn & (k == 32 ? ~0u : (1u << k) - 1u);
+    if ((noIn & (noIn - 1u)) != 0)
+    {
+      return false; // more than one run
+    }
+    int start = 0;
+    while (noIn != 0 && !((noIn >> start) & 1u))
+    {
+      ++start;
+    }
+    // The fan in chain order, and its k + 1 edges: edge s comes before triangle s, edge
+    // s + 1 after it.
+    int chain[MaxFastFan];
+    chain[0] = start;
+    for (int c = 1; c < k; ++c)
+    {
+      chain[c] = link[chain[c - 1]];
+      if (chain[c] < 0 || chain[c] == start)
+      {
+        return false;
+      }
+    }
+    // An orthonormal basis of the tangent plane (Duff et al., "Building an orthonormal
+    // basis, revisited", 2017): projections become two dot products.
+    const double sgn = std::copysign(1.0, n[2]);
+    const double ia = -1.0 / (sgn + n[2]);
+    const double bb = n[0] * n[1] * ia;
+    const double b1[3] = { 1.0 + sgn * n[0] * n[0] * ia, sgn * bb, -sgn * n[0] };
+    const double b2[3] = { bb, sgn + n[1] * n[1] * ia, -n[1] };
+    const double pv[3] = { double(this->P[3 * v]), double(this->P[3 * v + 1]),
+      double(this->P[3 * v + 2]) };
+    double dx[MaxFastFan + 1], dy[MaxFastFan + 1], dz[MaxFastFan + 1];
+    for (int s = 0; s <= k; ++s)
+    {
+      const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
+      dx[s] = double(this->P[3 * x]) - pv[0];
+      dy[s] = double(this->P[3 * x + 1]) - pv[1];
+      dz[s] = double(this->P[3 * x + 2]) - pv[2];
+    }
+    double ex[MaxFastFan + 1], ey[MaxFastFan + 1];
+    int ok = 1;
+    for (int s = 0; s <= k; ++s)
+    {
+      const double x = dx[s] * b1[0] + dy[s] * b1[1] + dz[s] * b1[2];
+      const double y = dx[s] * b2[0] + dy[s] * b2[1] + dz[s] * b2[2];
+      const double l2 = x * x + y * y;
+      ok &= l2 > FastProjection2 * (dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
+      const double inv = 1.0 / std::sqrt(l2);
+      ex[s] = x * inv;
+      ey[s] = y * inv;
+    }
+    double os[3][MaxFastFan], ot[3][MaxFastFan];
+    for (int s = 0; s < k; ++s)
+    {
+      const auto& d = dir[tri[chain[s]]];
+      for (int c = 0; c < 3; ++c)
+      {
+        os[c][s] = d[c];
+        ot[c][s] = d[c + 3];
+      }
+    }
+    // At the default threshold MikkTSpace separates only opposite directions: with every
+    // direction within a quarter turn of the first, no two are opposite.
+    const double po0[2] = { os[0][0] * b1[0] + os[1][0] * b1[1] + os[2][0] * b1[2],
+      os[0][0] * b2[0] + os[1][0] * b2[1] + os[2][0] * b2[2] };
+    const double pt0[2] = { ot[0][0] * b1[0] + ot[1][0] * b1[1] + ot[2][0] * b1[2],
+      ot[0][0] * b2[0] + ot[1][0] * b2[1] + ot[2][0] * b2[2] };
+    const double po0Len2 = po0[0] * po0[0] + po0[1] * po0[1];
+    const double pt0Len2 = pt0[0] * pt0[0] + pt0[1] * pt0[1];
+    double wx[MaxFastFan], wy[MaxFastFan];
+    for (int s = 0; s < k; ++s)
+    {
+      const double angle =
+        FastAcos(std::min(1.0, std::max(-1.0, ex[s] * ex[s + 1] + ey[s] * ey[s + 1])));
+      const double px = os[0][s] * b1[0] + os[1][s] * b1[1] + os[2][s] * b1[2];
+      const double py = os[0][s] * b2[0] + os[1][s] * b2[1] + os[2][s] * b2[2];
+      const double tx = ot[0][s] * b1[0] + ot[1][s] * b1[1] + ot[2][s] * b1[2];
+      const double ty = ot[0][s] * b2[0] + ot[1][s] * b2[1] + ot[2][s] * b2[2];
+      const double po2 = px * px + py * py, pt2 = tx * tx + ty * ty;
+      const double co = px * po0[0] + py * po0[1], ct = tx * pt0[0] + ty * pt0[1];
+      ok &= po2 > FastProjection2 && pt2 > FastProjection2;
+      ok &= co > 0.0 && co * co > FastCos * FastCos * po2 * po0Len2;
+      ok &= ct > 0.0 && ct * ct > FastCos * FastCos * pt2 * pt0Len2;
+      const double weight = angle / std::sqrt(po2);
+      wx[s] = weight * px;
+      wy[s] = weight * py;
+    }
+    double sum[2] = { 0.0, 0.0 };
+    for (int s = 0; s < k; ++s)
+    {
+      sum[0] += wx[s];
+      sum[1] += wy[s];
+    }
+    const double len2 = sum[0] * sum[0] + sum[1] * sum[1];
+    if (!ok || !(len2 > 1e-12 && std::isfinite(len2)))
+    {
+      return false;
+    }
+    const double s = 1.0 / std::sqrt(len2);
+    const V3 all{ s * (sum[0] * b1[0] + sum[1] * b2[0]), s * (sum[0] * b1[1] + sum[1] * b2[1]),
+      s * (sum[0] * b1[2] + sum[1] * b2[2]) };
+    FinalTangent(n, TSpace{ all, o != 0, 0 }, out);
+    return true;
+  }
+};
+
+// Calls f with the values of a float or double array; false for other arrays.
+template <typename F>
+bool WithValues(vtkDataArray* array, F&& f)
+{
+  if (auto* fa = vtkFloatArray::FastDownCast(array))
+  {
+    f(static_cast<const float*>(fa->GetPointer(0)));
+    return true;
+  }
+  if (auto* da = vtkDoubleArray::FastDownCast(array))
+  {
+    f(static_cast<const double*>(da->GetPointer(0)));
+    return true;
+  }
+  return false;
+}
+
+// The tangents of every input point by the fast path, or nullptr if the input needs the
+// general one.
+vtkSmartPointer<vtkFloatArray> FastTangents(
+  vtkPolyData* input, vtkDataArray* normals, vtkDataArray* tcoords)
+{
+  vtkCellArray* polys = input->GetPolys();
+  const vtkIdType nPts = input->GetNumberOfPoints();
+  const vtkIdType nTris = polys->GetNumberOfCells();
+  if (input->GetNumberOfStrips() > 0 || nTris == 0 ||
+    nPts >= std::numeric_limits<std::int32_t>::max() ||
+    nTris >= std::numeric_limits<std::int32_t>::max() / 3)
+  {
+    return nullptr;
+  }
+  auto tangents = vtkSmartPointer<vtkFloatArray>::New();
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(4);
+  if (!vtkSurfaceDetailMemory::AllocateTuples(tangents.Get(), nPts))
+  {
+    return nullptr;
+  }
+  float* out = tangents->GetPointer(0);
+  const int tcStride = tcoords->GetNumberOfComponents();
+  bool done = false;
+  try
+  {
+    WithValues(input->GetPoints()->GetData(),
+      [&](auto p)
+      {
+        WithValues(normals,
+          [&](auto n)
+          {
+            WithValues(tcoords,
+              [&](auto t)
+              {
+                using PT = std::remove_const_t<std::remove_pointer_t<decltype(p)>>;
+                using NT = std::remove_const_t<std::remove_pointer_t<decltype(n)>>;
+                using TT = std::remove_const_t<std::remove_pointer_t<decltype(t)>>;
+                FastMikk<PT, NT, TT> fast(p, n, t, tcStride, nPts);
+                done = polys->IsStorage64Bit()
+                  ? fast.Run(polys->GetOffsetsArray64()->GetPointer(0),
+                      polys->GetConnectivityArray64()->GetPointer(0), nTris, out)
+                  : fast.Run(polys->GetOffsetsArray32()->GetPointer(0),
+                      polys->GetConnectivityArray32()->GetPointer(0), nTris, out);
+              });
+          });
+      });
+  }
+  catch (const std::bad_alloc&)
+  {
+    done = false;
+  }
+  return done ? tangents : nullptr;
+}
+
 vtkSmartPointer<vtkIdList> IdRange(vtkIdType n)
 {
   auto ids = vtkSmartPointer<vtkIdList>::New();
@@ -1407,6 +2099,24 @@ int vtkMikkTSpaceTangents::RequestData(
   {
     vtkErrorMacro("The texture coordinates or normals do not have one tuple per point.");
     return 0;
+  }
+
+  if (this->AngularThreshold >= 180.0)
+  {
+    if (vtkSmartPointer<vtkFloatArray> tangents = FastTangents(input, normals, tcoords))
+    {
+      // Every point kept its one frame: the input's surface with one more array.
+      output->SetPoints(input->GetPoints());
+      output->GetPointData()->PassData(inPD);
+      output->GetPointData()->RemoveArray("Tangents");
+      output->GetPointData()->AddArray(tangents);
+      output->SetVerts(input->GetVerts());
+      output->SetLines(input->GetLines());
+      output->SetPolys(input->GetPolys());
+      output->GetCellData()->PassData(input->GetCellData());
+      output->GetFieldData()->PassData(input->GetFieldData());
+      return 1;
+    }
   }
 
   MikkMesh mesh;

@@ -303,9 +303,12 @@ TEST(vtkMikkTSpaceTangents, SplitPointsKeepPointData)
 
 TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
 {
+  // The torus goes the fast way (every vertex a simple fan), the others the general one.
   auto sphere = MakeUVSphere(160, 80);
   auto sheet = MakeMirroredSheet(120);
-  for (vtkPolyData* input : { sphere.Get(), sheet.Get() })
+  auto torus = MakeTorus(300, 150);
+  auto unwelded = Unweld(MakeTorus(60, 30));
+  for (vtkPolyData* input : { sphere.Get(), sheet.Get(), torus.Get(), unwelded.Get() })
   {
     vtkSMPTools::Initialize(1);
     FilterRun one(input);
