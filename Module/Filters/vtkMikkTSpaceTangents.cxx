@@ -1310,17 +1310,26 @@ private:
 // far above the rounding of the quantities they test, so the two paths take the same
 // decisions wherever the fast one finishes.
 
-// acos with an absolute error below 2.2e-8 rad (Abramowitz & Stegun 4.4.46); as a corner
-// weight its relative error is far below what the reference's single precision leaves.
-inline double FastAcos(double x)
+// The angle between two plane vectors whose dot product is c and the absolute value of
+// whose cross product is s, as atan2(s, c) with an absolute error below 1.2e-8 rad: atan on
+// [0, 1] is q times a degree-8 polynomial in q^2 (a Chebyshev fit of atan(q)/q). Unlike
+// acos of normalised vectors it needs no square root, and it stays accurate near 0 and pi;
+// as a corner weight its relative error is far below what the reference's single
+// precision leaves.
+inline double FastAngle(double s, double c)
 {
-  // Estrin's scheme: a short dependency chain, as a corner's weight waits for it.
-  const double a = std::abs(x), a2 = a * a, a4 = a2 * a2;
-  const double p01 = 1.5707963050 - 0.2145988016 * a, p23 = 0.0889789874 - 0.0501743046 * a;
-  const double p45 = 0.0308918810 - 0.0170881256 * a, p67 = 0.0066700901 - 0.0012624911 * a;
-  const double p = (p01 + p23 * a2) + (p45 + p67 * a2) * a4;
-  const double r = std::sqrt(1.0 - a) * p;
-  return x < 0.0 ? vtkMath::Pi() - r : r;
+  const double ac = std::abs(c);
+  const bool steep = s > ac;
+  const double q = std::min(s, ac) / std::max(s, ac);
+  const double u = q * q, u2 = u * u, u4 = u2 * u2;
+  const double p01 = 0.9999999842426364 - 0.3333306678069164 * u;
+  const double p23 = 0.1999248357850966 - 0.1420257051178519 * u;
+  const double p45 = 0.1063675409849997 - 0.07495445444194075 * u;
+  const double p67 = 0.04258760747628684 - 0.016005030510568757 * u;
+  const double p = (p01 + p23 * u2) + (p45 + p67 * u2) * u4 + 0.002834064300823229 * (u4 * u4);
+  double r = q * p;
+  r = steep ? 0.5 * vtkMath::Pi() - r : r;
+  return c < 0.0 ? vtkMath::Pi() - r : r;
 }
 
 inline void PrefetchForWrite(const void* p)
@@ -1618,18 +1627,22 @@ private:
           const double area2 = t21x * t31y - t21y * t31x;
           const V3 os = Sub(Scale(t31y, d1), Scale(t21y, d2));
           const V3 ot = Sub(Scale(t21x, d2), Scale(t31x, d1));
+          // The general path's tests (cancellation of dP/ds or dP/dt, usable derivatives),
+          // made stricter so that no square root or division is needed to pass them:
+          // (a + b)^2 <= 2 (a^2 + b^2), and a margin of 2 on the division-free ratios.
           const double absArea = std::abs(area2);
-          const double l1 = std::sqrt(Dot(d1, d1)), l2 = std::sqrt(Dot(d2, d2));
-          const double lenOs = std::sqrt(Dot(os, os));
-          const double lenOt = std::sqrt(Dot(ot, ot));
-          if (!NotZero(area2) ||
-            lenOs <= CancellationEps * (std::abs(t31y) * l1 + std::abs(t21y) * l2) ||
-            lenOt <= CancellationEps * (std::abs(t31x) * l1 + std::abs(t21x) * l2) ||
-            !NotZero(lenOs / absArea) || !NotZero(lenOt / absArea))
+          const double l1 = Dot(d1, d1), l2 = Dot(d2, d2);
+          const double lenOs2 = Dot(os, os), lenOt2 = Dot(ot, ot);
+          constexpr double eps2 = 2.0 * CancellationEps * CancellationEps;
+          if (!NotZero(area2) || !(lenOs2 > eps2 * (t31y * t31y * l1 + t21y * t21y * l2)) ||
+            !(lenOt2 > eps2 * (t31x * t31x * l1 + t21x * t21x * l2)) ||
+            !(lenOs2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)) ||
+            !(lenOt2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)))
           {
             fail.store(true, std::memory_order_relaxed);
             return;
           }
+          const double lenOs = std::sqrt(lenOs2), lenOt = std::sqrt(lenOt2);
           const double sign = area2 > 0.0 ? 1.0 : -1.0;
           const double ss = sign / lenOs, st = sign / lenOt;
           dir[t] = { float(ss * os[0]), float(ss * os[1]), float(ss * os[2]), float(st * ot[0]),
@@ -1816,19 +1829,42 @@ private:
     }
     // Links across the edges at v; each edge must join exactly two triangles or bound the
     // fan (then the general path's greedy pairing finds the same links), and the links
-    // must chain all the triangles into one run. "Has a predecessor" is a bit mask.
+    // must chain all the triangles into one run. The triangle b whose prev[b] is next[a]
+    // is found through a small hash table of prev values: a quadratic scan mispredicts, or
+    // when vectorised stalls on the store forwarding of the just written prev[].
+    constexpr int TableBits = 6;
+    static_assert(MaxFastFan <= (1 << TableBits) / 2, "table at most half full");
+    unsigned char table[1 << TableBits];
+    std::memset(table, 0xff, sizeof(table));
+    auto slot = [](std::int32_t x)
+    { return (static_cast<std::uint32_t>(x) * 0x9e3779b1u) >> (32 - TableBits); };
+    for (int b = 0; b < k; ++b)
+    {
+      std::uint32_t h = slot(prev[b]);
+      for (; table[h] != 0xff; h = (h + 1) & ((1u << TableBits) - 1u))
+      {
+        if (prev[table[h]] == prev[b])
+        {
+          return false; // two triangles run the same way along an edge
+        }
+      }
+      table[h] = static_cast<unsigned char>(b);
+    }
     int link[MaxFastFan];
     std::uint32_t hasIn = 0;
     for (int a = 0; a < k; ++a)
     {
-      int l = -1, count = 0;
-      for (int b = 0; b < k; ++b)
+      int l = -1;
+      for (std::uint32_t h = slot(next[a]); table[h] != 0xff;
+           h = (h + 1) & ((1u << TableBits) - 1u))
       {
-        const bool m = prev[b] == next[a];
-        l = m ? b : l;
-        count += m;
+        if (prev[table[h]] == next[a])
+        {
+          l = table[h];
+          break;
+        }
       }
-      if (count > 1 || (l >= 0 && ((hasIn >> l) & 1u)))
+      if (l >= 0 && ((hasIn >> l) & 1u))
       {
         return false;
       }
@@ -1880,63 +1916,59 @@ private:
     {
       const double x = dx[s] * b1[0] + dy[s] * b1[1] + dz[s] * b1[2];
       const double y = dx[s] * b2[0] + dy[s] * b2[1] + dz[s] * b2[2];
-      const double l2 = x * x + y * y;
-      ok &= l2 > FastProjection2 * (dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
-      const double inv = 1.0 / std::sqrt(l2);
-      ex[s] = x * inv;
-      ey[s] = y * inv;
+      ok &= x * x + y * y > FastProjection2 * (dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
+      ex[s] = x;
+      ey[s] = y;
     }
-    double os[3][MaxFastFan], ot[3][MaxFastFan];
-    for (int s = 0; s < k; ++s)
+    // Projections onto the tangent plane through dot products with n: for a direction d,
+    // |proj d|^2 = d.d - (d.n)^2, and proj d . r = d . r for r in the plane; the average
+    // of the projections is the projection of the average.
+    // At the default threshold MikkTSpace separates only opposite directions: with every
+    // direction within a quarter turn of the first (with a margin), no two are opposite.
+    V3 r[2];
     {
-      const auto& d = dir[tri[chain[s]]];
-      for (int c = 0; c < 3; ++c)
+      const auto& d = dir[tri[chain[0]]];
+      for (int i = 0; i < 2; ++i)
       {
-        os[c][s] = d[c];
-        ot[c][s] = d[c + 3];
+        const V3 x{ d[3 * i], d[3 * i + 1], d[3 * i + 2] };
+        r[i] = Sub(x, Scale(Dot(x, n), n));
+        const double len2 = Dot(r[i], r[i]);
+        if (!(len2 > FastProjection2))
+        {
+          return false;
+        }
+        r[i] = Scale(1.0 / std::sqrt(len2), r[i]);
       }
     }
-    // At the default threshold MikkTSpace separates only opposite directions: with every
-    // direction within a quarter turn of the first, no two are opposite.
-    const double po0[2] = { os[0][0] * b1[0] + os[1][0] * b1[1] + os[2][0] * b1[2],
-      os[0][0] * b2[0] + os[1][0] * b2[1] + os[2][0] * b2[2] };
-    const double pt0[2] = { ot[0][0] * b1[0] + ot[1][0] * b1[1] + ot[2][0] * b1[2],
-      ot[0][0] * b2[0] + ot[1][0] * b2[1] + ot[2][0] * b2[2] };
-    const double po0Len2 = po0[0] * po0[0] + po0[1] * po0[1];
-    const double pt0Len2 = pt0[0] * pt0[0] + pt0[1] * pt0[1];
-    double wx[MaxFastFan], wy[MaxFastFan];
+    double sum[3] = { 0.0, 0.0, 0.0 }, sumN = 0.0;
     for (int s = 0; s < k; ++s)
     {
-      const double angle =
-        FastAcos(std::min(1.0, std::max(-1.0, ex[s] * ex[s + 1] + ey[s] * ey[s + 1])));
-      const double px = os[0][s] * b1[0] + os[1][s] * b1[1] + os[2][s] * b1[2];
-      const double py = os[0][s] * b2[0] + os[1][s] * b2[1] + os[2][s] * b2[2];
-      const double tx = ot[0][s] * b1[0] + ot[1][s] * b1[1] + ot[2][s] * b1[2];
-      const double ty = ot[0][s] * b2[0] + ot[1][s] * b2[1] + ot[2][s] * b2[2];
-      const double po2 = px * px + py * py, pt2 = tx * tx + ty * ty;
-      const double co = px * po0[0] + py * po0[1], ct = tx * pt0[0] + ty * pt0[1];
-      ok &= po2 > FastProjection2 && pt2 > FastProjection2;
-      ok &= co > 0.0 && co * co > FastCos * FastCos * po2 * po0Len2;
-      ok &= ct > 0.0 && ct * ct > FastCos * FastCos * pt2 * pt0Len2;
+      const double angle = FastAngle(
+        std::abs(ex[s] * ey[s + 1] - ey[s] * ex[s + 1]), ex[s] * ex[s + 1] + ey[s] * ey[s + 1]);
+      const auto& d = dir[tri[chain[s]]];
+      const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
+      const double on = os[0] * n[0] + os[1] * n[1] + os[2] * n[2];
+      const double po2 = os[0] * os[0] + os[1] * os[1] + os[2] * os[2] - on * on;
+      ok &= os[0] * r[0][0] + os[1] * r[0][1] + os[2] * r[0][2] > FastCos;
+      ok &= ot[0] * r[1][0] + ot[1] * r[1][1] + ot[2] * r[1][2] > FastCos;
       const double weight = angle / std::sqrt(po2);
-      wx[s] = weight * px;
-      wy[s] = weight * py;
+      sum[0] += weight * os[0];
+      sum[1] += weight * os[1];
+      sum[2] += weight * os[2];
+      sumN += weight * on;
     }
-    double sum[2] = { 0.0, 0.0 };
-    for (int s = 0; s < k; ++s)
-    {
-      sum[0] += wx[s];
-      sum[1] += wy[s];
-    }
-    const double len2 = sum[0] * sum[0] + sum[1] * sum[1];
+    const V3 t{ sum[0] - sumN * n[0], sum[1] - sumN * n[1], sum[2] - sumN * n[2] };
+    const double len2 = Dot(t, t);
     if (!ok || !(len2 > 1e-12 && std::isfinite(len2)))
     {
       return false;
     }
-    const double s = 1.0 / std::sqrt(len2);
-    const V3 all{ s * (sum[0] * b1[0] + sum[1] * b2[0]), s * (sum[0] * b1[1] + sum[1] * b2[1]),
-      s * (sum[0] * b1[2] + sum[1] * b2[2]) };
-    FinalTangent(n, TSpace{ all, o != 0, 0 }, out);
+    const double inv = 1.0 / std::sqrt(len2);
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] = static_cast<float>(inv * t[c]);
+    }
+    out[3] = o != 0 ? 1.0f : -1.0f;
     return true;
   }
 };
