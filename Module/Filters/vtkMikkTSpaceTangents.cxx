@@ -1653,7 +1653,7 @@ private:
     return !fail;
   }
 
-  // Vertex -> its corners (3 * triangle + corner), each list in triangle order. Two tasks:
+  // Vertex -> its corners (4 * triangle + corner), each list in triangle order. Two tasks:
   // the first half of the triangles counts into one array and fills each list from its
   // front, the second half into another and fills from the back, walking backwards; no
   // atomics, and the order does not depend on the number of threads.
@@ -1694,16 +1694,22 @@ private:
         {
           if (part == 0)
           {
-            for (vtkIdType c = 0; c < half; ++c)
+            for (vtkIdType t = 0; t < half / 3; ++t)
             {
-              corners[count0[w[c]]++] = static_cast<std::int32_t>(c);
+              for (int i = 0; i < 3; ++i)
+              {
+                corners[count0[w[3 * t + i]]++] = static_cast<std::int32_t>(t << 2 | i);
+              }
             }
           }
           else
           {
-            for (vtkIdType c = end - 1; c >= half; --c)
+            for (vtkIdType t = end / 3 - 1; t >= half / 3; --t)
             {
-              corners[--count1[w[c]]] = static_cast<std::int32_t>(c);
+              for (int i = 2; i >= 0; --i)
+              {
+                corners[--count1[w[3 * t + i]]] = static_cast<std::int32_t>(t << 2 | i);
+              }
             }
           }
         }
@@ -1813,14 +1819,15 @@ private:
     }
     std::int32_t tri[MaxFastFan], next[MaxFastFan], prev[MaxFastFan];
     const std::int32_t* list = corners + first[v];
-    const unsigned char o = orient[list[0] / 3];
+    const unsigned char o = orient[list[0] >> 2];
     int same = 1;
     for (int a = 0; a < k; ++a)
     {
-      const std::int32_t c = list[a], t = c / 3, i = c - 3 * t;
+      static constexpr int nextCorner[3] = { 1, 2, 0 }, prevCorner[3] = { 2, 0, 1 };
+      const std::int32_t t = list[a] >> 2, i = list[a] & 3;
       tri[a] = t;
-      next[a] = w[3 * t + (i == 2 ? 0 : i + 1)];
-      prev[a] = w[3 * t + (i == 0 ? 2 : i - 1)];
+      next[a] = w[3 * t + nextCorner[i]];
+      prev[a] = w[3 * t + prevCorner[i]];
       same &= orient[t] == o;
     }
     if (!same)
@@ -1902,23 +1909,18 @@ private:
     const double b2[3] = { bb, sgn + n[1] * n[1] * ia, -n[1] };
     const double pv[3] = { double(this->P[3 * v]), double(this->P[3 * v + 1]),
       double(this->P[3 * v + 2]) };
-    double dx[MaxFastFan + 1], dy[MaxFastFan + 1], dz[MaxFastFan + 1];
-    for (int s = 0; s <= k; ++s)
-    {
-      const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
-      dx[s] = double(this->P[3 * x]) - pv[0];
-      dy[s] = double(this->P[3 * x + 1]) - pv[1];
-      dz[s] = double(this->P[3 * x + 2]) - pv[2];
-    }
     double ex[MaxFastFan + 1], ey[MaxFastFan + 1];
     int ok = 1;
     for (int s = 0; s <= k; ++s)
     {
-      const double x = dx[s] * b1[0] + dy[s] * b1[1] + dz[s] * b1[2];
-      const double y = dx[s] * b2[0] + dy[s] * b2[1] + dz[s] * b2[2];
-      ok &= x * x + y * y > FastProjection2 * (dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
-      ex[s] = x;
-      ey[s] = y;
+      const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
+      const double d[3] = { double(this->P[3 * x]) - pv[0], double(this->P[3 * x + 1]) - pv[1],
+        double(this->P[3 * x + 2]) - pv[2] };
+      const double px = d[0] * b1[0] + d[1] * b1[1] + d[2] * b1[2];
+      const double py = d[0] * b2[0] + d[1] * b2[1] + d[2] * b2[2];
+      ok &= px * px + py * py > FastProjection2 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      ex[s] = px;
+      ey[s] = py;
     }
     // Projections onto the tangent plane through dot products with n: for a direction d,
     // |proj d|^2 = d.d - (d.n)^2, and proj d . r = d . r for r in the plane; the average
@@ -1999,8 +2001,7 @@ vtkSmartPointer<vtkFloatArray> FastTangents(
   const vtkIdType nPts = input->GetNumberOfPoints();
   const vtkIdType nTris = polys->GetNumberOfCells();
   if (input->GetNumberOfStrips() > 0 || nTris == 0 ||
-    nPts >= std::numeric_limits<std::int32_t>::max() ||
-    nTris >= std::numeric_limits<std::int32_t>::max() / 3)
+    nPts >= std::numeric_limits<std::int32_t>::max() || nTris >= (vtkIdType(1) << 29))
   {
     return nullptr;
   }
