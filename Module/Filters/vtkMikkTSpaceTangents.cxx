@@ -1385,16 +1385,39 @@ public:
   }
 
   /// Tangents of all points into @a out (4 floats each), or false if the input needs the
-  /// general algorithm (then @a out holds garbage).
+  /// general algorithm (then @a out holds garbage, and @a weldOut the weld if it was
+  /// computed: the general algorithm's own, which it need not repeat).
   template <typename IdT>
-  bool Run(const IdT* offsets, const IdT* conn, vtkIdType nTris, float* out)
+  bool Run(const IdT* offsets, const IdT* conn, vtkIdType nTris, float* out,
+    std::vector<vtkIdType>& weldOut)
   {
-    const std::size_t nt = static_cast<std::size_t>(nTris);
     Block<std::int32_t> weld(this->NumberOfPoints);
     if (!this->Weld(weld))
     {
       return false;
     }
+    if (this->Finish(offsets, conn, nTris, weld, out))
+    {
+      return true;
+    }
+    weldOut.resize(static_cast<std::size_t>(this->NumberOfPoints));
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          weldOut[i] = this->Welded ? weld[i] : i;
+        }
+      });
+    return false;
+  }
+
+private:
+  template <typename IdT>
+  bool Finish(const IdT* offsets, const IdT* conn, vtkIdType nTris, const Block<std::int32_t>& weld,
+    float* out)
+  {
+    const std::size_t nt = static_cast<std::size_t>(nTris);
     std::unique_ptr<Block<std::atomic<unsigned char>>> referenced;
     if (this->Welded)
     {
@@ -1420,6 +1443,25 @@ public:
     Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
     Block<std::int32_t> corners(3 * nt);
     this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get());
+    // A pole (a fan too large for the fast path) is found here at the cost of one scan,
+    // rather than in the per-vertex pass, which may have done most of its work by then.
+    std::atomic<bool> largeFan(false);
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType v = b; v < e; ++v)
+        {
+          if (first[v + 1] - first[v] > MaxFastFan)
+          {
+            largeFan.store(true, std::memory_order_relaxed);
+            return;
+          }
+        }
+      });
+    if (largeFan)
+    {
+      return false;
+    }
     if (!this->Vertices(w.Get(), dir.Get(), orient.Get(), first.Get(), corners.Get(), weld.Get(),
           referenced ? referenced->Get() : nullptr, out))
     {
@@ -1428,7 +1470,6 @@ public:
     return true;
   }
 
-private:
   const PT* P;
   const NT* N;
   const TT* T;
@@ -1995,7 +2036,7 @@ bool WithValues(vtkDataArray* array, F&& f)
 // The tangents of every input point by the fast path, or nullptr if the input needs the
 // general one.
 vtkSmartPointer<vtkFloatArray> FastTangents(
-  vtkPolyData* input, vtkDataArray* normals, vtkDataArray* tcoords)
+  vtkPolyData* input, vtkDataArray* normals, vtkDataArray* tcoords, std::vector<vtkIdType>& weld)
 {
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType nPts = input->GetNumberOfPoints();
@@ -2032,9 +2073,9 @@ vtkSmartPointer<vtkFloatArray> FastTangents(
                 FastMikk<PT, NT, TT> fast(p, n, t, tcStride, nPts);
                 done = polys->IsStorage64Bit()
                   ? fast.Run(polys->GetOffsetsArray64()->GetPointer(0),
-                      polys->GetConnectivityArray64()->GetPointer(0), nTris, out)
+                      polys->GetConnectivityArray64()->GetPointer(0), nTris, out, weld)
                   : fast.Run(polys->GetOffsetsArray32()->GetPointer(0),
-                      polys->GetConnectivityArray32()->GetPointer(0), nTris, out);
+                      polys->GetConnectivityArray32()->GetPointer(0), nTris, out, weld);
               });
           });
       });
@@ -2134,9 +2175,10 @@ int vtkMikkTSpaceTangents::RequestData(
     return 0;
   }
 
+  std::vector<vtkIdType> weld; // the fast path's, when it gives up after welding
   if (this->AngularThreshold >= 180.0)
   {
-    if (vtkSmartPointer<vtkFloatArray> tangents = FastTangents(input, normals, tcoords))
+    if (vtkSmartPointer<vtkFloatArray> tangents = FastTangents(input, normals, tcoords, weld))
     {
       // Every point kept its one frame: the input's surface with one more array.
       output->SetPoints(input->GetPoints());
@@ -2156,7 +2198,14 @@ int vtkMikkTSpaceTangents::RequestData(
   mesh.NumberOfPoints = nPts;
   {
     ReadAttributes(input->GetPoints(), normals, tcoords, mesh);
-    Weld(mesh);
+    if (weld.empty())
+    {
+      Weld(mesh);
+    }
+    else
+    {
+      mesh.Weld = std::move(weld);
+    }
     NormalizeNormals(mesh);
   }
   BuildFaces(input, mesh);
