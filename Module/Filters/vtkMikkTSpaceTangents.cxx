@@ -1957,11 +1957,11 @@ private:
       const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
       const double d[3] = { double(this->P[3 * x]) - pv[0], double(this->P[3 * x + 1]) - pv[1],
         double(this->P[3 * x + 2]) - pv[2] };
-      const double px = d[0] * b1[0] + d[1] * b1[1] + d[2] * b1[2];
-      const double py = d[0] * b2[0] + d[1] * b2[1] + d[2] * b2[2];
-      ok &= px * px + py * py > FastProjection2 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      ex[s] = px;
-      ey[s] = py;
+      // No check needed: a position edge is not zero (no degenerate triangles here), and
+      // one along the normal projects to zero, whose angle (0 / 0) is NaN and makes the
+      // vertex fail below.
+      ex[s] = d[0] * b1[0] + d[1] * b1[1] + d[2] * b1[2];
+      ey[s] = d[0] * b2[0] + d[1] * b2[1] + d[2] * b2[2];
     }
     // Projections onto the tangent plane through dot products with n: for a direction d,
     // |proj d|^2 = d.d - (d.n)^2, and proj d . r = d . r for r in the plane; the average
