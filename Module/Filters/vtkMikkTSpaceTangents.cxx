@@ -1528,72 +1528,26 @@ private:
     return ti[0] == to[0] && ti[1] == to[1];
   }
 
-  // The weld of the general path, in parallel: points with identical values meet in one
-  // slot of a lock-free open-addressing table, which keeps the smallest id among them, so
-  // the result is the general path's whatever the threads do. Non-finite values anywhere
-  // send the input to the general path (which warns about them).
+  // The weld of the general path, in parallel. Points are hashed in parallel and sorted
+  // by the hash's low bits into buckets (a counting sort, which keeps increasing ids within
+  // each bucket); buckets are welded independently, each in a table small enough to stay
+  // in the first-level cache, so every vertex is represented by its smallest point id, as
+  // in the general path, with no atomics and no cache misses on a big table. Non-finite
+  // values anywhere send the input to the general path (which warns about them).
   bool Weld(const Block<std::int32_t>& weld)
   {
     const std::int32_t n = this->NumberOfPoints;
-    std::uint64_t capacity = 16;
-    while (capacity < 2 * static_cast<std::uint64_t>(n))
-    {
-      capacity *= 2;
-    }
-    const std::uint64_t mask = capacity - 1;
-    Block<std::atomic<std::int32_t>> table(capacity);
-    vtkSMPTools::For(0, vtkIdType(capacity),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType s = b; s < e; ++s)
-        {
-          table[s].store(-1, std::memory_order_relaxed);
-        }
-      });
+    Block<std::uint64_t> hashes(n);
     std::atomic<bool> fail(false);
     vtkSMPTools::For(0, vtkIdType(n),
       [&](vtkIdType b, vtkIdType e)
       {
-        // Slots are random places in a table of megabytes: hash a batch of points and
-        // prefetch their slots before inserting any, so that the misses overlap.
-        constexpr vtkIdType Batch = 16;
-        std::uint64_t slot[Batch];
-        for (vtkIdType i0 = b; i0 < e; i0 += Batch)
+        for (vtkIdType i = b; i < e; ++i)
         {
-          const vtkIdType m = std::min(Batch, e - i0);
-          for (vtkIdType j = 0; j < m; ++j)
+          if (!this->Hash(static_cast<std::int32_t>(i), hashes[i]))
           {
-            const std::int32_t i = static_cast<std::int32_t>(i0 + j);
-            std::uint64_t h;
-            if (!this->Hash(i, h))
-            {
-              fail.store(true, std::memory_order_relaxed);
-              return;
-            }
-            slot[j] = h & mask;
-            PrefetchForWrite(table.Get() + slot[j]);
-          }
-          for (vtkIdType j = 0; j < m; ++j)
-          {
-            const std::int32_t i = static_cast<std::int32_t>(i0 + j);
-            for (std::uint64_t s = slot[j];; s = (s + 1) & mask)
-            {
-              std::int32_t o = table[s].load(std::memory_order_relaxed);
-              if (o < 0 && table[s].compare_exchange_strong(o, i, std::memory_order_relaxed))
-              {
-                weld[i] = std::int32_t(s);
-                break;
-              }
-              // o is the slot's occupant now; equal points replace it by the smaller id.
-              if (this->SameValues(i, o))
-              {
-                while (i < o && !table[s].compare_exchange_weak(o, i, std::memory_order_relaxed))
-                {
-                }
-                weld[i] = std::int32_t(s);
-                break;
-              }
-            }
+            fail.store(true, std::memory_order_relaxed);
+            return;
           }
         }
       });
@@ -1601,15 +1555,66 @@ private:
     {
       return false;
     }
+    int bucketBits = 0;
+    while (bucketBits < 16 && (std::int64_t(1024) << bucketBits) < n)
+    {
+      ++bucketBits;
+    }
+    const std::uint64_t buckets = std::uint64_t(1) << bucketBits;
+    const std::uint64_t bucketMask = buckets - 1;
+    std::vector<std::int32_t> bucketFirst(buckets + 1, 0);
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      ++bucketFirst[(hashes[i] & bucketMask) + 1];
+    }
+    for (std::uint64_t k = 0; k < buckets; ++k)
+    {
+      bucketFirst[k + 1] += bucketFirst[k];
+    }
+    Block<std::int32_t> order(n);
+    {
+      std::vector<std::int32_t> fill(bucketFirst.begin(), bucketFirst.end() - 1);
+      for (std::int32_t i = 0; i < n; ++i)
+      {
+        order[fill[hashes[i] & bucketMask]++] = i;
+      }
+    }
     std::atomic<bool> welded(false);
-    vtkSMPTools::For(0, vtkIdType(n),
+    vtkSMPTools::For(0, vtkIdType(buckets),
       [&](vtkIdType b, vtkIdType e)
       {
+        std::vector<std::int32_t> table;
         bool any = false;
-        for (vtkIdType i = b; i < e; ++i)
+        for (vtkIdType k = b; k < e; ++k)
         {
-          weld[i] = table[weld[i]].load(std::memory_order_relaxed);
-          any |= weld[i] != i;
+          const std::int32_t begin = bucketFirst[k], end = bucketFirst[k + 1];
+          std::uint64_t capacity = 16;
+          while (capacity < 2 * static_cast<std::uint64_t>(end - begin))
+          {
+            capacity *= 2;
+          }
+          const std::uint64_t mask = capacity - 1;
+          table.assign(capacity, -1);
+          for (std::int32_t j = begin; j < end; ++j)
+          {
+            const std::int32_t i = order[j];
+            for (std::uint64_t s = (hashes[i] >> bucketBits) & mask;; s = (s + 1) & mask)
+            {
+              const std::int32_t o = table[s];
+              if (o < 0)
+              {
+                table[s] = i;
+                weld[i] = i;
+                break;
+              }
+              if (hashes[o] == hashes[i] && this->SameValues(i, o))
+              {
+                weld[i] = o;
+                any = true;
+                break;
+              }
+            }
+          }
         }
         if (any)
         {
