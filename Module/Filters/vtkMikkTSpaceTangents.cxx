@@ -1487,7 +1487,7 @@ private:
     return { double(t[0]), double(t[1]) };
   }
   // Hash of a point's values (0 and -0 alike, as they compare equal); false if any value
-  // is not finite. Independent products rather than a chain: the weld is latency bound.
+  // is not finite. Independent products rather than a chain of dependent steps.
   bool Hash(std::int32_t i, std::uint64_t& h) const
   {
     const TT* t = this->T + std::size_t(this->TcStride) * i;
