@@ -1,12 +1,14 @@
 #include "vtkMikkTSpaceTangents.h"
 
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailMemory.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -31,6 +33,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <new>
 #include <numeric>
@@ -38,10 +41,6 @@
 #include <unordered_map>
 #include <utility>
 #include <vector>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
 
@@ -118,8 +117,6 @@ inline std::uint64_t HashDouble(std::uint64_t h, double v)
   return h;
 }
 
-constexpr std::size_t HugePage = std::size_t(2) << 20;
-
 // An allocator whose resize() leaves new elements default-initialised: the big per-point
 // and per-triangle arrays are written entirely by a parallel pass right after, and
 // zero-filling them first is a serial pass over up to ~100 MB.
@@ -136,38 +133,18 @@ struct NoInitAllocator : std::allocator<T>
   NoInitAllocator(const NoInitAllocator<U>&) noexcept
   {
   }
-  // Big arrays are asked for in transparent huge pages where the system has them: first
-  // touch then faults once per 2 MB instead of once per 4 kB (the faults were a sixth of
-  // the filter's time on a 1M-triangle mesh).
+  // Big arrays in transparent huge pages where the system has them: first touch then
+  // faults once per 2 MB instead of once per 4 kB.
   T* allocate(std::size_t n)
   {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const std::size_t bytes = n * sizeof(T);
-    if (bytes >= HugePage)
+    void* p = vtkSurfaceDetailMemory::Allocate(n * sizeof(T));
+    if (!p)
     {
-      const std::size_t rounded = (bytes + HugePage - 1) / HugePage * HugePage;
-      void* p = std::aligned_alloc(HugePage, rounded);
-      if (!p)
-      {
-        throw std::bad_alloc();
-      }
-      madvise(p, rounded, MADV_HUGEPAGE);
-      return static_cast<T*>(p);
+      throw std::bad_alloc();
     }
-#endif
-    return std::allocator<T>::allocate(n);
+    return static_cast<T*>(p);
   }
-  void deallocate(T* p, std::size_t n)
-  {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (n * sizeof(T) >= HugePage)
-    {
-      std::free(p);
-      return;
-    }
-#endif
-    std::allocator<T>::deallocate(p, n);
-  }
+  void deallocate(T* p, std::size_t) { vtkSurfaceDetailMemory::Release(p); }
   template <typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
   {
@@ -1321,6 +1298,800 @@ private:
   }
 };
 
+// ---------------------------------------------------------------------------------------
+// The fast path, for the usual input: triangles only, point coordinates, normals and
+// texture coordinates in float or double arrays, the default angular threshold, no
+// degenerate or non-finite input, and every vertex a simple fan (one connected run of
+// triangles of one texture orientation, all of which MikkTSpace joins). There every
+// corner of a vertex gets the same frame, so the frames are computed per point, in one
+// parallel pass over a vertex -> corner list, with no per-corner arrays and no point
+// splitting. Anything else makes the fast path give up (Run returns false) and the
+// general algorithm above does the whole job; the checks are conservative, with margins
+// far above the rounding of the quantities they test, so the two paths take the same
+// decisions wherever the fast one finishes.
+
+// The angle between two plane vectors whose dot product is c and the absolute value of
+// whose cross product is s, as atan2(s, c) with an absolute error below 1.2e-8 rad: atan on
+// [0, 1] is q times a degree-8 polynomial in q^2 (a Chebyshev fit of atan(q)/q). Unlike
+// acos of normalised vectors it needs no square root, and it stays accurate near 0 and pi;
+// as a corner weight its relative error is far below what the reference's single
+// precision leaves.
+inline double FastAngle(double s, double c)
+{
+  const double ac = std::abs(c);
+  const bool steep = s > ac;
+  const double q = std::min(s, ac) / std::max(s, ac);
+  const double u = q * q, u2 = u * u, u4 = u2 * u2;
+  const double p01 = 0.9999999842426364 - 0.3333306678069164 * u;
+  const double p23 = 0.1999248357850966 - 0.1420257051178519 * u;
+  const double p45 = 0.1063675409849997 - 0.07495445444194075 * u;
+  const double p67 = 0.04258760747628684 - 0.016005030510568757 * u;
+  const double p = (p01 + p23 * u2) + (p45 + p67 * u2) * u4 + 0.002834064300823229 * (u4 * u4);
+  double r = q * p;
+  r = steep ? 0.5 * vtkMath::Pi() - r : r;
+  return c < 0.0 ? vtkMath::Pi() - r : r;
+}
+
+inline void PrefetchForWrite(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p, 1);
+#else
+  (void)p;
+#endif
+}
+
+// Memory from vtkSurfaceDetailMemory (huge pages for big blocks), not initialised.
+template <typename T>
+class Block
+{
+public:
+  explicit Block(std::size_t n)
+    : Data(static_cast<T*>(vtkSurfaceDetailMemory::Allocate(n * sizeof(T))))
+  {
+    if (!this->Data)
+    {
+      throw std::bad_alloc();
+    }
+  }
+  ~Block() { vtkSurfaceDetailMemory::Release(this->Data); }
+  Block(const Block&) = delete;
+  Block& operator=(const Block&) = delete;
+  T* Get() const { return this->Data; }
+  T& operator[](std::size_t i) const { return this->Data[i]; }
+
+private:
+  T* Data;
+};
+
+// Fans larger than this (poles) go the general way.
+constexpr int MaxFastFan = 32;
+// Margins of the fast path's checks: squared sine of ~0.06 degrees for projections onto
+// the tangent plane, cosine of 89.94 degrees for directions within a quarter turn.
+constexpr double FastProjection2 = 1e-6;
+constexpr double FastCos = 1e-3;
+
+template <typename PT, typename NT, typename TT>
+class FastMikk
+{
+public:
+  FastMikk(const PT* p, const NT* n, const TT* t, int tcStride, vtkIdType nPts)
+    : P(p)
+    , N(n)
+    , T(t)
+    , TcStride(tcStride)
+    , NumberOfPoints(static_cast<std::int32_t>(nPts))
+  {
+  }
+
+  /// Tangents of all points into @a out (4 floats each), or false if the input needs the
+  /// general algorithm (then @a out holds garbage, and @a weldOut the weld if it was
+  /// computed: the general algorithm's own, which it need not repeat).
+  template <typename IdT>
+  bool Run(const IdT* offsets, const IdT* conn, vtkIdType nTris, float* out,
+    std::vector<vtkIdType>& weldOut)
+  {
+    Block<std::int32_t> weld(this->NumberOfPoints);
+    if (!this->Weld(weld))
+    {
+      return false;
+    }
+    if (this->Finish(offsets, conn, nTris, weld, out))
+    {
+      return true;
+    }
+    weldOut.resize(static_cast<std::size_t>(this->NumberOfPoints));
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          weldOut[i] = this->Welded ? weld[i] : i;
+        }
+      });
+    return false;
+  }
+
+private:
+  template <typename IdT>
+  bool Finish(const IdT* offsets, const IdT* conn, vtkIdType nTris, const Block<std::int32_t>& weld,
+    float* out)
+  {
+    const std::size_t nt = static_cast<std::size_t>(nTris);
+    std::unique_ptr<Block<std::atomic<unsigned char>>> referenced;
+    if (this->Welded)
+    {
+      referenced.reset(new Block<std::atomic<unsigned char>>(this->NumberOfPoints));
+      auto* r = referenced->Get();
+      vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+        [r](vtkIdType b, vtkIdType e)
+        {
+          for (vtkIdType i = b; i < e; ++i)
+          {
+            r[i].store(0, std::memory_order_relaxed);
+          }
+        });
+    }
+    Block<std::int32_t> w(3 * nt);
+    Block<std::array<float, 6>> dir(nt);
+    Block<unsigned char> orient(nt);
+    if (!this->Triangles(offsets, conn, nTris, weld.Get(), referenced ? referenced->Get() : nullptr,
+          w.Get(), dir.Get(), orient.Get()))
+    {
+      return false;
+    }
+    Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
+    Block<std::int32_t> corners(3 * nt);
+    this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get());
+    // A pole (a fan too large for the fast path) is found here at the cost of one scan,
+    // rather than in the per-vertex pass, which may have done most of its work by then.
+    std::atomic<bool> largeFan(false);
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType v = b; v < e; ++v)
+        {
+          if (first[v + 1] - first[v] > MaxFastFan)
+          {
+            largeFan.store(true, std::memory_order_relaxed);
+            return;
+          }
+        }
+      });
+    if (largeFan)
+    {
+      return false;
+    }
+    if (!this->Vertices(w.Get(), dir.Get(), orient.Get(), first.Get(), corners.Get(), weld.Get(),
+          referenced ? referenced->Get() : nullptr, out))
+    {
+      return false;
+    }
+    return true;
+  }
+
+  const PT* P;
+  const NT* N;
+  const TT* T;
+  const int TcStride;
+  const std::int32_t NumberOfPoints;
+  bool Welded = false;
+
+  V3 Position(std::int32_t i) const
+  {
+    return { double(this->P[3 * i]), double(this->P[3 * i + 1]), double(this->P[3 * i + 2]) };
+  }
+  std::array<double, 2> TCoord(std::int32_t i) const
+  {
+    const TT* t = this->T + std::size_t(this->TcStride) * i;
+    return { double(t[0]), double(t[1]) };
+  }
+  // Hash of a point's values (0 and -0 alike, as they compare equal); false if any value
+  // is not finite. Independent products rather than a chain of dependent steps.
+  bool Hash(std::int32_t i, std::uint64_t& h) const
+  {
+    const TT* t = this->T + std::size_t(this->TcStride) * i;
+    const double v[8] = { double(this->P[3 * i]), double(this->P[3 * i + 1]),
+      double(this->P[3 * i + 2]), double(this->N[3 * i]), double(this->N[3 * i + 1]),
+      double(this->N[3 * i + 2]), double(t[0]), double(t[1]) };
+    static constexpr std::uint64_t K[8] = { 0x9e3779b97f4a7c15ULL, 0xc2b2ae3d27d4eb4fULL,
+      0x165667b19e3779f9ULL, 0xd6e8feb86659fd93ULL, 0xa0761d6478bd642fULL, 0xe7037ed1a0b428dbULL,
+      0x8ebc6af09c88c6e3ULL, 0x589965cc75374cc3ULL };
+    double finite = 0.0;
+    h = 0;
+    for (int c = 0; c < 8; ++c)
+    {
+      finite += v[c] * 0.0;
+      const double x = v[c] == 0.0 ? 0.0 : v[c];
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof(bits));
+      h += bits * K[c];
+    }
+    h ^= h >> 31;
+    h *= 0x7fb5d329728ea185ULL;
+    h ^= h >> 27;
+    h *= 0x81dadef4bc2dd44dULL;
+    h ^= h >> 33;
+    return finite == 0.0;
+  }
+  bool SameValues(std::int32_t i, std::int32_t o) const
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (this->P[3 * i + c] != this->P[3 * o + c] || this->N[3 * i + c] != this->N[3 * o + c])
+      {
+        return false;
+      }
+    }
+    const TT* ti = this->T + std::size_t(this->TcStride) * i;
+    const TT* to = this->T + std::size_t(this->TcStride) * o;
+    return ti[0] == to[0] && ti[1] == to[1];
+  }
+
+  // The weld of the general path, in parallel. Points are hashed in parallel and sorted
+  // by the hash's low bits into buckets (a counting sort, which keeps increasing ids within
+  // each bucket); buckets are welded independently, each in a table small enough to stay
+  // in the first-level cache, so every vertex is represented by its smallest point id, as
+  // in the general path, with no atomics and no cache misses on a big table. Non-finite
+  // values anywhere send the input to the general path (which warns about them).
+  bool Weld(const Block<std::int32_t>& weld)
+  {
+    const std::int32_t n = this->NumberOfPoints;
+    Block<std::uint64_t> hashes(n);
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, vtkIdType(n),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          if (!this->Hash(static_cast<std::int32_t>(i), hashes[i]))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+        }
+      });
+    if (fail)
+    {
+      return false;
+    }
+    int bucketBits = 0;
+    while (bucketBits < 16 && (std::int64_t(1024) << bucketBits) < n)
+    {
+      ++bucketBits;
+    }
+    const std::uint64_t buckets = std::uint64_t(1) << bucketBits;
+    const std::uint64_t bucketMask = buckets - 1;
+    std::vector<std::int32_t> bucketFirst(buckets + 1, 0);
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      ++bucketFirst[(hashes[i] & bucketMask) + 1];
+    }
+    for (std::uint64_t k = 0; k < buckets; ++k)
+    {
+      bucketFirst[k + 1] += bucketFirst[k];
+    }
+    Block<std::int32_t> order(n);
+    {
+      std::vector<std::int32_t> fill(bucketFirst.begin(), bucketFirst.end() - 1);
+      for (std::int32_t i = 0; i < n; ++i)
+      {
+        order[fill[hashes[i] & bucketMask]++] = i;
+      }
+    }
+    std::atomic<bool> welded(false);
+    vtkSMPTools::For(0, vtkIdType(buckets),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        std::vector<std::int32_t> table;
+        bool any = false;
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          const std::int32_t begin = bucketFirst[k], end = bucketFirst[k + 1];
+          std::uint64_t capacity = 16;
+          while (capacity < 2 * static_cast<std::uint64_t>(end - begin))
+          {
+            capacity *= 2;
+          }
+          const std::uint64_t mask = capacity - 1;
+          table.assign(capacity, -1);
+          for (std::int32_t j = begin; j < end; ++j)
+          {
+            const std::int32_t i = order[j];
+            for (std::uint64_t s = (hashes[i] >> bucketBits) & mask;; s = (s + 1) & mask)
+            {
+              const std::int32_t o = table[s];
+              if (o < 0)
+              {
+                table[s] = i;
+                weld[i] = i;
+                break;
+              }
+              if (hashes[o] == hashes[i] && this->SameValues(i, o))
+              {
+                weld[i] = o;
+                any = true;
+                break;
+              }
+            }
+          }
+        }
+        if (any)
+        {
+          welded.store(true, std::memory_order_relaxed);
+        }
+      });
+    this->Welded = welded;
+    return true;
+  }
+
+  // Per triangle: welded corners, the directions of dP/ds and dP/dt as the general path's
+  // InitTriangles computes them (then stored in single precision: every use below has a
+  // margin far above that rounding), and the orientation. Quads, larger polygons,
+  // degenerate triangles and triangles without usable derivatives need the general path.
+  template <typename IdT>
+  bool Triangles(const IdT* offsets, const IdT* conn, vtkIdType nTris, const std::int32_t* weld,
+    std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
+    unsigned char* orient) const
+  {
+    if (offsets[nTris] != 3 * nTris)
+    {
+      return false;
+    }
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, nTris,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType t = b; t < e; ++t)
+        {
+          if (offsets[t] != 3 * t || fail.load(std::memory_order_relaxed))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+          std::int32_t pt[3];
+          for (int k = 0; k < 3; ++k)
+          {
+            pt[k] = static_cast<std::int32_t>(conn[3 * t + k]);
+            w[3 * t + k] = this->Welded ? weld[pt[k]] : pt[k];
+            if (referenced)
+            {
+              referenced[pt[k]].store(1, std::memory_order_relaxed);
+            }
+          }
+          const V3 v1 = this->Position(pt[0]), v2 = this->Position(pt[1]),
+                   v3 = this->Position(pt[2]);
+          if (Equal(v1, v2) || Equal(v1, v3) || Equal(v2, v3))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+          const auto t1 = this->TCoord(pt[0]), t2 = this->TCoord(pt[1]), t3 = this->TCoord(pt[2]);
+          const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
+          const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
+          const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
+          const double area2 = t21x * t31y - t21y * t31x;
+          const V3 os = Sub(Scale(t31y, d1), Scale(t21y, d2));
+          const V3 ot = Sub(Scale(t21x, d2), Scale(t31x, d1));
+          // The general path's tests (cancellation of dP/ds or dP/dt, usable derivatives),
+          // made stricter so that no square root or division is needed to pass them:
+          // (a + b)^2 <= 2 (a^2 + b^2), and a margin of 2 on the division-free ratios.
+          const double absArea = std::abs(area2);
+          const double l1 = Dot(d1, d1), l2 = Dot(d2, d2);
+          const double lenOs2 = Dot(os, os), lenOt2 = Dot(ot, ot);
+          constexpr double eps2 = 2.0 * CancellationEps * CancellationEps;
+          if (!NotZero(area2) || !(lenOs2 > eps2 * (t31y * t31y * l1 + t21y * t21y * l2)) ||
+            !(lenOt2 > eps2 * (t31x * t31x * l1 + t21x * t21x * l2)) ||
+            !(lenOs2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)) ||
+            !(lenOt2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+          const double lenOs = std::sqrt(lenOs2), lenOt = std::sqrt(lenOt2);
+          const double sign = area2 > 0.0 ? 1.0 : -1.0;
+          const double ss = sign / lenOs, st = sign / lenOt;
+          dir[t] = { float(ss * os[0]), float(ss * os[1]), float(ss * os[2]), float(st * ot[0]),
+            float(st * ot[1]), float(st * ot[2]) };
+          orient[t] = area2 > 0.0 ? 1 : 0;
+        }
+      });
+    return !fail;
+  }
+
+  // Vertex -> its corners (4 * triangle + corner), each list in triangle order. Two tasks:
+  // the first half of the triangles counts into one array and fills each list from its
+  // front, the second half into another and fills from the back, walking backwards; no
+  // atomics, and the order does not depend on the number of threads.
+  void VertexCorners(
+    const std::int32_t* w, vtkIdType nTris, std::int32_t* first, std::int32_t* corners) const
+  {
+    const std::size_t nv = static_cast<std::size_t>(this->NumberOfPoints);
+    const vtkIdType half = 3 * (nTris / 2), end = 3 * nTris;
+    Block<std::int32_t> count0(nv), count1(nv);
+    std::memset(count0.Get(), 0, nv * sizeof(std::int32_t));
+    std::memset(count1.Get(), 0, nv * sizeof(std::int32_t));
+    vtkSMPTools::For(0, 2, 1,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType part = b; part < e; ++part)
+        {
+          std::int32_t* count = part == 0 ? count0.Get() : count1.Get();
+          for (vtkIdType c = part == 0 ? 0 : half; c < (part == 0 ? half : end); ++c)
+          {
+            ++count[w[c]];
+          }
+        }
+      });
+    std::int32_t sum = 0;
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      const std::int32_t n0 = count0[v], n1 = count1[v];
+      first[v] = sum;
+      count0[v] = sum; // the front cursor
+      sum += n0 + n1;
+      count1[v] = sum; // the back cursor
+    }
+    first[nv] = sum;
+    vtkSMPTools::For(0, 2, 1,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType part = b; part < e; ++part)
+        {
+          if (part == 0)
+          {
+            for (vtkIdType t = 0; t < half / 3; ++t)
+            {
+              for (int i = 0; i < 3; ++i)
+              {
+                corners[count0[w[3 * t + i]]++] = static_cast<std::int32_t>(t << 2 | i);
+              }
+            }
+          }
+          else
+          {
+            for (vtkIdType t = end / 3 - 1; t >= half / 3; --t)
+            {
+              for (int i = 2; i >= 0; --i)
+              {
+                corners[--count1[w[3 * t + i]]] = static_cast<std::int32_t>(t << 2 | i);
+              }
+            }
+          }
+        }
+      });
+  }
+
+  bool Vertices(const std::int32_t* w, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+    const std::atomic<unsigned char>* referenced, float* out) const
+  {
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        if (fail.load(std::memory_order_relaxed))
+        {
+          return;
+        }
+        for (std::int32_t v = std::int32_t(b); v < std::int32_t(e); ++v)
+        {
+          if (this->Welded && weld[v] != v)
+          {
+            continue; // a copy of a smaller point, filled below
+          }
+          if (!this->Vertex(v, w, dir, orient, first, corners, out + 4 * std::size_t(v)))
+          {
+            fail.store(true, std::memory_order_relaxed);
+            return;
+          }
+        }
+      });
+    if (fail)
+    {
+      return false;
+    }
+    if (!this->Welded)
+    {
+      return true;
+    }
+    // Welded points share their vertex's frame if a polygon uses them; the frame of a point
+    // no polygon uses is the default one, as in the general path.
+    auto unused = [&](std::int32_t p, float* t)
+    {
+      const V3 n = this->UnitNormal(p);
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, t);
+    };
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (std::int32_t p = std::int32_t(b); p < std::int32_t(e); ++p)
+        {
+          if (weld[p] == p)
+          {
+            continue;
+          }
+          if (referenced[p].load(std::memory_order_relaxed))
+          {
+            std::copy_n(out + 4 * std::size_t(weld[p]), 4, out + 4 * std::size_t(p));
+          }
+          else
+          {
+            unused(p, out + 4 * std::size_t(p));
+          }
+        }
+      });
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (std::int32_t p = std::int32_t(b); p < std::int32_t(e); ++p)
+        {
+          if (weld[p] == p && !referenced[p].load(std::memory_order_relaxed))
+          {
+            unused(p, out + 4 * std::size_t(p));
+          }
+        }
+      });
+    return true;
+  }
+
+  V3 UnitNormal(std::int32_t v) const
+  {
+    V3 n{ double(this->N[3 * v]), double(this->N[3 * v + 1]), double(this->N[3 * v + 2]) };
+    const double len = std::sqrt(Dot(n, n));
+    if (len > 0.0 && std::isfinite(len))
+    {
+      n = Scale(1.0 / len, n);
+    }
+    return n;
+  }
+
+  // One vertex: false if it is not a simple fan. Loops over the fan are kept apart and
+  // free of early exits (checks are accumulated) so that the compiler can vectorise them.
+  bool Vertex(std::int32_t v, const std::int32_t* w, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    float* out) const
+  {
+    const int k = first[v + 1] - first[v];
+    const V3 n = this->UnitNormal(v);
+    if (k == 0)
+    {
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
+      return true;
+    }
+    if (k > MaxFastFan || !(std::abs(Dot(n, n) - 1.0) < 1e-6))
+    {
+      return false;
+    }
+    std::int32_t tri[MaxFastFan], next[MaxFastFan], prev[MaxFastFan];
+    const std::int32_t* list = corners + first[v];
+    const unsigned char o = orient[list[0] >> 2];
+    int same = 1;
+    for (int a = 0; a < k; ++a)
+    {
+      static constexpr int nextCorner[3] = { 1, 2, 0 }, prevCorner[3] = { 2, 0, 1 };
+      const std::int32_t t = list[a] >> 2, i = list[a] & 3;
+      tri[a] = t;
+      next[a] = w[3 * t + nextCorner[i]];
+      prev[a] = w[3 * t + prevCorner[i]];
+      same &= orient[t] == o;
+    }
+    if (!same)
+    {
+      return false;
+    }
+    // Links across the edges at v; each edge must join exactly two triangles or bound the
+    // fan (then the general path's greedy pairing finds the same links), and the links
+    // must chain all the triangles into one run. The triangle b whose prev[b] is next[a]
+    // is found through a small hash table of prev values: a quadratic scan mispredicts, or
+    // when vectorised stalls on the store forwarding of the just written prev[].
+    constexpr int TableBits = 6;
+    static_assert(MaxFastFan <= (1 << TableBits) / 2, "table at most half full");
+    unsigned char table[1 << TableBits];
+    std::memset(table, 0xff, sizeof(table));
+    auto slot = [](std::int32_t x)
+    { return (static_cast<std::uint32_t>(x) * 0x9e3779b1u) >> (32 - TableBits); };
+    for (int b = 0; b < k; ++b)
+    {
+      std::uint32_t h = slot(prev[b]);
+      for (; table[h] != 0xff; h = (h + 1) & ((1u << TableBits) - 1u))
+      {
+        if (prev[table[h]] == prev[b])
+        {
+          return false; // two triangles run the same way along an edge
+        }
+      }
+      table[h] = static_cast<unsigned char>(b);
+    }
+    int link[MaxFastFan];
+    std::uint32_t hasIn = 0;
+    for (int a = 0; a < k; ++a)
+    {
+      int l = -1;
+      for (std::uint32_t h = slot(next[a]); table[h] != 0xff;
+           h = (h + 1) & ((1u << TableBits) - 1u))
+      {
+        if (prev[table[h]] == next[a])
+        {
+          l = table[h];
+          break;
+        }
+      }
+      if (l >= 0 && ((hasIn >> l) & 1u))
+      {
+        return false;
+      }
+      link[a] = l;
+      hasIn |= l >= 0 ? 1u << l : 0u;
+    }
+    const std::uint32_t noIn = ~hasIn & (k == 32 ? ~0u : (1u << k) - 1u);
+    if ((noIn & (noIn - 1u)) != 0)
+    {
+      return false; // more than one run
+    }
+    int start = 0;
+    while (noIn != 0 && !((noIn >> start) & 1u))
+    {
+      ++start;
+    }
+    // The fan in chain order, and its k + 1 edges: edge s comes before triangle s, edge
+    // s + 1 after it.
+    int chain[MaxFastFan];
+    chain[0] = start;
+    for (int c = 1; c < k; ++c)
+    {
+      chain[c] = link[chain[c - 1]];
+      if (chain[c] < 0 || chain[c] == start)
+      {
+        return false;
+      }
+    }
+    // An orthonormal basis of the tangent plane (Duff et al., "Building an orthonormal
+    // basis, revisited", 2017): projections become two dot products.
+    const double sgn = std::copysign(1.0, n[2]);
+    const double ia = -1.0 / (sgn + n[2]);
+    const double bb = n[0] * n[1] * ia;
+    const double b1[3] = { 1.0 + sgn * n[0] * n[0] * ia, sgn * bb, -sgn * n[0] };
+    const double b2[3] = { bb, sgn + n[1] * n[1] * ia, -n[1] };
+    const double pv[3] = { double(this->P[3 * v]), double(this->P[3 * v + 1]),
+      double(this->P[3 * v + 2]) };
+    double ex[MaxFastFan + 1], ey[MaxFastFan + 1];
+    int ok = 1;
+    for (int s = 0; s <= k; ++s)
+    {
+      const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
+      const double d[3] = { double(this->P[3 * x]) - pv[0], double(this->P[3 * x + 1]) - pv[1],
+        double(this->P[3 * x + 2]) - pv[2] };
+      // No check needed: a position edge is not zero (no degenerate triangles here), and
+      // one along the normal projects to zero, whose angle (0 / 0) is NaN and makes the
+      // vertex fail below.
+      ex[s] = d[0] * b1[0] + d[1] * b1[1] + d[2] * b1[2];
+      ey[s] = d[0] * b2[0] + d[1] * b2[1] + d[2] * b2[2];
+    }
+    // Projections onto the tangent plane through dot products with n: for a direction d,
+    // |proj d|^2 = d.d - (d.n)^2, and proj d . r = d . r for r in the plane; the average
+    // of the projections is the projection of the average.
+    // At the default threshold MikkTSpace separates only opposite directions: with every
+    // direction within a quarter turn of the first (with a margin), no two are opposite.
+    V3 r[2];
+    {
+      const auto& d = dir[tri[chain[0]]];
+      for (int i = 0; i < 2; ++i)
+      {
+        const V3 x{ d[3 * i], d[3 * i + 1], d[3 * i + 2] };
+        r[i] = Sub(x, Scale(Dot(x, n), n));
+        const double len2 = Dot(r[i], r[i]);
+        if (!(len2 > FastProjection2))
+        {
+          return false;
+        }
+        r[i] = Scale(1.0 / std::sqrt(len2), r[i]);
+      }
+    }
+    double sum[3] = { 0.0, 0.0, 0.0 }, sumN = 0.0;
+    for (int s = 0; s < k; ++s)
+    {
+      const double angle = FastAngle(
+        std::abs(ex[s] * ey[s + 1] - ey[s] * ex[s + 1]), ex[s] * ex[s + 1] + ey[s] * ey[s + 1]);
+      const auto& d = dir[tri[chain[s]]];
+      const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
+      const double on = os[0] * n[0] + os[1] * n[1] + os[2] * n[2];
+      const double po2 = os[0] * os[0] + os[1] * os[1] + os[2] * os[2] - on * on;
+      ok &= os[0] * r[0][0] + os[1] * r[0][1] + os[2] * r[0][2] > FastCos;
+      ok &= ot[0] * r[1][0] + ot[1] * r[1][1] + ot[2] * r[1][2] > FastCos;
+      const double weight = angle / std::sqrt(po2);
+      sum[0] += weight * os[0];
+      sum[1] += weight * os[1];
+      sum[2] += weight * os[2];
+      sumN += weight * on;
+    }
+    const V3 t{ sum[0] - sumN * n[0], sum[1] - sumN * n[1], sum[2] - sumN * n[2] };
+    const double len2 = Dot(t, t);
+    if (!ok || !(len2 > 1e-12 && std::isfinite(len2)))
+    {
+      return false;
+    }
+    const double inv = 1.0 / std::sqrt(len2);
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] = static_cast<float>(inv * t[c]);
+    }
+    out[3] = o != 0 ? 1.0f : -1.0f;
+    return true;
+  }
+};
+
+// Calls f with the values of a float or double array; false for other arrays.
+template <typename F>
+bool WithValues(vtkDataArray* array, F&& f)
+{
+  if (auto* fa = vtkFloatArray::FastDownCast(array))
+  {
+    f(static_cast<const float*>(fa->GetPointer(0)));
+    return true;
+  }
+  if (auto* da = vtkDoubleArray::FastDownCast(array))
+  {
+    f(static_cast<const double*>(da->GetPointer(0)));
+    return true;
+  }
+  return false;
+}
+
+// The tangents of every input point by the fast path, or nullptr if the input needs the
+// general one.
+vtkSmartPointer<vtkFloatArray> FastTangents(
+  vtkPolyData* input, vtkDataArray* normals, vtkDataArray* tcoords, std::vector<vtkIdType>& weld)
+{
+  vtkCellArray* polys = input->GetPolys();
+  const vtkIdType nPts = input->GetNumberOfPoints();
+  const vtkIdType nTris = polys->GetNumberOfCells();
+  if (input->GetNumberOfStrips() > 0 || nTris == 0 ||
+    nPts >= std::numeric_limits<std::int32_t>::max() || nTris >= (vtkIdType(1) << 29))
+  {
+    return nullptr;
+  }
+  auto tangents = vtkSmartPointer<vtkFloatArray>::New();
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(4);
+  if (!vtkSurfaceDetailMemory::AllocateTuples(tangents.Get(), nPts))
+  {
+    return nullptr;
+  }
+  float* out = tangents->GetPointer(0);
+  const int tcStride = tcoords->GetNumberOfComponents();
+  bool done = false;
+  try
+  {
+    WithValues(input->GetPoints()->GetData(),
+      [&](auto p)
+      {
+        WithValues(normals,
+          [&](auto n)
+          {
+            WithValues(tcoords,
+              [&](auto t)
+              {
+                using PT = std::remove_const_t<std::remove_pointer_t<decltype(p)>>;
+                using NT = std::remove_const_t<std::remove_pointer_t<decltype(n)>>;
+                using TT = std::remove_const_t<std::remove_pointer_t<decltype(t)>>;
+                FastMikk<PT, NT, TT> fast(p, n, t, tcStride, nPts);
+                done = polys->IsStorage64Bit()
+                  ? fast.Run(polys->GetOffsetsArray64()->GetPointer(0),
+                      polys->GetConnectivityArray64()->GetPointer(0), nTris, out, weld)
+                  : fast.Run(polys->GetOffsetsArray32()->GetPointer(0),
+                      polys->GetConnectivityArray32()->GetPointer(0), nTris, out, weld);
+              });
+          });
+      });
+  }
+  catch (const std::bad_alloc&)
+  {
+    done = false;
+  }
+  return done ? tangents : nullptr;
+}
+
 vtkSmartPointer<vtkIdList> IdRange(vtkIdType n)
 {
   auto ids = vtkSmartPointer<vtkIdList>::New();
@@ -1409,11 +2180,37 @@ int vtkMikkTSpaceTangents::RequestData(
     return 0;
   }
 
+  std::vector<vtkIdType> weld; // the fast path's, when it gives up after welding
+  if (this->AngularThreshold >= 180.0)
+  {
+    if (vtkSmartPointer<vtkFloatArray> tangents = FastTangents(input, normals, tcoords, weld))
+    {
+      // Every point kept its one frame: the input's surface with one more array.
+      output->SetPoints(input->GetPoints());
+      output->GetPointData()->PassData(inPD);
+      output->GetPointData()->RemoveArray("Tangents");
+      output->GetPointData()->AddArray(tangents);
+      output->SetVerts(input->GetVerts());
+      output->SetLines(input->GetLines());
+      output->SetPolys(input->GetPolys());
+      output->GetCellData()->PassData(input->GetCellData());
+      output->GetFieldData()->PassData(input->GetFieldData());
+      return 1;
+    }
+  }
+
   MikkMesh mesh;
   mesh.NumberOfPoints = nPts;
   {
     ReadAttributes(input->GetPoints(), normals, tcoords, mesh);
-    Weld(mesh);
+    if (weld.empty())
+    {
+      Weld(mesh);
+    }
+    else
+    {
+      mesh.Weld = std::move(weld);
+    }
     NormalizeNormals(mesh);
   }
   BuildFaces(input, mesh);

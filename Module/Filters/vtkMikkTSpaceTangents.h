@@ -46,6 +46,13 @@
  * rounding of the others), the filter also treats it as zero, rather than as a direction
  * made of rounding noise. The result does not depend on the number of threads.
  *
+ * Most meshes take a fast path: triangles only, float or double arrays, the default
+ * AngularThreshold, and every vertex one connected fan of one texture orientation (no
+ * mirror seam through it, no pole of more than 32 triangles, no degenerate triangle).
+ * There each point has one frame, computed in one parallel pass per point, with the
+ * triangles' directions kept in single precision and a polynomial angle (frames within
+ * 1e-5 degrees of the general algorithm's). Other meshes take the general algorithm.
+ *
  * @sa vtkPolyDataTangents vtkPolyDataNormals
  */
 

@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -303,9 +304,12 @@ TEST(vtkMikkTSpaceTangents, SplitPointsKeepPointData)
 
 TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
 {
+  // The torus goes the fast way (every vertex a simple fan), the others the general one.
   auto sphere = MakeUVSphere(160, 80);
   auto sheet = MakeMirroredSheet(120);
-  for (vtkPolyData* input : { sphere.Get(), sheet.Get() })
+  auto torus = MakeTorus(300, 150);
+  auto unwelded = Unweld(MakeTorus(60, 30));
+  for (vtkPolyData* input : { sphere.Get(), sheet.Get(), torus.Get(), unwelded.Get() })
   {
     vtkSMPTools::Initialize(1);
     FilterRun one(input);
@@ -326,6 +330,43 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
     {
       ASSERT_EQ(c1->GetTuple1(i), c2->GetTuple1(i));
     }
+  }
+}
+
+// Meshes whose every vertex is a simple fan take a fast path at the default threshold; any
+// other threshold takes the general algorithm, and at 179.9 degrees nothing on these
+// smooth meshes separates, so both must give the same frames: same points and w, and
+// directions within 1e-4 degrees (the fast path keeps the triangles' directions in single
+// precision and weighs corners with a polynomial atan).
+TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPath)
+{
+  auto torus = MakeTorus(200, 100);
+  auto unwelded = Unweld(MakeTorus(40, 20));
+  auto plane = MakePlane(24);
+  for (vtkPolyData* input : { torus.Get(), unwelded.Get(), plane.Get() })
+  {
+    vtkNew<vtkMikkTSpaceTangents> fast, general;
+    fast->SetInputData(input);
+    general->SetInputData(input);
+    general->SetAngularThreshold(179.9);
+    fast->Update();
+    general->Update();
+    vtkDataArray* tf = fast->GetOutput()->GetPointData()->GetArray("Tangents");
+    vtkDataArray* tg = general->GetOutput()->GetPointData()->GetArray("Tangents");
+    ASSERT_NE(tf, nullptr);
+    ASSERT_NE(tg, nullptr);
+    ASSERT_EQ(tf->GetNumberOfTuples(), tg->GetNumberOfTuples());
+    double maxDeg = 0.0;
+    for (vtkIdType p = 0; p < tf->GetNumberOfTuples(); ++p)
+    {
+      double a[4], b[4];
+      tf->GetTuple(p, a);
+      tg->GetTuple(p, b);
+      ASSERT_EQ(a[3], b[3]) << "point " << p;
+      const double c = vtkMath::Dot(a, b) / (vtkMath::Norm(a) * vtkMath::Norm(b));
+      maxDeg = std::max(maxDeg, vtkMath::DegreesFromRadians(std::acos(std::min(1.0, c))));
+    }
+    EXPECT_LT(maxDeg, 1e-4);
   }
 }
 
