@@ -627,10 +627,37 @@ inline double Displacement(
   return Finite(c.Scale * (h - c.Midlevel));
 }
 
-// Pass 1: displacement, and the analytic normals (Approximate, Exact).
+// |x| at most the largest double: false for infinities and NaN, as std::isfinite, but a plain
+// compare that vectorises.
+inline bool IsFinite(double x)
+{
+  return std::abs(x) <= std::numeric_limits<double>::max();
+}
+
+// The value stored in an output array of R: for float, beyond float's range the largest float.
+template <typename R>
+inline R ToReal(double v)
+{
+  if (std::is_same<R, float>::value)
+  {
+    constexpr double big = std::numeric_limits<float>::max();
+    v = std::min(std::max(v, -big), big);
+  }
+  return static_cast<R>(v);
+}
+
+// Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
+// held as structure of arrays: the height samples and the fits (gathers) run point by point,
+// everything else in short branch-free loops over the block that the compiler vectorises; the
+// rare points that need a fallback (a tangent with no direction left) are redone afterwards
+// with the general code. Each loop keeps the operations and their order of the per-point
+// helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the results are
+// theirs to the bit.
 template <int Interp, typename T, typename R>
 struct DisplaceWorker
 {
+  static constexpr int Block = 64;
+  using Lanes = double[Block];
   const Context<R>& C;
   const Texels<T>& Tex;
 
@@ -640,111 +667,282 @@ struct DisplaceWorker
     const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
-    // Blocks of points, each in three short loops (displace and find the direction; normalise;
-    // the tangents) rather than one long one: the square roots and divisions of neighbouring
-    // points then overlap instead of waiting on one another.
-    constexpr vtkIdType block = 128;
-    double directions[block][3];
-    for (vtkIdType first = begin; first < end; first += block)
+    alignas(64) Lanes n[3], fallback[3], d, ds, dt, ps[3], pt[3], ns[3], nt[3], m[3], x[4];
+    for (vtkIdType first = begin; first < end; first += Block)
     {
-      const vtkIdType last = std::min(end, first + block);
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        this->Direction(i, analytic, exact, directions[i - first]);
-      }
+      const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
+      this->UnitNormals(first, count, n, fallback);
+      this->Heights(first, count, d, ds, dt);
+      this->Points(first, count, n, d, x);
       if (!analytic)
       {
         continue;
       }
-      for (vtkIdType i = first; i < last; ++i)
+      this->Derivatives(first, count, exact, ps, pt, ns, nt);
+      if (exact)
       {
-        WriteNormal(c, i, directions[i - first]);
+        this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m);
       }
-      if (c.OutTangents)
+      else
       {
-        for (vtkIdType i = first; i < last; ++i)
-        {
-          WriteTangent(c, i, directions[i - first]);
-        }
+        this->template Directions<false>(count, n, d, ds, dt, ps, pt, ns, nt, m);
+      }
+      this->Normals(first, count, fallback, m);
+      if (c.OutTangents && c.OutTangents->NC == 4)
+      {
+        this->template Tangents<4>(first, count, m, x);
+      }
+      else if (c.OutTangents)
+      {
+        this->template Tangents<3>(first, count, m, x);
       }
     }
   }
 
-  // Displaces point @a i and, in the analytic modes, returns its new normal's direction.
-  void Direction(vtkIdType i, bool analytic, bool exact, double m[3]) const
+  // Interleaved values of R to lanes, and back (for R float, clamped to float's range).
+  template <int NC>
+  static void Gather(const R* in, int count, Lanes* lanes)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        lanes[j][k] = in[NC * k + j];
+      }
+    }
+  }
+
+  template <int NC>
+  static void Scatter(const Lanes* lanes, int count, R* out)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = ToReal<R>(lanes[j][k]);
+      }
+    }
+  }
+
+  // InputNormal for the block, and WriteNormal's fallback: that normal, or +z where it has none.
+  void UnitNormals(vtkIdType first, int count, Lanes n[3], Lanes fallback[3]) const
+  {
+    Gather<3>(this->C.Normals->P + 3 * first, count, n);
+    for (int k = 0; k < count; ++k)
+    {
+      const double x = n[0][k], y = n[1][k], z = n[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool keep = len != 0.0 && IsFinite(sx + sy + sz);
+      n[0][k] = keep ? sx : 0.0;
+      n[1][k] = keep ? sy : 0.0;
+      n[2][k] = keep ? sz : 0.0;
+      fallback[0][k] = n[0][k];
+      fallback[1][k] = n[1][k];
+      fallback[2][k] = keep ? sz : 1.0;
+    }
+  }
+
+  void Heights(vtkIdType first, int count, Lanes d, Lanes ds, Lanes dt) const
   {
     const Context<R>& c = this->C;
-    double n[3];
-    InputNormal(c, i, n);
-    const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
-    double h, hs, ht;
-    const double d = Displacement<Interp>(c, this->Tex, i, h, hs, ht);
-    const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
-    const double offset[3] = { d * n[0], d * n[1], d * n[2] };
-    WritePoint(c, i, offset);
-    if (!analytic)
+    for (int k = 0; k < count; ++k)
+    {
+      double h, hs, ht;
+      d[k] = Displacement<Interp>(c, this->Tex, first + k, h, hs, ht);
+      ds[k] = Finite(c.Scale * hs);
+      dt[k] = Finite(c.Scale * ht);
+    }
+  }
+
+  // WritePoint for the block (@a x is scratch).
+  void Points(vtkIdType first, int count, const Lanes n[3], const Lanes d, Lanes x[3]) const
+  {
+    Gather<3>(this->C.Points->P + 3 * first, count, x);
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        const double offset = d[k] * n[j][k];
+        x[j][k] = offset == 0.0 ? x[j][k] : Finite(x[j][k] + offset);
+      }
+    }
+    Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
+  }
+
+  // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t.
+  void Derivatives(vtkIdType first, int count, bool exact, Lanes ps[3], Lanes pt[3], Lanes ns[3],
+    Lanes nt[3]) const
+  {
+    const Context<R>& c = this->C;
+    if (c.DPdu)
+    {
+      Gather<3>(c.DPdu->P + 3 * first, count, ps);
+      Gather<3>(c.DPdv->P + 3 * first, count, pt);
+      for (int j = 0; j < 3; ++j)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          ps[j][k] *= c.DerivativeScale[0];
+          pt[j][k] *= c.DerivativeScale[1];
+        }
+      }
+    }
+    if (c.DPdu && !exact)
     {
       return;
     }
-    double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-    if (c.DPdu)
+    for (int k = 0; k < count; ++k)
     {
-      c.DPdu->Get3(i, Ps);
-      c.DPdv->Get3(i, Pt);
-      for (int k = 0; k < 3; ++k)
+      const vtkIdType i = first + k;
+      double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
+      double Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
+      FitDerivatives(
+        c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      for (int j = 0; j < 3; ++j)
       {
-        Ps[k] *= c.DerivativeScale[0];
-        Pt[k] *= c.DerivativeScale[1];
+        ps[j][k] = Ps[j];
+        pt[j][k] = Pt[j];
+        ns[j][k] = Ns[j];
+        nt[j][k] = Nt[j];
       }
     }
-    if (!c.DPdu || exact)
+  }
+
+  // The new normal's direction: the seed's formula, or (Exact) the cross product of the
+  // displaced surface's derivatives; the input normal where the surface is degenerate.
+  template <bool Exact>
+  void Directions(int count, const Lanes n[3], const Lanes d, const Lanes ds, const Lanes dt,
+    const Lanes ps[3], const Lanes pt[3], const Lanes ns[3], const Lanes nt[3], Lanes m[3]) const
+  {
+    for (int k = 0; k < count; ++k)
     {
-      FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
-    }
-    // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
-    RemoveNormalPart(n, Ps);
-    RemoveNormalPart(n, Pt);
-    double base[3];
-    Cross(Ps, Pt, base);
-    const double area = Dot(n, base);
-    const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
-    if (exact)
-    {
-      RemoveNormalPart(n, Ns);
-      RemoveNormalPart(n, Nt);
-      double qs[3], qt[3];
-      for (int k = 0; k < 3; ++k)
+      const double nk[3] = { n[0][k], n[1][k], n[2][k] };
+      double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
+      // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
+      RemoveNormalPart(nk, Ps);
+      RemoveNormalPart(nk, Pt);
+      double base[3];
+      Cross(Ps, Pt, base);
+      const double area = Dot(nk, base);
+      const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
+      double mk[3];
+      if (Exact)
       {
-        qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
-        qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
+        double Ns[3] = { ns[0][k], ns[1][k], ns[2][k] }, Nt[3] = { nt[0][k], nt[1][k], nt[2][k] };
+        RemoveNormalPart(nk, Ns);
+        RemoveNormalPart(nk, Nt);
+        double qs[3], qt[3];
+        for (int j = 0; j < 3; ++j)
+        {
+          qs[j] = Finite(Ps[j] + ds[k] * nk[j] + d[k] * Ns[j]);
+          qt[j] = Finite(Pt[j] + dt[k] * nk[j] + d[k] * Nt[j]);
+        }
+        // Only the direction matters: scaling first keeps the cross product finite.
+        // (ScaleToUnitMax, with the maximum in std::max's order and no branch.)
+        const double ms = std::max(std::max(std::abs(qs[0]), std::abs(qs[1])), std::abs(qs[2]));
+        const double mt = std::max(std::max(std::abs(qt[0]), std::abs(qt[1])), std::abs(qt[2]));
+        const double invS = 1.0 / ms, invT = 1.0 / mt;
+        for (int j = 0; j < 3; ++j)
+        {
+          qs[j] = ms > 0.0 ? qs[j] * invS : qs[j];
+          qt[j] = mt > 0.0 ? qt[j] * invT : qt[j];
+        }
+        Cross(qs, qt, mk);
       }
-      // Only the direction matters: scaling first keeps the cross product finite.
-      ScaleToUnitMax(qs);
-      ScaleToUnitMax(qt);
-      Cross(qs, qt, m);
-    }
-    else
-    {
-      double nxPs[3], nxPt[3];
-      Cross(n, Ps, nxPs);
-      Cross(n, Pt, nxPt);
-      const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
-      const double a = area * inv, bs = ds * inv, bt = dt * inv;
-      for (int k = 0; k < 3; ++k)
+      else
       {
-        m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
+        double nxPs[3], nxPt[3];
+        Cross(nk, Ps, nxPs);
+        Cross(nk, Pt, nxPt);
+        const double largest =
+          std::max(std::max(std::max(std::abs(area), std::abs(ds[k])), std::abs(dt[k])), 1e-300);
+        const double inv = 1.0 / largest;
+        const double a = area * inv, bs = ds[k] * inv, bt = dt[k] * inv;
+        for (int j = 0; j < 3; ++j)
+        {
+          mk[j] = a * nk[j] + bs * nxPt[j] - bt * nxPs[j];
+        }
+      }
+      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !IsFinite(area);
+      const double sign = area < 0.0 ? -1.0 : 1.0;
+      for (int j = 0; j < 3; ++j)
+      {
+        // Negation, not a product with the sign: -0 stays what WriteNormal would get.
+        const double flipped = sign < 0.0 ? -mk[j] : mk[j];
+        m[j][k] = degenerate ? nk[j] : flipped;
       }
     }
-    const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
-    if (degenerate)
+  }
+
+  // WriteNormal for the block: normalises m in place and writes it.
+  void Normals(vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
+  {
+    for (int k = 0; k < count; ++k)
     {
-      std::copy(n, n + 3, m);
+      const double x = m[0][k], y = m[1][k], z = m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool bad = len == 0.0 || !IsFinite(sx + sy + sz);
+      m[0][k] = bad ? fallback[0][k] : sx;
+      m[1][k] = bad ? fallback[1][k] : sy;
+      m[2][k] = bad ? fallback[2][k] : sz;
     }
-    else if (area < 0.0)
+    // Unit vectors: static_cast as WriteNormal, no range to clamp.
+    R* out = this->C.OutNormals->P + 3 * first;
+    for (int k = 0; k < count; ++k)
     {
-      m[0] = -m[0];
-      m[1] = -m[1];
-      m[2] = -m[2];
+      for (int j = 0; j < 3; ++j)
+      {
+        out[3 * k + j] = static_cast<R>(m[j][k]);
+      }
+    }
+  }
+
+  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
+  // direction is redone by WriteTangent itself (same results for the others).
+  template <int NC>
+  void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
+  {
+    const Context<R>& c = this->C;
+    Gather<NC>(c.Tangents->P + NC * first, count, t);
+    double bad = 0.0;
+    for (int k = 0; k < count; ++k)
+    {
+      double x = t[0][k], y = t[1][k], z = t[2][k];
+      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
+      x -= along * m[0][k];
+      y -= along * m[1][k];
+      z -= along * m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      bad = std::max(bad, len == 0.0 || !IsFinite(sx + sy + sz) ? 1.0 : 0.0);
+      t[0][k] = sx;
+      t[1][k] = sy;
+      t[2][k] = sz;
+    }
+    R* out = c.OutTangents->P + NC * first;
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = static_cast<R>(t[j][k]);
+      }
+    }
+    if (bad == 0.0)
+    {
+      return;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double mk[3] = { m[0][k], m[1][k], m[2][k] };
+      WriteTangent(c, first + k, mk);
     }
   }
 };
