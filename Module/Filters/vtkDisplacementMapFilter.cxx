@@ -16,6 +16,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailMemory.h"
 #include "vtkTypeInt64Array.h"
 
 #include <algorithm>
@@ -26,6 +27,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <new>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -288,6 +290,34 @@ void SampleHeight(
   ht *= H;
 }
 
+// A big scratch array in huge pages (vtkSurfaceDetailMemory), its values left uninitialised:
+// std::vector would zero it first, and each of its 4 kB pages would fault on first touch.
+template <typename V>
+class Buffer
+{
+public:
+  Buffer() = default;
+  explicit Buffer(size_t n) { this->Resize(n); }
+  ~Buffer() { vtkSurfaceDetailMemory::Release(this->P); }
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  void Resize(size_t n)
+  {
+    vtkSurfaceDetailMemory::Release(this->P);
+    this->P = static_cast<V*>(vtkSurfaceDetailMemory::Allocate(n * sizeof(V)));
+    if (!this->P)
+    {
+      throw std::bad_alloc();
+    }
+  }
+  V* data() const { return this->P; }
+  V& operator[](size_t i) const { return this->P[i]; }
+
+private:
+  V* P = nullptr;
+};
+
 std::vector<vtkIdType> Widen(vtkDataArray* a)
 {
   std::vector<vtkIdType> out(a->GetNumberOfValues());
@@ -312,7 +342,7 @@ struct PolyLinks
   const vtkIdType* Offsets = nullptr;
   const vtkIdType* Conn = nullptr;
   vtkIdType NumCells = 0;
-  std::vector<vtkIdType> LinkOffsets, Links;
+  Buffer<vtkIdType> LinkOffsets, Links;
 
   void Build(vtkCellArray* polys, vtkIdType numPts, bool withLinks)
   {
@@ -340,23 +370,26 @@ struct PolyLinks
     {
       return;
     }
-    this->LinkOffsets.assign(numPts + 1, 0);
+    // Counts, then their running sums (the end of each point's list), then the polygons
+    // placed from the last one down: each list ends up in increasing order and the ends
+    // become the starts, with no cursor array.
+    this->LinkOffsets.Resize(numPts + 1);
+    std::fill_n(this->LinkOffsets.data(), numPts + 1, 0);
     const vtkIdType nConn = this->Offsets[this->NumCells];
     for (vtkIdType k = 0; k < nConn; ++k)
     {
-      ++this->LinkOffsets[this->Conn[k] + 1];
+      ++this->LinkOffsets[this->Conn[k]];
     }
     for (vtkIdType i = 0; i < numPts; ++i)
     {
       this->LinkOffsets[i + 1] += this->LinkOffsets[i];
     }
-    this->Links.resize(nConn);
-    std::vector<vtkIdType> cursor(this->LinkOffsets.begin(), this->LinkOffsets.end() - 1);
-    for (vtkIdType c = 0; c < this->NumCells; ++c)
+    this->Links.Resize(nConn);
+    for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
     {
       for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
       {
-        this->Links[cursor[this->Conn[k]]++] = c;
+        this->Links[--this->LinkOffsets[this->Conn[k]]] = c;
       }
     }
   }
@@ -1053,8 +1086,10 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
   };
-  std::vector<std::uint64_t> sum(numPts, 0);
-  std::vector<unsigned char> used(numPts, 0);
+  Buffer<std::uint64_t> sum(numPts);
+  Buffer<unsigned char> used(numPts);
+  std::fill_n(sum.data(), numPts, 0);
+  std::fill_n(used.data(), numPts, 0);
   for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
   {
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
@@ -1471,10 +1506,10 @@ int vtkDisplacementMapFilter::RequestData(
       mesh.Build(input->GetPolys(), numPts, needLinks);
       ctx.Polys = &mesh;
     }
-    std::vector<double> unitNormals;
+    Buffer<double> unitNormals;
     if (this->NormalMode == Exact)
     {
-      unitNormals.resize(3 * static_cast<size_t>(numPts));
+      unitNormals.Resize(3 * static_cast<size_t>(numPts));
       vtkSMPTools::For(0, numPts, Grain,
         [&](vtkIdType begin, vtkIdType end)
         {
@@ -1622,7 +1657,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (this->NormalMode == Mesh)
     {
       ArrayReader<R> moved(outPoints->GetData());
-      std::vector<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
+      Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
       MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
       vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
       MeshPointNormalWorker<R> worker{ ctx, cellNormals.data() };
