@@ -227,10 +227,25 @@ void SampleHeight(
   const vtkIdType rowStride = static_cast<vtkIdType>(W) * tex.NC;
   if constexpr (Interp == vtkDisplacementMapFilter::Linear)
   {
-    const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
-    const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
-    const double h00 = tex.At(ia, ja), h10 = tex.At(ib, ja);
-    const double h01 = tex.At(ia, jb), h11 = tex.At(ib, jb);
+    double h00, h10, h01, h11;
+    if (tex.Clean && i0 >= 0 && i0 + 1 < W && j0 >= 0 && j0 + 1 < H)
+    {
+      // The common case, away from the borders of a map without NaN: no wrap, no test.
+      const T* p = tex.Data + j0 * rowStride + i0 * tex.NC + tex.Comp;
+      h00 = tex.Norm * p[0];
+      h10 = tex.Norm * p[tex.NC];
+      h01 = tex.Norm * p[rowStride];
+      h11 = tex.Norm * p[rowStride + tex.NC];
+    }
+    else
+    {
+      const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
+      const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
+      h00 = tex.At(ia, ja);
+      h10 = tex.At(ib, ja);
+      h01 = tex.At(ia, jb);
+      h11 = tex.At(ib, jb);
+    }
     const double b0 = (1.0 - fx) * h00 + fx * h10;
     const double b1 = (1.0 - fx) * h01 + fx * h11;
     h = (1.0 - fy) * b0 + fy * b1;
@@ -1452,7 +1467,9 @@ int vtkDisplacementMapFilter::RequestData(
     auto dPdvR = AsReal<R>(useDerivs ? dPdv : nullptr);
     auto tangentsR = AsReal<R>(tangents ? inTangents : nullptr);
 
-    // Outputs: nothing is allocated that is not asked for.
+    // Outputs: nothing is allocated that is not asked for. (Not in huge pages: across repeated
+    // executions the C library hands back the previous output's memory, already mapped, while
+    // fresh huge pages are cleared by the kernel each time, about 8 ms more at 1M points.)
     vtkNew<vtkPoints> outPoints;
     outPoints->SetDataType(std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE);
     outPoints->SetNumberOfPoints(numPts);
