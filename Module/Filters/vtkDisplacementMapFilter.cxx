@@ -201,10 +201,10 @@ inline void CatmullRom(double f, double w[4], double dw[4])
 }
 
 // Height h(s,t) of the interpolant and its derivatives with respect to s and t. The
-// interpolation is a template parameter: each kind then compiles small enough to be inlined
-// into the per-point loop, with no per-point test of the kind.
+// interpolation is a template parameter, so the per-point loop has no test of the kind; forced
+// inline, so that pass 1's AVX2 copy also samples with AVX2 (floor is one instruction there).
 template <int Interp, typename T>
-void SampleHeight(
+VTK_ALWAYS_INLINE void SampleHeight(
   const Texels<T>& tex, int wrap, double s, double t, double& h, double& hs, double& ht)
 {
   s = TameCoordinate(s, wrap);
@@ -667,7 +667,7 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
 // The displacement d at point @a i, with the height h and its derivatives in (s,t); one
 // function so that the seam pass sees the very values of pass 1.
 template <int Interp, typename T, typename R>
-inline double Displacement(
+VTK_ALWAYS_INLINE double Displacement(
   const Context<R>& c, const Texels<T>& tex, vtkIdType i, double& h, double& hs, double& ht)
 {
   SampleHeight<Interp>(tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h, hs, ht);
