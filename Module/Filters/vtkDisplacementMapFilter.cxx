@@ -506,7 +506,7 @@ struct Context
 
 // The unit input normal, or zero when it has no direction.
 template <typename R>
-inline void InputNormal(const Context<R>& c, vtkIdType i, double n[3])
+VTK_ALWAYS_INLINE void InputNormal(const Context<R>& c, vtkIdType i, double n[3])
 {
   c.Normals->Get3(i, n);
   if (FastNormalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
@@ -529,7 +529,7 @@ inline void WritePoint(const Context<R>& c, vtkIdType i, const double offset[3])
 
 // Normalises @a m and writes it (the input normal where @a m has no direction).
 template <typename R>
-inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
+VTK_ALWAYS_INLINE void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 {
   if (FastNormalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
   {
@@ -547,7 +547,7 @@ inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 
 // The tangent re-orthogonalised to the unit normal @a m, its handedness kept.
 template <typename R>
-inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
+VTK_ALWAYS_INLINE void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
 {
   const int tnc = c.OutTangents->NC;
   double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
@@ -570,7 +570,7 @@ inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
 }
 
 template <typename R>
-inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+VTK_ALWAYS_INLINE void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
 {
   WriteNormal(c, i, m);
   if (c.OutTangents)
@@ -584,8 +584,8 @@ inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
 // that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
 // the caller keeps the normal.
 template <typename R>
-void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
-  double Ps[3], double Pt[3], double Ns[3], double Nt[3])
+VTK_ALWAYS_INLINE void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t,
+  bool wantP, bool wantN, double Ps[3], double Pt[3], double Ns[3], double Nt[3])
 {
   const PolyLinks& mesh = *c.Polys;
   // The neighbours over the point's polygons, sorted so that each is read once.
@@ -1044,7 +1044,7 @@ struct MeshPolygonNormalWorker
   const ArrayReader<R>& Moved;
   double* CellNormals;
 
-  void PolygonNormal(vtkIdType cell, double out[3]) const
+  VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
   {
     const PolyLinks& mesh = *this->C.Polys;
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
@@ -1087,8 +1087,25 @@ struct MeshPolygonNormalWorker
     }
   }
 
-  // Each polygon's normal, once.
+  // Each polygon's normal, once (in AVX2 where the processor has it, as pass 1).
   void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    if (HaveAVX2())
+    {
+      this->RunAVX2(begin, end);
+    }
+    else
+    {
+      this->Run(begin, end);
+    }
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
+  {
+    this->Run(begin, end);
+  }
+
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     for (vtkIdType cell = begin; cell < end; ++cell)
     {
@@ -1105,6 +1122,23 @@ struct MeshPointNormalWorker
   const double* CellNormals;
 
   void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    if (HaveAVX2())
+    {
+      this->RunAVX2(begin, end);
+    }
+    else
+    {
+      this->Run(begin, end);
+    }
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
+  {
+    this->Run(begin, end);
+  }
+
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     const PolyLinks& mesh = *this->C.Polys;
     for (vtkIdType i = begin; i < end; ++i)
