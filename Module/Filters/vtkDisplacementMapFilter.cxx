@@ -381,10 +381,14 @@ struct PolyLinks
       this->Offsets = this->OffsetsCopy.data();
       this->Conn = this->ConnCopy.data();
     }
-    if (!withLinks)
+    if (withLinks)
     {
-      return;
+      this->BuildLinks(numPts);
     }
+  }
+
+  void BuildLinks(vtkIdType numPts)
+  {
     // Counts, then their running sums (the end of each point's list), then the polygons
     // placed from the last one down: each list ends up in increasing order and the ends
     // become the starts, with no cursor array.
@@ -1592,9 +1596,11 @@ int vtkDisplacementMapFilter::RequestData(
       ctx.OutTangents = wTangents.get();
     }
     PolyLinks mesh;
+    // Mesh normals need the links only after pass 1: they are built beside it.
+    const bool linksBeside = this->NormalMode == Mesh;
     if (needLinks || this->MergeSeams || useDerivs)
     {
-      mesh.Build(input->GetPolys(), numPts, needLinks);
+      mesh.Build(input->GetPolys(), numPts, needLinks && !linksBeside);
       ctx.Polys = &mesh;
     }
     Buffer<double> unitNormals;
@@ -1621,13 +1627,18 @@ int vtkDisplacementMapFilter::RequestData(
     // member) in increasing order, so that every sum over a group has one order whatever the thread
     // count.
     std::vector<std::pair<vtkIdType, vtkIdType>> groups;
-    if (this->MergeSeams)
+    // (The input's bounds are computed here, not in a thread beside pass 1.)
+    const double seamTolerance = this->MergeSeams ? this->SeamTolerance * input->GetLength() : 0.0;
+    auto findGroups = [&]()
     {
+      if (!this->MergeSeams)
+      {
+        return;
+      }
       const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
-        const std::vector<vtkIdType> rep =
-          CoincidentGroups(pts, candidates, this->SeamTolerance * input->GetLength());
+        const std::vector<vtkIdType> rep = CoincidentGroups(pts, candidates, seamTolerance);
         std::vector<unsigned char> isRep(candidates.size(), 0);
         for (size_t k = 0; k < candidates.size(); ++k)
         {
@@ -1646,7 +1657,7 @@ int vtkDisplacementMapFilter::RequestData(
         }
         std::sort(groups.begin(), groups.end());
       }
-    }
+    };
     auto forEachGroup = [&](auto&& body)
     {
       for (size_t b = 0; b < groups.size();)
@@ -1684,7 +1695,27 @@ int vtkDisplacementMapFilter::RequestData(
       {
         constexpr int interp = decltype(kind)::value;
         DisplaceWorker<interp, T, R> worker{ ctx, tex };
-        vtkSMPTools::For(0, numPts, Grain, worker);
+        // Pass 1 (threaded), the seam groups and Mesh's links (serial) read only the input and
+        // write apart: they run side by side, the serial ones on whichever threads pass 1 leaves.
+        vtkSMPTools::For(0, 3, 1,
+          [&](vtkIdType task0, vtkIdType task1)
+          {
+            for (vtkIdType task = task0; task < task1; ++task)
+            {
+              if (task == 0)
+              {
+                vtkSMPTools::For(0, numPts, Grain, worker);
+              }
+              else if (task == 1)
+              {
+                findGroups();
+              }
+              else if (linksBeside)
+              {
+                mesh.BuildLinks(numPts);
+              }
+            }
+          });
         // One displacement per group: the mean of the members' own.
         forEachGroup(
           [&](size_t b, size_t e)
