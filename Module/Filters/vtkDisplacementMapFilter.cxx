@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -1225,10 +1226,22 @@ std::vector<vtkIdType> CoincidentGroups(
 {
   struct KeyHash
   {
+    // The bits of the three (whole-number) keys, mixed by multiplication: std::hash<double>
+    // hashes bytes one by one, and each candidate looks up 27 buckets. Adding +0 makes -0 and
+    // +0, which compare equal, hash alike. (The hash only places buckets: the groups found do
+    // not depend on it.)
     size_t operator()(const std::array<double, 3>& k) const
     {
-      const std::hash<double> h;
-      return h(k[0]) ^ (h(k[1]) * 0x9E3779B97F4A7C15ULL) ^ (h(k[2]) * 0xC2B2AE3D27D4EB4FULL);
+      std::uint64_t h = 0;
+      for (double x : k)
+      {
+        x += 0.0;
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof(bits));
+        h = (h ^ bits) * 0x9E3779B97F4A7C15ULL;
+        h ^= h >> 29;
+      }
+      return static_cast<size_t>(h);
     }
   };
   const double cell = tol > 0.0 ? tol : 1.0;
