@@ -840,10 +840,16 @@ struct DisplaceWorker
     const Context<R>& c = this->C;
     for (int k = 0; k < count; ++k)
     {
-      double h, hs, ht;
-      d[k] = Displacement<Interp>(c, this->Tex, first + k, h, hs, ht);
-      ds[k] = Finite(c.Scale * hs);
-      dt[k] = Finite(c.Scale * ht);
+      const vtkIdType i = first + k;
+      SampleHeight<Interp>(
+        this->Tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), d[k], ds[k], dt[k]);
+    }
+    // Displacement's arithmetic, in a loop of its own that vectorises.
+    for (int k = 0; k < count; ++k)
+    {
+      d[k] = Finite(c.Scale * (d[k] - c.Midlevel));
+      ds[k] = Finite(c.Scale * ds[k]);
+      dt[k] = Finite(c.Scale * dt[k]);
     }
   }
 
