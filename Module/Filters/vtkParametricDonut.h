@@ -44,6 +44,8 @@ public:
   void EvaluateVTerms(double v, double* terms) override;
   void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  void EvaluateTermsBlock(const double* const* uTerms, const double* vTerms, int count,
+    double* const* P, double* const* Du, double* const* Dv) override;
   ///@}
 
 protected:

@@ -46,6 +46,16 @@ void vtkParametricRevolution::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
+void vtkParametricRevolution::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
+  int count, double* const* P, double* const* Du, double* const* Dv)
+{
+  // EvaluateTerms()' products of the row, in its order, so the results are the same bits.
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double r = vTerms[0], y = vTerms[1], dr = vTerms[2], dy = vTerms[3];
+  const double row[7] = { r, y, -r, -twoPi * r, dr, dy, -dr };
+  this->EvaluateTurnBlock(uTerms, row, count, P, Du, Dv);
+}
+
 //------------------------------------------------------------------------------
 void vtkParametricRevolution::PrintSelf(ostream& os, vtkIndent indent)
 {

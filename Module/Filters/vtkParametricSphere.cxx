@@ -46,6 +46,19 @@ void vtkParametricSphere::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
+void vtkParametricSphere::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
+  int count, double* const* P, double* const* Du, double* const* Dv)
+{
+  // EvaluateTerms() with its products that depend on v only taken out of the loop, in the
+  // same order of operations, so the results are the same bits.
+  const double twoPi = 2.0 * vtkMath::Pi();
+  const double ca = vTerms[0], sa = vTerms[1];
+  const double r = this->Radius;
+  const double row[7] = { r * sa, r * ca, -r * sa, -twoPi * r * sa, -vtkMath::Pi() * r * ca,
+    vtkMath::Pi() * r * sa, vtkMath::Pi() * r * ca };
+  this->EvaluateTurnBlock(uTerms, row, count, P, Du, Dv);
+}
+
 //------------------------------------------------------------------------------
 void vtkParametricSphere::PrintSelf(ostream& os, vtkIndent indent)
 {

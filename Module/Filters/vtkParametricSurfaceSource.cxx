@@ -17,13 +17,20 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailMemory.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 vtkStandardNewMacro(vtkParametricSurfaceSource);
 
@@ -56,7 +63,8 @@ struct Grid
   std::vector<double> UUnit, VUnit;     // unit-square parameter of each column / row
   std::vector<double> UDomain, VDomain; // the function's parameter of each column / row
   std::vector<float> S, T;              // texture coordinate of each column / row
-  // Separable functions: their u terms of each column and v terms of each row.
+  // Separable functions: their u terms (term t of column i at t * (U + 1) + i, so that a
+  // run of columns is contiguous) and the v terms of each row.
   vtkParametricSeparableFunction* Separable = nullptr;
   int NumUTerms = 0, NumVTerms = 0;
   std::vector<double> UTerms, VTerms;
@@ -127,47 +135,61 @@ struct Grid
   }
 
   /**
-   * The function at @a count consecutive columns from @a col of row @a j: points in P (3 per
-   * point) and derivatives in D (9 per point, Duvw's layout) which, multiplied by
-   * DerivativeScale, are unit-square derivatives. Separable functions use the cached terms.
-   * A block is evaluated before any of it is read back, so that reading does not wait on
-   * the stores the function has just made (a 16-byte load of two 8-byte stores cannot be
-   * forwarded).
+   * The function at @a count consecutive columns from @a col of row @a j, in structure-of-
+   * arrays form: P[c][k] is component c of the point in column col + k, Du and Dv its
+   * unit-square derivatives. Separable functions work from the cached terms.
    */
-  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* P, double* D) const
+  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* const* P, double* const* Du,
+    double* const* Dv) const
   {
     if (this->Separable)
     {
-      const double* vTerms = this->VTerms.data() + j * this->NumVTerms;
-      const double* uTerms = this->UTerms.data() + col * this->NumUTerms;
-      for (int k = 0; k < count; ++k)
+      const double* uTerms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
+      for (int t = 0; t < this->NumUTerms; ++t)
       {
-        this->Separable->EvaluateTerms(uTerms + k * this->NumUTerms, vTerms, P + 3 * k, D + 9 * k);
+        uTerms[t] = this->UTerms.data() + t * (this->U + 1) + col;
       }
+      this->Separable->EvaluateTermsBlock(
+        uTerms, this->VTerms.data() + j * this->NumVTerms, count, P, Du, Dv);
+      // Our own functions live on the unit square, where the factors are 1 (exact anyway).
+      if (this->UExtent != 1.0 || this->VExtent != 1.0)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          for (int k = 0; k < count; ++k)
+          {
+            Du[c][k] *= this->UExtent;
+            Dv[c][k] *= this->VExtent;
+          }
+        }
+      }
+      return;
     }
-    else if (this->HasDerivatives)
+    for (int k = 0; k < count; ++k)
     {
-      for (int k = 0; k < count; ++k)
+      double p[3], du[3], dv[3];
+      if (this->HasDerivatives)
       {
         double uvw[3] = { this->UDomain[col + k], this->VDomain[j], 0.0 };
-        this->Function->Evaluate(uvw, P + 3 * k, D + 9 * k);
+        double d[9];
+        this->Function->Evaluate(uvw, p, d);
+        for (int c = 0; c < 3; ++c)
+        {
+          du[c] = d[c] * this->UExtent;
+          dv[c] = d[3 + c] * this->VExtent;
+        }
       }
-    }
-    else
-    {
-      for (int k = 0; k < count; ++k)
+      else
       {
-        this->Evaluate(
-          this->UDomain[col + k], this->VDomain[j], P + 3 * k, D + 9 * k, D + 9 * k + 3);
+        this->Evaluate(this->UDomain[col + k], this->VDomain[j], p, du, dv);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        P[c][k] = p[c];
+        Du[c][k] = du[c];
+        Dv[c][k] = dv[c];
       }
     }
-  }
-
-  // Factors from the derivatives EvaluateBlock gives to unit-square derivatives.
-  double DerivativeScale(int axis) const
-  {
-    return (this->Separable || this->HasDerivatives) ? (axis == 0 ? this->UExtent : this->VExtent)
-                                                     : 1.0;
   }
 
   // Unit-square derivatives only, at unit-square parameters (clamped to the domain).
@@ -287,6 +309,203 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
   return found;
 }
 
+// The frame loop is bound by square roots and divisions, which AVX does four at a time where
+// SSE2 does two; on x86-64 Linux the loader picks the AVX2 build on processors that have it.
+// Neither build contracts a*b+c into a fused multiply-add, so both give the same bits.
+#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
+#define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
+#else
+#define SURFACEDETAIL_WIDE_VECTORS
+#endif
+
+// Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
+constexpr int BlockSize = 64;
+
+// Outputs bigger than this are written with streaming (non-temporal) stores: they do not fit
+// in the caches anyway, and ordinary stores would first read every line they write.
+constexpr std::size_t StreamingBytes = std::size_t(8) << 20;
+
+#if defined(__SSE2__)
+inline bool Aligned16(const void* p)
+{
+  return (reinterpret_cast<std::uintptr_t>(p) & 15) == 0;
+}
+
+inline void Store(float* p, __m128 v, bool stream)
+{
+  if (stream)
+  {
+    _mm_stream_ps(p, v);
+  }
+  else
+  {
+    _mm_storeu_ps(p, v);
+  }
+}
+#endif
+
+// out[C * k + c] = in[c][k] for a run of points: the structure-of-arrays scratch into the
+// interleaved VTK array; @a stream asks for streaming stores where the output allows.
+template <typename Out, int C>
+void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out, bool stream)
+{
+  const double* __restrict x = in[0];
+  const double* __restrict y = in[1];
+  const double* __restrict z = in[2];
+  const double* __restrict w = in[C - 1];
+  auto one = [&](int k)
+  {
+    out[C * k] = static_cast<Out>(x[k]);
+    out[C * k + 1] = static_cast<Out>(y[k]);
+    out[C * k + 2] = static_cast<Out>(z[k]);
+    if (C == 4)
+    {
+      out[C * k + 3] = static_cast<Out>(w[k]);
+    }
+  };
+  int k = 0;
+#if defined(__SSE2__)
+  // Float output, four points at a time: the compiler leaves this transpose scalar (eight
+  // or more narrow stores per four points). The conversion is the same cvtpd2ps.
+  if constexpr (std::is_same<Out, float>::value)
+  {
+    float* o = out;
+    for (; stream && k < count && k < 4 && !Aligned16(o + C * k); ++k)
+    {
+      one(k);
+    }
+    const bool streaming = stream && Aligned16(o + C * k);
+    auto four = [](const double* v)
+    { return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(v)), _mm_cvtpd_ps(_mm_loadu_pd(v + 2))); };
+    for (; k + 4 <= count; k += 4)
+    {
+      __m128 a = four(x + k), b = four(y + k), c = four(z + k);
+      if constexpr (C == 4)
+      {
+        __m128 d = four(w + k);
+        _MM_TRANSPOSE4_PS(a, b, c, d);
+        Store(o + 4 * k, a, streaming);
+        Store(o + 4 * k + 4, b, streaming);
+        Store(o + 4 * k + 8, c, streaming);
+        Store(o + 4 * k + 12, d, streaming);
+      }
+      else
+      {
+        const __m128 ab01 = _mm_unpacklo_ps(a, b); // a0 b0 a1 b1
+        const __m128 ab23 = _mm_unpackhi_ps(a, b); // a2 b2 a3 b3
+        const __m128 c0a1 = _mm_shuffle_ps(c, ab01, _MM_SHUFFLE(2, 2, 0, 0));
+        const __m128 b1c1 = _mm_shuffle_ps(ab01, c, _MM_SHUFFLE(1, 1, 3, 3));
+        const __m128 c2a3 = _mm_shuffle_ps(c, ab23, _MM_SHUFFLE(2, 2, 2, 2));
+        const __m128 b3c3 = _mm_shuffle_ps(ab23, c, _MM_SHUFFLE(3, 3, 3, 3));
+        Store(o + 3 * k, _mm_shuffle_ps(ab01, c0a1, _MM_SHUFFLE(2, 0, 1, 0)), streaming);
+        Store(o + 3 * k + 4, _mm_shuffle_ps(b1c1, ab23, _MM_SHUFFLE(1, 0, 2, 0)), streaming);
+        Store(o + 3 * k + 8, _mm_shuffle_ps(c2a3, b3c3, _MM_SHUFFLE(2, 0, 2, 0)), streaming);
+      }
+    }
+  }
+#else
+  (void)stream;
+#endif
+  for (; k < count; ++k)
+  {
+    one(k);
+  }
+}
+
+// Texture coordinates (s[k], t) of a run of one row.
+void InterleaveTCoords(
+  int count, const float* __restrict s, float t, float* __restrict out, bool stream)
+{
+  int k = 0;
+#if defined(__SSE2__)
+  for (; stream && k < count && k < 2 && !Aligned16(out + 2 * k); ++k)
+  {
+    out[2 * k] = s[k];
+    out[2 * k + 1] = t;
+  }
+  const bool streaming = stream && Aligned16(out + 2 * k);
+  const __m128 tt = _mm_set1_ps(t);
+  for (; k + 4 <= count; k += 4)
+  {
+    const __m128 ss = _mm_loadu_ps(s + k);
+    Store(out + 2 * k, _mm_unpacklo_ps(ss, tt), streaming);
+    Store(out + 2 * k + 4, _mm_unpackhi_ps(ss, tt), streaming);
+  }
+#else
+  (void)stream;
+#endif
+  for (; k < count; ++k)
+  {
+    out[2 * k] = s[k];
+    out[2 * k + 1] = t;
+  }
+}
+
+// nonFinite[k] becomes NaN when point k's sum of coordinates or of derivatives is not finite.
+void CheckFinite(int count, const double* __restrict px, const double* __restrict py,
+  const double* __restrict pz, const double* __restrict dux, const double* __restrict duy,
+  const double* __restrict duz, const double* __restrict dvx, const double* __restrict dvy,
+  const double* __restrict dvz, double* __restrict nonFinite)
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const double sp = px[k] + py[k] + pz[k];
+    const double sd = dux[k] + duy[k] + duz[k] + dvx[k] + dvy[k] + dvz[k];
+    nonFinite[k] += (sp - sp) + (sd - sd);
+  }
+}
+
+/**
+ * CheckFinite, and the unit normals (N = +-(Du x Dv)/|Du x Dv|) and tangents of a run of
+ * points, in one pass over the derivatives. regular[k] is 1 where the derivatives of point
+ * k span a plane (the tests and operations of RegularNormal, in its order, so the bits are
+ * the same); there N is orthogonal to Du already and the shared frame
+ * (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the sign of the s
+ * repeat, with w = cross(N,T).dP/dt of constant sign. Elsewhere regular[k] is 0 and the
+ * values are meaningless: the caller replaces them. Restrict parameters rather than locals:
+ * the compiler does not check that many pointers at run time and would stay scalar.
+ */
+template <bool WithTangents>
+SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const double ax = dux[k], ay = duy[k], az = duz[k];
+    const double bx = dvx[k], by = dvy[k], bz = dvz[k];
+    const double sp = px[k] + py[k] + pz[k];
+    const double sd = ax + ay + az + bx + by + bz;
+    nonFinite[k] += (sp - sp) + (sd - sd);
+    const double nx = ay * bz - az * by;
+    const double ny = az * bx - ax * bz;
+    const double nz = ax * by - ay * bx;
+    const double a2 = ax * ax + ay * ay + az * az;
+    const double b2 = bx * bx + by * by + bz * bz;
+    const double c2 = nx * nx + ny * ny + nz * nz;
+    // A double flag: a mask of another width would stop the vectorisation.
+    const bool ok = (c2 > DegenerateTolerance2 * a2 * b2) & (a2 > DegenerateTolerance2 * b2) &
+      (b2 > DegenerateTolerance2 * a2) & (c2 - c2 == 0.0);
+    regular[k] = ok ? 1.0 : 0.0;
+    const double normalScale = orientation / std::sqrt(c2);
+    n0[k] = nx * normalScale;
+    n1[k] = ny * normalScale;
+    n2[k] = nz * normalScale;
+    if (WithTangents)
+    {
+      const double tangentScale = tangentSign / std::sqrt(a2);
+      t0[k] = ax * tangentScale;
+      t1[k] = ay * tangentScale;
+      t2[k] = az * tangentScale;
+      t3[k] = handedness;
+    }
+  }
+}
+
 // Points and point arrays of one piece; each point is computed from its own (i, j) alone,
 // so any split among threads gives the same bytes.
 template <typename Real>
@@ -299,6 +518,7 @@ struct PointWorker
   float* Tangents;
   Real* DPdu;
   Real* DPdv;
+  bool Stream = false;                    // output too big for the caches: streaming stores
   vtkSMPThreadLocal<vtkIdType> Arbitrary; // points with an arbitrary frame
   vtkSMPThreadLocal<unsigned char> NonFinite;
 
@@ -317,97 +537,97 @@ struct PointWorker
   {
     const Grid& g = this->G;
     const vtkIdType rowLength = g.U + 1;
-    vtkIdType row = begin / rowLength;
-    vtkIdType col = begin % rowLength;
     vtkIdType& arbitrary = this->Arbitrary.Local();
-    bool finite = true;
     const bool frame = this->Normals || this->Tangents;
-    const double scaleU = g.DerivativeScale(0), scaleV = g.DerivativeScale(1);
-    constexpr int BlockSize = 64;
-    double blockP[3 * BlockSize];
-    double blockD[9 * BlockSize];
-    int inBlock = 0, blockLength = 0;
-    for (vtkIdType id = begin; id < end; ++id)
+    // Every loop over a run below has unit stride and no branch, so the compiler
+    // vectorises it.
+    double blockP[3][BlockSize], blockDu[3][BlockSize], blockDv[3][BlockSize];
+    double blockN[3][BlockSize], blockT[4][BlockSize];
+    double regular[BlockSize]; // 1: regular point, 0: take the limit frame
+    double* P[3] = { blockP[0], blockP[1], blockP[2] };
+    double* Du[3] = { blockDu[0], blockDu[1], blockDu[2] };
+    double* Dv[3] = { blockDv[0], blockDv[1], blockDv[2] };
+    // Lane k becomes NaN once a sum below is not finite; kept per lane, because a running
+    // floating-point sum would not vectorise.
+    double nonFinite[BlockSize] = {};
+    for (vtkIdType id = begin; id < end;)
     {
-      const vtkIdType j = g.Row0 + row;
-      if (inBlock == blockLength)
+      const vtkIdType col = id % rowLength;
+      const vtkIdType j = g.Row0 + id / rowLength;
+      const int count =
+        static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
+      g.EvaluateBlock(col, j, count, P, Du, Dv);
+      if (frame)
       {
-        blockLength =
-          static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
-        g.EvaluateBlock(col, j, blockLength, blockP, blockD);
-        inBlock = 0;
+        (this->Tangents ? CheckFiniteAndFrames<true> : CheckFiniteAndFrames<false>)(count,
+          blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0],
+          blockDv[1], blockDv[2], g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular,
+          blockN[0], blockN[1], blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
+        for (int k = 0; k < count; ++k)
+        {
+          if (regular[k] != 0.0)
+          {
+            continue;
+          }
+          const double du[3] = { blockDu[0][k], blockDu[1][k], blockDu[2][k] };
+          const double dv[3] = { blockDv[0][k], blockDv[1][k], blockDv[2][k] };
+          double n[3], t[4];
+          if (!DegenerateFrame(
+                g, g.UUnit[col + k], g.VUnit[j], du, dv, n, this->Tangents ? t : nullptr))
+          {
+            ++arbitrary;
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            blockN[c][k] = n[c];
+          }
+          if (this->Tangents)
+          {
+            for (int c = 0; c < 4; ++c)
+            {
+              blockT[c][k] = t[c];
+            }
+          }
+        }
       }
-      const double* p = blockP + 3 * inBlock;
-      const double* d = blockD + 9 * inBlock;
-      ++inBlock;
-      const double du[3] = { d[0] * scaleU, d[1] * scaleU, d[2] * scaleU };
-      const double dv[3] = { d[3] * scaleV, d[4] * scaleV, d[5] * scaleV };
-      finite = finite && std::isfinite(p[0] + p[1] + p[2]) &&
-        std::isfinite(du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2]);
-      Real* pt = this->Points + 3 * id;
-      pt[0] = static_cast<Real>(p[0]);
-      pt[1] = static_cast<Real>(p[1]);
-      pt[2] = static_cast<Real>(p[2]);
+      else
+      {
+        CheckFinite(count, blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2],
+          blockDv[0], blockDv[1], blockDv[2], nonFinite);
+      }
+      Interleave<Real, 3>(count, blockP, this->Points + 3 * id, this->Stream);
       if (this->DPdu)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          this->DPdu[3 * id + k] = static_cast<Real>(du[k]);
-          this->DPdv[3 * id + k] = static_cast<Real>(dv[k]);
-        }
+        Interleave<Real, 3>(count, blockDu, this->DPdu + 3 * id, this->Stream);
+        Interleave<Real, 3>(count, blockDv, this->DPdv + 3 * id, this->Stream);
       }
       if (this->TCoords)
       {
-        this->TCoords[2 * id] = g.S[col];
-        this->TCoords[2 * id + 1] = g.T[j];
+        InterleaveTCoords(count, g.S.data() + col, g.T[j], this->TCoords + 2 * id, this->Stream);
       }
-      if (frame)
+      if (this->Normals)
       {
-        double n[3];
-        double t[4];
-        double du2;
-        if (RegularNormal(du, dv, g.Orientation, n, du2))
-        {
-          if (this->Tangents)
-          {
-            // Here N = +-(Du x Dv)/|Du x Dv| is orthogonal to Du already, and the shared
-            // frame (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the
-            // sign of the s repeat, with w = cross(N,T).dP/dt of constant sign.
-            const double scale = g.TangentSign / std::sqrt(du2);
-            t[0] = du[0] * scale;
-            t[1] = du[1] * scale;
-            t[2] = du[2] * scale;
-            t[3] = g.Handedness;
-          }
-        }
-        else if (!DegenerateFrame(
-                   g, g.UUnit[col], g.VUnit[j], du, dv, n, this->Tangents ? t : nullptr))
-        {
-          ++arbitrary;
-        }
-        if (this->Normals)
-        {
-          float* out = this->Normals + 3 * id;
-          out[0] = static_cast<float>(n[0]);
-          out[1] = static_cast<float>(n[1]);
-          out[2] = static_cast<float>(n[2]);
-        }
-        if (this->Tangents)
-        {
-          float* out = this->Tangents + 4 * id;
-          out[0] = static_cast<float>(t[0]);
-          out[1] = static_cast<float>(t[1]);
-          out[2] = static_cast<float>(t[2]);
-          out[3] = static_cast<float>(t[3]);
-        }
+        Interleave<float, 3>(count, blockN, this->Normals + 3 * id, this->Stream);
       }
-      if (++col == rowLength)
+      if (this->Tangents)
       {
-        col = 0;
-        ++row;
+        Interleave<float, 4>(count, blockT, this->Tangents + 4 * id, this->Stream);
       }
+      id += count;
     }
-    if (!finite)
+#if defined(__SSE2__)
+    if (this->Stream)
+    {
+      // Streaming stores are weakly ordered: make them visible before the threads join.
+      _mm_sfence();
+    }
+#endif
+    double anyNonFinite = 0.0;
+    for (double lane : nonFinite)
+    {
+      anyNonFinite += lane;
+    }
+    if (anyNonFinite != 0.0)
     {
       this->NonFinite.Local() = 1;
     }
@@ -416,73 +636,180 @@ struct PointWorker
   void Reduce() {}
 };
 
-// Two triangles per grid quad, counter-clockwise around the normal.
+// Makes streaming stores visible to other threads (they are weakly ordered).
+inline void Fence(bool stream)
+{
+#if defined(__SSE2__)
+  if (stream)
+  {
+    _mm_sfence();
+  }
+#else
+  (void)stream;
+#endif
+}
+
+// out[k] = in[k] + shift for k < n; 32-bit ids can stream.
+template <typename Id>
+void ShiftedCopy(const Id* __restrict in, vtkIdType n, Id shift, Id* __restrict out, bool stream)
+{
+  vtkIdType k = 0;
+#if defined(__SSE2__)
+  if constexpr (sizeof(Id) == 4)
+  {
+    for (; stream && k < n && !Aligned16(out + k); ++k)
+    {
+      out[k] = in[k] + shift;
+    }
+    if (stream && Aligned16(out + k))
+    {
+      const __m128i add = _mm_set1_epi32(shift);
+      for (; k + 4 <= n; k += 4)
+      {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + k));
+        _mm_stream_si128(reinterpret_cast<__m128i*>(out + k), _mm_add_epi32(v, add));
+      }
+    }
+  }
+#else
+  (void)stream;
+#endif
+  for (; k < n; ++k)
+  {
+    out[k] = in[k] + shift;
+  }
+}
+
+// offsets[t] = 3 t for begin <= t < end; 32-bit ids can stream.
+template <typename Id>
+void Ramp(vtkIdType begin, vtkIdType end, Id* __restrict offsets, bool stream)
+{
+  vtkIdType t = begin;
+#if defined(__SSE2__)
+  if constexpr (sizeof(Id) == 4)
+  {
+    for (; stream && t < end && !Aligned16(offsets + t); ++t)
+    {
+      offsets[t] = static_cast<Id>(3 * t);
+    }
+    if (stream && Aligned16(offsets + t))
+    {
+      const Id first = static_cast<Id>(3 * t);
+      __m128i v = _mm_setr_epi32(first, first + 3, first + 6, first + 9);
+      const __m128i step = _mm_set1_epi32(12);
+      for (; t + 4 <= end; t += 4)
+      {
+        _mm_stream_si128(reinterpret_cast<__m128i*>(offsets + t), v);
+        v = _mm_add_epi32(v, step);
+      }
+    }
+  }
+#else
+  (void)stream;
+#endif
+  for (; t < end; ++t)
+  {
+    offsets[t] = static_cast<Id>(3 * t);
+  }
+}
+
+// Two triangles per grid quad, counter-clockwise around the normal. Every row of quads has
+// the connectivity of the first shifted by a multiple of the row length, so each row is one
+// vectorisable add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
 template <typename Id>
 void BuildTriangles(vtkIdType numRows, int U, bool flip, Id* offsets, Id* connectivity)
 {
-  const vtkIdType numQuads = numRows * U;
-  vtkSMPTools::For(0, numQuads,
+  const vtkIdType rowValues = 6 * static_cast<vtkIdType>(U);
+  std::vector<Id> pattern(rowValues);
+  for (int i = 0; i < U; ++i)
+  {
+    const Id p00 = static_cast<Id>(i);
+    const Id p10 = p00 + 1;
+    const Id p01 = static_cast<Id>(p00 + U + 1);
+    const Id p11 = p01 + 1;
+    Id* c = pattern.data() + 6 * i;
+    c[0] = p00;
+    c[1] = flip ? p11 : p10;
+    c[2] = flip ? p10 : p11;
+    c[3] = p00;
+    c[4] = flip ? p01 : p11;
+    c[5] = flip ? p11 : p01;
+  }
+  const vtkIdType numTriangles = 2 * numRows * U;
+  const bool stream = static_cast<std::size_t>(numTriangles) * 4 * sizeof(Id) > StreamingBytes;
+  vtkSMPTools::For(0, numRows,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType q = begin; q < end; ++q)
+      for (vtkIdType r = begin; r < end; ++r)
       {
-        const vtkIdType r = q / U;
-        const vtkIdType i = q % U;
-        const Id p00 = static_cast<Id>(r * (U + 1) + i);
-        const Id p10 = p00 + 1;
-        const Id p01 = static_cast<Id>(p00 + U + 1);
-        const Id p11 = p01 + 1;
-        Id* c = connectivity + 6 * q;
-        c[0] = p00;
-        c[1] = flip ? p11 : p10;
-        c[2] = flip ? p10 : p11;
-        c[3] = p00;
-        c[4] = flip ? p01 : p11;
-        c[5] = flip ? p11 : p01;
-        offsets[2 * q] = static_cast<Id>(6 * q);
-        offsets[2 * q + 1] = static_cast<Id>(6 * q + 3);
+        ShiftedCopy(pattern.data(), rowValues, static_cast<Id>(r * (U + 1)),
+          connectivity + r * rowValues, stream);
       }
+      Fence(stream);
     });
-  offsets[2 * numQuads] = static_cast<Id>(6 * numQuads);
+  vtkSMPTools::For(0, numTriangles + 1,
+    [offsets, stream](vtkIdType begin, vtkIdType end)
+    {
+      Ramp(begin, end, offsets, stream);
+      Fence(stream);
+    });
 }
 
+// Null when the memory is not available.
 template <typename IdArray>
 vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, int U, bool flip)
 {
   using Id = typename IdArray::ValueType;
   const vtkIdType numTriangles = 2 * numRows * U;
   vtkNew<IdArray> offsets;
-  offsets->SetNumberOfValues(numTriangles + 1);
   vtkNew<IdArray> connectivity;
-  connectivity->SetNumberOfValues(3 * numTriangles);
+  if (!vtkSurfaceDetailMemory::AllocateTuples(offsets.Get(), numTriangles + 1) ||
+    !vtkSurfaceDetailMemory::AllocateTuples(connectivity.Get(), 3 * numTriangles))
+  {
+    return nullptr;
+  }
   BuildTriangles<Id>(numRows, U, flip, offsets->GetPointer(0), connectivity->GetPointer(0));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
   return cells;
 }
 
-template <typename Real, typename RealArray>
-bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoords, bool tangents,
-  bool derivatives, vtkPolyData* output, vtkIdType& arbitrary)
+enum class Outcome
 {
-  auto newArray = [numPoints](auto array, const char* name, int components)
+  Done,
+  NonFinite,
+  OutOfMemory
+};
+
+template <typename Real, typename RealArray>
+Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoords,
+  bool tangents, bool derivatives, vtkPolyData* output, vtkIdType& arbitrary)
+{
+  // Every value is written below, so the arrays are not initialised; their memory comes in
+  // huge pages, warm from the cache when an earlier output was released.
+  bool allocated = true;
+  auto newArray = [numPoints, &allocated](auto array, const char* name, int components)
   {
     array->SetName(name);
     array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(numPoints);
-    return array;
+    allocated = allocated && vtkSurfaceDetailMemory::AllocateTuples(array, numPoints);
+    return allocated ? array->GetPointer(0) : nullptr;
   };
   vtkNew<RealArray> points;
-  newArray(points.Get(), "Points", 3);
   PointWorker<Real> worker(g);
-  worker.Points = points->GetPointer(0);
+  worker.Points = newArray(points.Get(), "Points", 3);
   vtkNew<vtkFloatArray> normalArray, tcoordArray, tangentArray;
   vtkNew<RealArray> dPdu, dPdv;
-  worker.Normals = normals ? newArray(normalArray.Get(), "Normals", 3)->GetPointer(0) : nullptr;
-  worker.TCoords = tcoords ? newArray(tcoordArray.Get(), "TCoords", 2)->GetPointer(0) : nullptr;
-  worker.Tangents = tangents ? newArray(tangentArray.Get(), "Tangents", 4)->GetPointer(0) : nullptr;
-  worker.DPdu = derivatives ? newArray(dPdu.Get(), "dPdu", 3)->GetPointer(0) : nullptr;
-  worker.DPdv = derivatives ? newArray(dPdv.Get(), "dPdv", 3)->GetPointer(0) : nullptr;
+  worker.Normals = normals ? newArray(normalArray.Get(), "Normals", 3) : nullptr;
+  worker.TCoords = tcoords ? newArray(tcoordArray.Get(), "TCoords", 2) : nullptr;
+  worker.Tangents = tangents ? newArray(tangentArray.Get(), "Tangents", 4) : nullptr;
+  worker.DPdu = derivatives ? newArray(dPdu.Get(), "dPdu", 3) : nullptr;
+  worker.DPdv = derivatives ? newArray(dPdv.Get(), "dPdv", 3) : nullptr;
+  if (!allocated)
+  {
+    return Outcome::OutOfMemory;
+  }
+  worker.Stream = static_cast<std::size_t>(numPoints) * (3 * sizeof(Real) + 28) > StreamingBytes;
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   vtkSMPTools::For(0, numPoints, 4096, worker);
@@ -491,7 +818,7 @@ bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoor
   {
     if (bad)
     {
-      return false;
+      return Outcome::NonFinite;
     }
   }
   arbitrary = 0;
@@ -523,7 +850,7 @@ bool GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoor
     pd->AddArray(dPdu);
     pd->AddArray(dPdv);
   }
-  return true;
+  return Outcome::Done;
 }
 } // namespace
 
@@ -738,11 +1065,16 @@ int vtkParametricSurfaceSource::RequestData(
     g.UTerms.resize(rowLength * g.NumUTerms);
     g.VTerms.resize((V + 1) * g.NumVTerms);
     vtkSMPTools::For(0, rowLength,
-      [&g](vtkIdType begin, vtkIdType end)
+      [&g, rowLength](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          g.Separable->EvaluateUTerms(g.UDomain[i], g.UTerms.data() + i * g.NumUTerms);
+          double terms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
+          g.Separable->EvaluateUTerms(g.UDomain[i], terms);
+          for (int t = 0; t < g.NumUTerms; ++t)
+          {
+            g.UTerms[t * rowLength + i] = terms[t];
+          }
         }
       });
     vtkSMPTools::For(cellRow0, cellRow1 + 1,
@@ -757,14 +1089,20 @@ int vtkParametricSurfaceSource::RequestData(
 
   const vtkIdType numPoints = g.NumRows * rowLength;
   vtkIdType arbitrary = 0;
-  const bool ok = this->OutputPointsPrecision == DOUBLE_PRECISION
+  const Outcome outcome = this->OutputPointsPrecision == DOUBLE_PRECISION
     ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, this->GenerateNormals,
         this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
         arbitrary)
     : GeneratePoints<float, vtkFloatArray>(g, numPoints, this->GenerateNormals,
         this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
         arbitrary);
-  if (!ok)
+  if (outcome == Outcome::OutOfMemory)
+  {
+    output->Initialize();
+    vtkErrorMacro("Not enough memory for " << numPoints << " points: use a lower resolution.");
+    return 0;
+  }
+  if (outcome == Outcome::NonFinite)
   {
     output->Initialize();
     vtkErrorMacro("The parametric function " << function->GetClassName()
@@ -783,8 +1121,18 @@ int vtkParametricSurfaceSource::RequestData(
   const bool flip = g.Orientation < 0.0;
   const bool fits32 = 3 * numTriangles < std::numeric_limits<vtkTypeInt32>::max() &&
     numPoints < std::numeric_limits<vtkTypeInt32>::max();
-  output->SetPolys(fits32 ? MakeTriangles<vtkTypeInt32Array>(g.NumRows - 1, g.U, flip)
-                          : MakeTriangles<vtkTypeInt64Array>(g.NumRows - 1, g.U, flip));
+  vtkSmartPointer<vtkCellArray> triangles = fits32
+    ? MakeTriangles<vtkTypeInt32Array>(g.NumRows - 1, g.U, flip)
+    : MakeTriangles<vtkTypeInt64Array>(g.NumRows - 1, g.U, flip);
+  if (!triangles)
+  {
+    output->Initialize();
+    vtkErrorMacro("Not enough memory for " << numTriangles
+                                           << " triangles: use a lower "
+                                              "resolution.");
+    return 0;
+  }
+  output->SetPolys(triangles);
   return 1;
 }
 

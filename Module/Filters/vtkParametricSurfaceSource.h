@@ -47,6 +47,12 @@
  * repeated as points, cells are not). Work is done by vtkSMPTools and the result does not
  * depend on the number of threads.
  *
+ * Speed: a vtkParametricSeparableFunction (all of SurfaceDetail's functions) is evaluated
+ * from per-row and per-column terms, a run of a row at a time; big output arrays are 2 MB
+ * huge pages kept for reuse when the previous output is released, so a re-executing source
+ * writes into warm memory (the environment variable SURFACEDETAIL_ARRAY_CACHE_MB bounds
+ * that cache, default 1024, 0 turns it off; idle blocks go back to the system after 5 s).
+ *
  * The function is evaluated from several threads at once. VTK's functions and SurfaceDetail's
  * allow that; a function that builds state lazily is evaluated once before the threads start.
  * If the function reports an error, or returns a non-finite value, the output is empty and

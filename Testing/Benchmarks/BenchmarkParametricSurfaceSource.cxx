@@ -3,9 +3,11 @@
 //   vtkPolyDataTangents, both on vtkParametricTorus;
 // - sphere: vtkTexturedSphereSource (points, normals, texture coordinates);
 // - the bound: allocating and writing the same number of output bytes with memset, which
-//   no generator can beat.
+//   no generator can beat, in ordinary pages, in huge pages, and into memory written before.
 // Sizes are 1M and 4M points; the second argument is the number of threads given to
-// vtkSMPTools::Initialize. See BENCHMARKS.md for the command and the figures.
+// vtkSMPTools::Initialize; for our source the last argument says whether the cache of freed
+// output blocks (vtkSurfaceDetailMemory) is on. See BENCHMARKS.md for the command and the
+// figures.
 
 #include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
@@ -23,11 +25,12 @@
 #include <vtkSMPTools.h>
 #include <vtkTexturedSphereSource.h>
 
+#include "vtkSurfaceDetailMemory.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 namespace
@@ -41,6 +44,14 @@ int Side(benchmark::State& state)
 void SetThreads(benchmark::State& state)
 {
   vtkSMPTools::Initialize(static_cast<int>(state.range(1)));
+}
+
+// The cache's default limit, or none. Our allocator's cache only ever serves our arrays;
+// VTK's filters allocate with malloc whatever this says.
+constexpr std::size_t DefaultCacheLimit = std::size_t(1) << 30;
+void SetCache(bool on)
+{
+  vtkSurfaceDetailMemory::SetCacheLimit(on ? DefaultCacheLimit : 0);
 }
 
 size_t OutputBytes(vtkPolyData* pd)
@@ -61,11 +72,14 @@ void Report(benchmark::State& state, vtkPolyData* pd)
 }
 
 // Runs our source on @a function at side x side points with the given arrays (normals and
-// texture coordinates always), re-executing it at every iteration.
+// texture coordinates always), re-executing it at every iteration; range(3) = 1: with the
+// cache of freed blocks (the default; each execution reuses the memory of the output it
+// replaces), 0: without (every execution faults in fresh huge pages).
 void RunSource(
   benchmark::State& state, vtkParametricFunction* function, bool tangents, bool derivatives)
 {
   SetThreads(state);
+  SetCache(state.range(3) != 0);
   const int side = Side(state);
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(function);
@@ -197,44 +211,64 @@ std::vector<size_t> ArrayBytesPerPoint(int variant)
 }
 
 // The bandwidth bound: write the same arrays as the source (one allocation each, as VTK
-// arrays are), split among the threads. range(3) = 0: fresh allocations at every iteration,
-// as every VTK source's execution makes (page faults included); 1: the same buffers
-// reused, which no VTK source does (its output arrays are new at each execution) but
-// which is the bare write bandwidth.
+// arrays are), split among the threads. range(3) says where the bytes go:
+// 0 (fresh): new[] at every iteration, as a VTK source's execution makes (4 kB page faults
+//   and the kernel's zeroing included);
+// 1 (reused): the same buffers every time, the bare write bandwidth;
+// 2 (huge): vtkSurfaceDetailMemory::Allocate with the cache off, a fresh 2 MB-aligned
+//   huge-page mapping at every iteration: what our source without the cache must do;
+// 3 (cached): vtkSurfaceDetailMemory::Allocate with the cache on, what our source does by
+//   default (the blocks released at the end of one iteration serve the next).
 void BM_WriteBound(benchmark::State& state)
 {
   SetThreads(state);
   const int side = Side(state);
   const size_t points = static_cast<size_t>(side) * side;
-  const bool reuse = state.range(3) != 0;
-  std::vector<std::unique_ptr<char[]>> buffers;
+  const int mode = static_cast<int>(state.range(3));
+  SetCache(mode == 3);
+  std::vector<char*> buffers;
   std::vector<size_t> sizes;
   for (size_t perPoint : ArrayBytesPerPoint(static_cast<int>(state.range(2))))
   {
     sizes.push_back(perPoint * points);
-    buffers.emplace_back(reuse ? new char[sizes.back()] : nullptr);
+    buffers.push_back(mode == 1 ? new char[sizes.back()] : nullptr);
   }
   for (auto _ : state)
   {
     for (size_t a = 0; a < sizes.size(); ++a)
     {
-      if (!reuse)
+      if (mode == 0)
       {
-        buffers[a].reset(new char[sizes[a]]);
+        buffers[a] = new char[sizes[a]];
       }
-      char* data = buffers[a].get();
+      else if (mode >= 2)
+      {
+        buffers[a] = static_cast<char*>(vtkSurfaceDetailMemory::Allocate(sizes[a]));
+      }
+      char* data = buffers[a];
       vtkSMPTools::For(0, static_cast<vtkIdType>(sizes[a]), 1 << 20,
         [data](vtkIdType begin, vtkIdType end)
         { std::memset(data + begin, 1, static_cast<size_t>(end - begin)); });
       benchmark::DoNotOptimize(data);
     }
     benchmark::ClobberMemory();
-    if (!reuse)
+    for (char*& buffer : buffers)
     {
-      for (auto& buffer : buffers)
+      if (mode == 0)
       {
-        buffer.reset();
+        delete[] buffer;
       }
+      else if (mode >= 2)
+      {
+        vtkSurfaceDetailMemory::Release(buffer);
+      }
+    }
+  }
+  if (mode == 1)
+  {
+    for (char* buffer : buffers)
+    {
+      delete[] buffer;
     }
   }
   size_t total = 0;
@@ -245,7 +279,8 @@ void BM_WriteBound(benchmark::State& state)
   state.counters["MB"] = static_cast<double>(total) / 1e6;
 }
 
-void Sizes(benchmark::internal::Benchmark* b, int variants)
+// points x threads x variant, and for our source cache on/off as a fourth argument.
+void Sizes(benchmark::internal::Benchmark* b, int variants, bool ours)
 {
   for (int points : { 1000000, 4000000 })
   {
@@ -253,7 +288,15 @@ void Sizes(benchmark::internal::Benchmark* b, int variants)
     {
       for (int variant = 0; variant < variants; ++variant)
       {
-        b->Args({ points, threads, variant });
+        if (ours)
+        {
+          b->Args({ points, threads, variant, 1 });
+          b->Args({ points, threads, variant, 0 });
+        }
+        else
+        {
+          b->Args({ points, threads, variant });
+        }
       }
     }
   }
@@ -261,18 +304,22 @@ void Sizes(benchmark::internal::Benchmark* b, int variants)
 }
 } // namespace
 
-BENCHMARK(BM_SurfaceSourceTorus)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
-BENCHMARK(BM_SurfaceSourceDonut)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_SurfaceSourceTorus)
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
+BENCHMARK(BM_SurfaceSourceDonut)
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
 BENCHMARK(BM_VTKFunctionSourceAndTangentsTorus)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
-BENCHMARK(BM_SurfaceSourceSphere)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
-BENCHMARK(BM_SurfaceSourceVase)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1, false); });
+BENCHMARK(BM_SurfaceSourceSphere)
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
+BENCHMARK(BM_SurfaceSourceVase)
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
 BENCHMARK(BM_BezierProfileEvaluate)
   ->Args({ 1000000, 1, 0 })
   ->Args({ 1000000, 1, 1 })
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VTKTexturedSphereSource)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1, false); });
 BENCHMARK(BM_WriteBound)
   ->Apply(
     [](benchmark::internal::Benchmark* b)
@@ -283,9 +330,9 @@ BENCHMARK(BM_WriteBound)
         {
           for (int variant : { 0, 1, 2 })
           {
-            for (int reuse : { 0, 1 })
+            for (int mode : { 0, 1, 2, 3 })
             {
-              b->Args({ points, threads, variant, reuse });
+              b->Args({ points, threads, variant, mode });
             }
           }
         }
