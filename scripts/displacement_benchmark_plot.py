@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Turns BenchDisplacementMapFilter's JSON into the BENCHMARKS.md tables and a plot.
+"""Turns BenchDisplacementMapFilter's JSON into the BENCHMARKS.md table and a plot.
 
     build/bin/BenchDisplacementMapFilter --benchmark_repetitions=5 \
         --benchmark_report_aggregates_only=true \
@@ -7,16 +7,19 @@
     /usr/bin/python3 scripts/displacement_benchmark_plot.py displacement.json \
         Documentation/displacement_time_vs_error.png
 
-Prints three Markdown tables (wall time against the VTK chain; single-thread CPU time
-against it; run time and error per normal mode and resolution) and draws normal-angle error against run time, one line per mode
-(needs python3-matplotlib).
+Prints one Markdown table: per size, the VTK chain and each normal mode and interpolation of
+vtkDisplacementMapFilter, with the wall-clock time on every core (threads 0, each side's
+default), the CPU time on one thread, both as ratios against the chain in the same run, and
+the errors against the exact displaced surface. Then draws normal-angle error against the
+wall-clock time (needs python3-matplotlib).
 """
 
 import json
 import re
 import sys
 
-MODES = {"0": "VTK chain", "1": "Approximate", "2": "Exact", "3": "Mesh"}
+MODES = {"1": "Approximate", "2": "Exact", "3": "Mesh"}
+INTERPS = {"0": "Nearest", "1": "Linear", "2": "Cubic"}
 
 
 def load(path):
@@ -26,15 +29,13 @@ def load(path):
     for b in data["benchmarks"]:
         if b.get("aggregate_name") != "median":
             continue
-        m = re.match(r"BM_(\w+)/U:(\d+)/mode:(\d+)/threads:(\d+)", b["run_name"])
+        m = re.match(r"BM_(\w+)/U:(\d+)/mode:(\d+)/interp:(\d+)/threads:(\d+)", b["run_name"])
         if not m:
             continue
-        kind, u, mode, threads = m.group(1), int(m.group(2)), m.group(3), m.group(4)
-        label = "VTK chain" if kind == "VTKChain" else MODES[mode]
-        if kind != "VTKChain" and threads == "1":
-            label += " (1 thread)"
-        rows[(label, u)] = {
-            "ms": b["real_time"],
+        kind, u, mode, interp, threads = m.groups()
+        method = "VTK chain" if kind == "VTKChain" else MODES[mode]
+        rows[(method, INTERPS[interp], int(u), threads)] = {
+            "wall": b["real_time"],
             "cpu": b["cpu_time"],
             "points": int(b["points"]),
             "angle": b["angle_deg"],
@@ -43,68 +44,63 @@ def load(path):
     return data.get("context", {}), rows
 
 
+def methods():
+    yield ("VTK chain", "Linear")
+    for mode in ("Approximate", "Exact", "Mesh"):
+        for interp in ("Nearest", "Linear", "Cubic"):
+            yield (mode, interp)
+
+
 def main():
     context, rows = load(sys.argv[1])
-    sizes = sorted({u for (_, u) in rows})
-    labels = ["Approximate", "Exact", "Mesh", "Approximate (1 thread)", "Exact (1 thread)",
-              "Mesh (1 thread)", "VTK chain"]
-
-    print("Machine: %s cores, %s; load average at start %s\n" % (
-        context.get("num_cpus"), context.get("mhz_per_cpu"), context.get("load_avg")))
-    print("| points | VTK chain (ms) | " + " | ".join("%s (ms) | x" % l for l in labels[:6]) + " |")
-    print("|---:|---:|" + "---:|---:|" * 6)
+    sizes = sorted({k[2] for k in rows})
+    print("Machine: %s cores; load average at start %s\n" % (
+        context.get("num_cpus"), context.get("load_avg")))
+    print("| points | method | interpolation | wall, 2 threads (ms) | x | CPU, 1 thread (ms) | x "
+          "| max normal error (deg) | max vertex error |")
+    print("|---:|---|---|---:|---:|---:|---:|---:|---:|")
     for u in sizes:
-        chain = rows.get(("VTK chain", u))
-        if not chain:
+        chain_wall = rows.get(("VTK chain", "Linear", u, "0"))
+        chain_cpu = rows.get(("VTK chain", "Linear", u, "1"))
+        if not chain_wall or not chain_cpu:
             continue
-        cells = ["%d" % chain["points"], "%.1f" % chain["ms"]]
-        for label in labels[:6]:
-            r = rows.get((label, u))
-            cells += ["%.1f" % r["ms"], "%.1f" % (chain["ms"] / r["ms"])] if r else ["", ""]
-        print("| " + " | ".join(cells) + " |")
-
-    # Single-thread CPU time, which the other users of a shared machine disturb least.
-    one = ["Approximate (1 thread)", "Exact (1 thread)", "Mesh (1 thread)"]
-    print("\n| points | VTK chain CPU (ms) | " +
-          " | ".join("%s CPU (ms) | x" % l.replace(" (1 thread)", "") for l in one) + " |")
-    print("|---:|---:|" + "---:|---:|" * 3)
-    for u in sizes:
-        chain = rows.get(("VTK chain", u))
-        if not chain:
-            continue
-        cells = ["%d" % chain["points"], "%.1f" % chain["cpu"]]
-        for label in one:
-            r = rows.get((label, u))
-            cells += ["%.1f" % r["cpu"], "%.1f" % (chain["cpu"] / r["cpu"])] if r else ["", ""]
-        print("| " + " | ".join(cells) + " |")
-
-    print("\n| method | points | time (ms) | max normal error (deg) | max vertex error |")
-    print("|---|---:|---:|---:|---:|")
-    for label in labels:
-        for u in sizes:
-            r = rows.get((label, u))
-            if r:
-                print("| %s | %d | %.2f | %.3g | %.3g |" % (
-                    label, r["points"], r["ms"], r["angle"], r["position"]))
+        for method, interp in methods():
+            wall = rows.get((method, interp, u, "0"))
+            cpu = rows.get((method, interp, u, "1"))
+            if not wall or not cpu:
+                continue
+            print("| %d | %s | %s | %.1f | %.1f | %.1f | %.1f | %.3g | %.3g |" % (
+                wall["points"], method, interp, wall["wall"], chain_wall["wall"] / wall["wall"],
+                cpu["cpu"], chain_cpu["cpu"] / cpu["cpu"], wall["angle"], wall["position"]))
 
     if len(sys.argv) > 2:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(7, 4.5), dpi=120)
-        # One line per normal mode at the default thread count, and the VTK chain.
-        for label, marker in zip(["Approximate", "Exact", "Mesh", "VTK chain"], "osDx"):
-            pts = [rows[(label, u)] for u in sizes if (label, u) in rows]
-            ax.loglog([p["ms"] for p in pts], [p["angle"] for p in pts], marker=marker,
-                      label=label)
-            for p in pts:
-                ax.annotate("%dk" % round(p["points"] / 1000), (p["ms"], p["angle"]),
-                            fontsize=7, xytext=(3, 3), textcoords="offset points")
-        ax.set_xlabel("run time (ms, median of 5)")
+        fig, ax = plt.subplots(figsize=(9.5, 5), dpi=120)
+        colours = {"Approximate": "tab:blue", "Exact": "tab:orange", "Mesh": "tab:green",
+                   "VTK chain": "black"}
+        styles = {"Nearest": (":", "v"), "Linear": ("-", "o"), "Cubic": ("--", "s")}
+        # One line per method and interpolation, on every core (each side's default).
+        for method, interp in methods():
+            pts = [rows[(method, interp, u, "0")] for u in sizes
+                   if (method, interp, u, "0") in rows]
+            if not pts:
+                continue
+            line, marker = styles[interp]
+            label = method if method == "VTK chain" else "%s, %s" % (method, interp)
+            ax.loglog([p["wall"] for p in pts], [p["angle"] for p in pts], linestyle=line,
+                      marker=marker if method != "VTK chain" else "x", color=colours[method],
+                      label=label, markersize=4)
+            if method == "VTK chain" or (method, interp) == ("Mesh", "Linear"):
+                for p in pts:
+                    ax.annotate("%dk" % round(p["points"] / 1000), (p["wall"], p["angle"]),
+                                fontsize=7, xytext=(3, 3), textcoords="offset points")
+        ax.set_xlabel("wall-clock time on 2 threads (ms, median of 5)")
         ax.set_ylabel("max normal angle error (degrees)")
         ax.set_title("Displaced torus: run time against normal error (labels: points)")
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend()
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
         fig.tight_layout()
         fig.savefig(sys.argv[2])
 

@@ -16,6 +16,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailMemory.h"
 #include "vtkTypeInt64Array.h"
 
 #include <algorithm>
@@ -23,9 +24,11 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <new>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -104,6 +107,23 @@ vtkSmartPointer<vtkDataArray> NewRealArray(const char* name, int nc, vtkIdType n
   a->SetNumberOfComponents(nc);
   a->SetNumberOfTuples(n);
   a->SetName(name);
+  return a;
+}
+
+// An output array of n tuples whose values the passes write: from vtkSurfaceDetailMemory, which
+// hands back the huge pages of an earlier execution's freed output instead of faulting in
+// fresh ones, and not initialised.
+template <typename R>
+vtkSmartPointer<vtkDataArray> NewOutputArray(const char* name, int nc, vtkIdType n)
+{
+  using Array = std::conditional_t<std::is_same<R, float>::value, vtkFloatArray, vtkDoubleArray>;
+  auto a = vtkSmartPointer<Array>::New();
+  a->SetNumberOfComponents(nc);
+  a->SetName(name);
+  if (!vtkSurfaceDetailMemory::AllocateTuples(a.Get(), n))
+  {
+    a->SetNumberOfTuples(n);
+  }
   return a;
 }
 
@@ -199,10 +219,10 @@ inline void CatmullRom(double f, double w[4], double dw[4])
 }
 
 // Height h(s,t) of the interpolant and its derivatives with respect to s and t. The
-// interpolation is a template parameter: each kind then compiles small enough to be inlined
-// into the per-point loop, with no per-point test of the kind.
+// interpolation is a template parameter, so the per-point loop has no test of the kind; forced
+// inline, so that pass 1's AVX2 copy also samples with AVX2 (floor is one instruction there).
 template <int Interp, typename T>
-void SampleHeight(
+VTK_ALWAYS_INLINE void SampleHeight(
   const Texels<T>& tex, int wrap, double s, double t, double& h, double& hs, double& ht)
 {
   s = TameCoordinate(s, wrap);
@@ -225,10 +245,25 @@ void SampleHeight(
   const vtkIdType rowStride = static_cast<vtkIdType>(W) * tex.NC;
   if constexpr (Interp == vtkDisplacementMapFilter::Linear)
   {
-    const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
-    const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
-    const double h00 = tex.At(ia, ja), h10 = tex.At(ib, ja);
-    const double h01 = tex.At(ia, jb), h11 = tex.At(ib, jb);
+    double h00, h10, h01, h11;
+    if (tex.Clean && i0 >= 0 && i0 + 1 < W && j0 >= 0 && j0 + 1 < H)
+    {
+      // The common case, away from the borders of a map without NaN: no wrap, no test.
+      const T* p = tex.Data + j0 * rowStride + i0 * tex.NC + tex.Comp;
+      h00 = tex.Norm * p[0];
+      h10 = tex.Norm * p[tex.NC];
+      h01 = tex.Norm * p[rowStride];
+      h11 = tex.Norm * p[rowStride + tex.NC];
+    }
+    else
+    {
+      const int ia = Wrapped(i0, W, wrap), ib = Wrapped(i0 + 1, W, wrap);
+      const int ja = Wrapped(j0, H, wrap), jb = Wrapped(j0 + 1, H, wrap);
+      h00 = tex.At(ia, ja);
+      h10 = tex.At(ib, ja);
+      h01 = tex.At(ia, jb);
+      h11 = tex.At(ib, jb);
+    }
     const double b0 = (1.0 - fx) * h00 + fx * h10;
     const double b1 = (1.0 - fx) * h01 + fx * h11;
     h = (1.0 - fy) * b0 + fy * b1;
@@ -288,6 +323,34 @@ void SampleHeight(
   ht *= H;
 }
 
+// A big scratch array in huge pages (vtkSurfaceDetailMemory), its values left uninitialised:
+// std::vector would zero it first, and each of its 4 kB pages would fault on first touch.
+template <typename V>
+class Buffer
+{
+public:
+  Buffer() = default;
+  explicit Buffer(size_t n) { this->Resize(n); }
+  ~Buffer() { vtkSurfaceDetailMemory::Release(this->P); }
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  void Resize(size_t n)
+  {
+    vtkSurfaceDetailMemory::Release(this->P);
+    this->P = static_cast<V*>(vtkSurfaceDetailMemory::Allocate(n * sizeof(V)));
+    if (!this->P)
+    {
+      throw std::bad_alloc();
+    }
+  }
+  V* data() const { return this->P; }
+  V& operator[](size_t i) const { return this->P[i]; }
+
+private:
+  V* P = nullptr;
+};
+
 std::vector<vtkIdType> Widen(vtkDataArray* a)
 {
   std::vector<vtkIdType> out(a->GetNumberOfValues());
@@ -312,7 +375,7 @@ struct PolyLinks
   const vtkIdType* Offsets = nullptr;
   const vtkIdType* Conn = nullptr;
   vtkIdType NumCells = 0;
-  std::vector<vtkIdType> LinkOffsets, Links;
+  Buffer<vtkIdType> LinkOffsets, Links;
 
   void Build(vtkCellArray* polys, vtkIdType numPts, bool withLinks)
   {
@@ -336,27 +399,34 @@ struct PolyLinks
       this->Offsets = this->OffsetsCopy.data();
       this->Conn = this->ConnCopy.data();
     }
-    if (!withLinks)
+    if (withLinks)
     {
-      return;
+      this->BuildLinks(numPts);
     }
-    this->LinkOffsets.assign(numPts + 1, 0);
+  }
+
+  void BuildLinks(vtkIdType numPts)
+  {
+    // Counts, then their running sums (the end of each point's list), then the polygons
+    // placed from the last one down: each list ends up in increasing order and the ends
+    // become the starts, with no cursor array.
+    this->LinkOffsets.Resize(numPts + 1);
+    std::fill_n(this->LinkOffsets.data(), numPts + 1, 0);
     const vtkIdType nConn = this->Offsets[this->NumCells];
     for (vtkIdType k = 0; k < nConn; ++k)
     {
-      ++this->LinkOffsets[this->Conn[k] + 1];
+      ++this->LinkOffsets[this->Conn[k]];
     }
     for (vtkIdType i = 0; i < numPts; ++i)
     {
       this->LinkOffsets[i + 1] += this->LinkOffsets[i];
     }
-    this->Links.resize(nConn);
-    std::vector<vtkIdType> cursor(this->LinkOffsets.begin(), this->LinkOffsets.end() - 1);
-    for (vtkIdType c = 0; c < this->NumCells; ++c)
+    this->Links.Resize(nConn);
+    for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
     {
       for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
       {
-        this->Links[cursor[this->Conn[k]]++] = c;
+        this->Links[--this->LinkOffsets[this->Conn[k]]] = c;
       }
     }
   }
@@ -458,7 +528,7 @@ struct Context
 
 // The unit input normal, or zero when it has no direction.
 template <typename R>
-inline void InputNormal(const Context<R>& c, vtkIdType i, double n[3])
+VTK_ALWAYS_INLINE void InputNormal(const Context<R>& c, vtkIdType i, double n[3])
 {
   c.Normals->Get3(i, n);
   if (FastNormalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
@@ -481,7 +551,7 @@ inline void WritePoint(const Context<R>& c, vtkIdType i, const double offset[3])
 
 // Normalises @a m and writes it (the input normal where @a m has no direction).
 template <typename R>
-inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
+VTK_ALWAYS_INLINE void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 {
   if (FastNormalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
   {
@@ -499,7 +569,7 @@ inline void WriteNormal(const Context<R>& c, vtkIdType i, double m[3])
 
 // The tangent re-orthogonalised to the unit normal @a m, its handedness kept.
 template <typename R>
-inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
+VTK_ALWAYS_INLINE void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
 {
   const int tnc = c.OutTangents->NC;
   double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
@@ -522,7 +592,7 @@ inline void WriteTangent(const Context<R>& c, vtkIdType i, const double m[3])
 }
 
 template <typename R>
-inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
+VTK_ALWAYS_INLINE void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
 {
   WriteNormal(c, i, m);
   if (c.OutTangents)
@@ -536,8 +606,8 @@ inline void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, double m[3])
 // that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
 // the caller keeps the normal.
 template <typename R>
-void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool wantP, bool wantN,
-  double Ps[3], double Pt[3], double Ns[3], double Nt[3])
+VTK_ALWAYS_INLINE void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t,
+  bool wantP, bool wantN, double Ps[3], double Pt[3], double Ns[3], double Nt[3])
 {
   const PolyLinks& mesh = *c.Polys;
   // The neighbours over the point's polygons, sorted so that each is read once.
@@ -619,7 +689,7 @@ void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t, bool w
 // The displacement d at point @a i, with the height h and its derivatives in (s,t); one
 // function so that the seam pass sees the very values of pass 1.
 template <int Interp, typename T, typename R>
-inline double Displacement(
+VTK_ALWAYS_INLINE double Displacement(
   const Context<R>& c, const Texels<T>& tex, vtkIdType i, double& h, double& hs, double& ht)
 {
   SampleHeight<Interp>(tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h, hs, ht);
@@ -627,124 +697,368 @@ inline double Displacement(
   return Finite(c.Scale * (h - c.Midlevel));
 }
 
-// Pass 1: displacement, and the analytic normals (Approximate, Exact).
+// |x| at most the largest double: false for infinities and NaN, as std::isfinite, but a plain
+// compare that vectorises.
+inline bool IsFinite(double x)
+{
+  return std::abs(x) <= std::numeric_limits<double>::max();
+}
+
+// The value stored in an output array of R: for float, beyond float's range the largest float.
+template <typename R>
+inline R ToReal(double v)
+{
+  if (std::is_same<R, float>::value)
+  {
+    constexpr double big = std::numeric_limits<float>::max();
+    v = std::min(std::max(v, -big), big);
+  }
+  return static_cast<R>(v);
+}
+
+// The block loops are also compiled for AVX2 (4 doubles per instruction instead of 2) and
+// that copy runs where the processor has it. AVX2 brings no FMA, so no product is fused with
+// a sum and the results are those of the baseline code to the bit.
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define SURFACEDETAIL_TARGET_AVX2 __attribute__((target("avx2")))
+inline bool HaveAVX2()
+{
+  static const bool have = __builtin_cpu_supports("avx2");
+  return have;
+}
+#else
+#define SURFACEDETAIL_TARGET_AVX2
+inline bool HaveAVX2()
+{
+  return false;
+}
+#endif
+
+// Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
+// held as structure of arrays: the height samples and the fits (gathers) run point by point,
+// everything else in short branch-free loops over the block that the compiler vectorises; the
+// rare points that need a fallback (a tangent with no direction left) are redone afterwards
+// with the general code. Each loop keeps the operations and their order of the per-point
+// helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the results are
+// theirs to the bit.
 template <int Interp, typename T, typename R>
 struct DisplaceWorker
 {
+  static constexpr int Block = 64;
+  using Lanes = double[Block];
   const Context<R>& C;
   const Texels<T>& Tex;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
+    if (HaveAVX2())
+    {
+      this->RunAVX2(begin, end);
+    }
+    else
+    {
+      this->Run(begin, end);
+    }
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
+  {
+    this->Run(begin, end);
+  }
+
+  // Everything it calls for the block is inlined into it, so that RunAVX2 compiles it all.
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
+  {
     const Context<R>& c = this->C;
     const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
-    // Blocks of points, each in three short loops (displace and find the direction; normalise;
-    // the tangents) rather than one long one: the square roots and divisions of neighbouring
-    // points then overlap instead of waiting on one another.
-    constexpr vtkIdType block = 128;
-    double directions[block][3];
-    for (vtkIdType first = begin; first < end; first += block)
+    alignas(64) Lanes n[3], fallback[3], d, ds, dt, ps[3], pt[3], ns[3], nt[3], m[3], x[4];
+    for (vtkIdType first = begin; first < end; first += Block)
     {
-      const vtkIdType last = std::min(end, first + block);
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        this->Direction(i, analytic, exact, directions[i - first]);
-      }
+      const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
+      this->UnitNormals(first, count, n, fallback);
+      this->Heights(first, count, d, ds, dt);
+      this->Points(first, count, n, d, x);
       if (!analytic)
       {
         continue;
       }
-      for (vtkIdType i = first; i < last; ++i)
+      this->Derivatives(first, count, exact, ps, pt, ns, nt);
+      if (exact)
       {
-        WriteNormal(c, i, directions[i - first]);
+        this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m);
       }
-      if (c.OutTangents)
+      else
       {
-        for (vtkIdType i = first; i < last; ++i)
-        {
-          WriteTangent(c, i, directions[i - first]);
-        }
+        this->template Directions<false>(count, n, d, ds, dt, ps, pt, ns, nt, m);
+      }
+      this->Normals(first, count, fallback, m);
+      if (c.OutTangents && c.OutTangents->NC == 4)
+      {
+        this->template Tangents<4>(first, count, m, x);
+      }
+      else if (c.OutTangents)
+      {
+        this->template Tangents<3>(first, count, m, x);
       }
     }
   }
 
-  // Displaces point @a i and, in the analytic modes, returns its new normal's direction.
-  void Direction(vtkIdType i, bool analytic, bool exact, double m[3]) const
+  // Interleaved values of R to lanes, and back (for R float, clamped to float's range).
+  template <int NC>
+  static VTK_ALWAYS_INLINE void Gather(const R* in, int count, Lanes* lanes)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        lanes[j][k] = in[NC * k + j];
+      }
+    }
+  }
+
+  template <int NC>
+  static VTK_ALWAYS_INLINE void Scatter(const Lanes* lanes, int count, R* out)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = ToReal<R>(lanes[j][k]);
+      }
+    }
+  }
+
+  // InputNormal for the block, and WriteNormal's fallback: that normal, or +z where it has none.
+  VTK_ALWAYS_INLINE void UnitNormals(
+    vtkIdType first, int count, Lanes n[3], Lanes fallback[3]) const
+  {
+    Gather<3>(this->C.Normals->P + 3 * first, count, n);
+    for (int k = 0; k < count; ++k)
+    {
+      const double x = n[0][k], y = n[1][k], z = n[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool keep = len != 0.0 && IsFinite(sx + sy + sz);
+      n[0][k] = keep ? sx : 0.0;
+      n[1][k] = keep ? sy : 0.0;
+      n[2][k] = keep ? sz : 0.0;
+      fallback[0][k] = n[0][k];
+      fallback[1][k] = n[1][k];
+      fallback[2][k] = keep ? sz : 1.0;
+    }
+  }
+
+  VTK_ALWAYS_INLINE void Heights(vtkIdType first, int count, Lanes d, Lanes ds, Lanes dt) const
   {
     const Context<R>& c = this->C;
-    double n[3];
-    InputNormal(c, i, n);
-    const double s = c.TCoords->Get(i, 0), t = c.TCoords->Get(i, 1);
-    double h, hs, ht;
-    const double d = Displacement<Interp>(c, this->Tex, i, h, hs, ht);
-    const double ds = Finite(c.Scale * hs), dt = Finite(c.Scale * ht);
-    const double offset[3] = { d * n[0], d * n[1], d * n[2] };
-    WritePoint(c, i, offset);
-    if (!analytic)
+    for (int k = 0; k < count; ++k)
+    {
+      const vtkIdType i = first + k;
+      SampleHeight<Interp>(
+        this->Tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), d[k], ds[k], dt[k]);
+    }
+    // Displacement's arithmetic, in a loop of its own that vectorises.
+    for (int k = 0; k < count; ++k)
+    {
+      d[k] = Finite(c.Scale * (d[k] - c.Midlevel));
+      ds[k] = Finite(c.Scale * ds[k]);
+      dt[k] = Finite(c.Scale * dt[k]);
+    }
+  }
+
+  // WritePoint for the block (@a x is scratch).
+  VTK_ALWAYS_INLINE void Points(
+    vtkIdType first, int count, const Lanes n[3], const Lanes d, Lanes x[3]) const
+  {
+    Gather<3>(this->C.Points->P + 3 * first, count, x);
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        const double offset = d[k] * n[j][k];
+        x[j][k] = offset == 0.0 ? x[j][k] : Finite(x[j][k] + offset);
+      }
+    }
+    Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
+  }
+
+  // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t.
+  VTK_ALWAYS_INLINE void Derivatives(vtkIdType first, int count, bool exact, Lanes ps[3],
+    Lanes pt[3], Lanes ns[3], Lanes nt[3]) const
+  {
+    const Context<R>& c = this->C;
+    if (c.DPdu)
+    {
+      Gather<3>(c.DPdu->P + 3 * first, count, ps);
+      Gather<3>(c.DPdv->P + 3 * first, count, pt);
+      for (int j = 0; j < 3; ++j)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          ps[j][k] *= c.DerivativeScale[0];
+          pt[j][k] *= c.DerivativeScale[1];
+        }
+      }
+    }
+    if (c.DPdu && !exact)
     {
       return;
     }
-    double Ps[3], Pt[3], Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-    if (c.DPdu)
+    for (int k = 0; k < count; ++k)
     {
-      c.DPdu->Get3(i, Ps);
-      c.DPdv->Get3(i, Pt);
-      for (int k = 0; k < 3; ++k)
+      const vtkIdType i = first + k;
+      double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
+      double Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
+      FitDerivatives(
+        c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      for (int j = 0; j < 3; ++j)
       {
-        Ps[k] *= c.DerivativeScale[0];
-        Pt[k] *= c.DerivativeScale[1];
+        ps[j][k] = Ps[j];
+        pt[j][k] = Pt[j];
+        ns[j][k] = Ns[j];
+        nt[j][k] = Nt[j];
       }
     }
-    if (!c.DPdu || exact)
+  }
+
+  // The new normal's direction: the seed's formula, or (Exact) the cross product of the
+  // displaced surface's derivatives; the input normal where the surface is degenerate.
+  template <bool Exact>
+  VTK_ALWAYS_INLINE void Directions(int count, const Lanes n[3], const Lanes d, const Lanes ds,
+    const Lanes dt, const Lanes ps[3], const Lanes pt[3], const Lanes ns[3], const Lanes nt[3],
+    Lanes m[3]) const
+  {
+    for (int k = 0; k < count; ++k)
     {
-      FitDerivatives(c, i, s, t, !c.DPdu, exact, Ps, Pt, Ns, Nt);
-    }
-    // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
-    RemoveNormalPart(n, Ps);
-    RemoveNormalPart(n, Pt);
-    double base[3];
-    Cross(Ps, Pt, base);
-    const double area = Dot(n, base);
-    const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
-    if (exact)
-    {
-      RemoveNormalPart(n, Ns);
-      RemoveNormalPart(n, Nt);
-      double qs[3], qt[3];
-      for (int k = 0; k < 3; ++k)
+      const double nk[3] = { n[0][k], n[1][k], n[2][k] };
+      double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
+      // Only the parts across n count: then P_s x P_t is along n and Scale 0 gives n.
+      RemoveNormalPart(nk, Ps);
+      RemoveNormalPart(nk, Pt);
+      double base[3];
+      Cross(Ps, Pt, base);
+      const double area = Dot(nk, base);
+      const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
+      double mk[3];
+      if (Exact)
       {
-        qs[k] = Finite(Ps[k] + ds * n[k] + d * Ns[k]);
-        qt[k] = Finite(Pt[k] + dt * n[k] + d * Nt[k]);
+        double Ns[3] = { ns[0][k], ns[1][k], ns[2][k] }, Nt[3] = { nt[0][k], nt[1][k], nt[2][k] };
+        RemoveNormalPart(nk, Ns);
+        RemoveNormalPart(nk, Nt);
+        double qs[3], qt[3];
+        for (int j = 0; j < 3; ++j)
+        {
+          qs[j] = Finite(Ps[j] + ds[k] * nk[j] + d[k] * Ns[j]);
+          qt[j] = Finite(Pt[j] + dt[k] * nk[j] + d[k] * Nt[j]);
+        }
+        // Only the direction matters: scaling first keeps the cross product finite.
+        // (ScaleToUnitMax, with the maximum in std::max's order and no branch.)
+        const double ms = std::max(std::max(std::abs(qs[0]), std::abs(qs[1])), std::abs(qs[2]));
+        const double mt = std::max(std::max(std::abs(qt[0]), std::abs(qt[1])), std::abs(qt[2]));
+        const double invS = 1.0 / ms, invT = 1.0 / mt;
+        for (int j = 0; j < 3; ++j)
+        {
+          qs[j] = ms > 0.0 ? qs[j] * invS : qs[j];
+          qt[j] = mt > 0.0 ? qt[j] * invT : qt[j];
+        }
+        Cross(qs, qt, mk);
       }
-      // Only the direction matters: scaling first keeps the cross product finite.
-      ScaleToUnitMax(qs);
-      ScaleToUnitMax(qt);
-      Cross(qs, qt, m);
-    }
-    else
-    {
-      double nxPs[3], nxPt[3];
-      Cross(n, Ps, nxPs);
-      Cross(n, Pt, nxPt);
-      const double inv = 1.0 / std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
-      const double a = area * inv, bs = ds * inv, bt = dt * inv;
-      for (int k = 0; k < 3; ++k)
+      else
       {
-        m[k] = a * n[k] + bs * nxPt[k] - bt * nxPs[k];
+        double nxPs[3], nxPt[3];
+        Cross(nk, Ps, nxPs);
+        Cross(nk, Pt, nxPt);
+        const double largest =
+          std::max(std::max(std::max(std::abs(area), std::abs(ds[k])), std::abs(dt[k])), 1e-300);
+        const double inv = 1.0 / largest;
+        const double a = area * inv, bs = ds[k] * inv, bt = dt[k] * inv;
+        for (int j = 0; j < 3; ++j)
+        {
+          mk[j] = a * nk[j] + bs * nxPt[j] - bt * nxPs[j];
+        }
+      }
+      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !IsFinite(area);
+      const double sign = area < 0.0 ? -1.0 : 1.0;
+      for (int j = 0; j < 3; ++j)
+      {
+        // Negation, not a product with the sign: -0 stays what WriteNormal would get.
+        const double flipped = sign < 0.0 ? -mk[j] : mk[j];
+        m[j][k] = degenerate ? nk[j] : flipped;
       }
     }
-    const bool degenerate = !(std::abs(area) > 1e-10 * size) || !std::isfinite(area);
-    if (degenerate)
+  }
+
+  // WriteNormal for the block: normalises m in place and writes it.
+  VTK_ALWAYS_INLINE void Normals(
+    vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
+  {
+    for (int k = 0; k < count; ++k)
     {
-      std::copy(n, n + 3, m);
+      const double x = m[0][k], y = m[1][k], z = m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool bad = len == 0.0 || !IsFinite(sx + sy + sz);
+      m[0][k] = bad ? fallback[0][k] : sx;
+      m[1][k] = bad ? fallback[1][k] : sy;
+      m[2][k] = bad ? fallback[2][k] : sz;
     }
-    else if (area < 0.0)
+    // Unit vectors: static_cast as WriteNormal, no range to clamp.
+    R* out = this->C.OutNormals->P + 3 * first;
+    for (int k = 0; k < count; ++k)
     {
-      m[0] = -m[0];
-      m[1] = -m[1];
-      m[2] = -m[2];
+      for (int j = 0; j < 3; ++j)
+      {
+        out[3 * k + j] = static_cast<R>(m[j][k]);
+      }
+    }
+  }
+
+  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
+  // direction is redone by WriteTangent itself (same results for the others).
+  template <int NC>
+  VTK_ALWAYS_INLINE void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
+  {
+    const Context<R>& c = this->C;
+    Gather<NC>(c.Tangents->P + NC * first, count, t);
+    double bad = 0.0;
+    for (int k = 0; k < count; ++k)
+    {
+      double x = t[0][k], y = t[1][k], z = t[2][k];
+      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
+      x -= along * m[0][k];
+      y -= along * m[1][k];
+      z -= along * m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      bad = std::max(bad, len == 0.0 || !IsFinite(sx + sy + sz) ? 1.0 : 0.0);
+      t[0][k] = sx;
+      t[1][k] = sy;
+      t[2][k] = sz;
+    }
+    R* out = c.OutTangents->P + NC * first;
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = static_cast<R>(t[j][k]);
+      }
+    }
+    if (bad == 0.0)
+    {
+      return;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double mk[3] = { m[0][k], m[1][k], m[2][k] };
+      WriteTangent(c, first + k, mk);
     }
   }
 };
@@ -758,7 +1072,7 @@ struct MeshPolygonNormalWorker
   const ArrayReader<R>& Moved;
   double* CellNormals;
 
-  void PolygonNormal(vtkIdType cell, double out[3]) const
+  VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
   {
     const PolyLinks& mesh = *this->C.Polys;
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
@@ -801,8 +1115,25 @@ struct MeshPolygonNormalWorker
     }
   }
 
-  // Each polygon's normal, once.
+  // Each polygon's normal, once (in AVX2 where the processor has it, as pass 1).
   void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    if (HaveAVX2())
+    {
+      this->RunAVX2(begin, end);
+    }
+    else
+    {
+      this->Run(begin, end);
+    }
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
+  {
+    this->Run(begin, end);
+  }
+
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     for (vtkIdType cell = begin; cell < end; ++cell)
     {
@@ -819,6 +1150,23 @@ struct MeshPointNormalWorker
   const double* CellNormals;
 
   void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    if (HaveAVX2())
+    {
+      this->RunAVX2(begin, end);
+    }
+    else
+    {
+      this->Run(begin, end);
+    }
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
+  {
+    this->Run(begin, end);
+  }
+
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     const PolyLinks& mesh = *this->C.Polys;
     for (vtkIdType i = begin; i < end; ++i)
@@ -855,8 +1203,10 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
   };
-  std::vector<std::uint64_t> sum(numPts, 0);
-  std::vector<unsigned char> used(numPts, 0);
+  Buffer<std::uint64_t> sum(numPts);
+  Buffer<unsigned char> used(numPts);
+  std::fill_n(sum.data(), numPts, 0);
+  std::fill_n(used.data(), numPts, 0);
   for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
   {
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
@@ -899,10 +1249,22 @@ std::vector<vtkIdType> CoincidentGroups(
 {
   struct KeyHash
   {
+    // The bits of the three (whole-number) keys, mixed by multiplication: std::hash<double>
+    // hashes bytes one by one, and each candidate looks up 27 buckets. Adding +0 makes -0 and
+    // +0, which compare equal, hash alike. (The hash only places buckets: the groups found do
+    // not depend on it.)
     size_t operator()(const std::array<double, 3>& k) const
     {
-      const std::hash<double> h;
-      return h(k[0]) ^ (h(k[1]) * 0x9E3779B97F4A7C15ULL) ^ (h(k[2]) * 0xC2B2AE3D27D4EB4FULL);
+      std::uint64_t h = 0;
+      for (double x : k)
+      {
+        x += 0.0;
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof(bits));
+        h = (h ^ bits) * 0x9E3779B97F4A7C15ULL;
+        h ^= h >> 29;
+      }
+      return static_cast<size_t>(h);
     }
   };
   const double cell = tol > 0.0 ? tol : 1.0;
@@ -1221,17 +1583,16 @@ int vtkDisplacementMapFilter::RequestData(
 
     // Outputs: nothing is allocated that is not asked for.
     vtkNew<vtkPoints> outPoints;
-    outPoints->SetDataType(std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE);
-    outPoints->SetNumberOfPoints(numPts);
+    outPoints->SetData(NewOutputArray<R>("Points", 3, numPts));
     vtkSmartPointer<vtkDataArray> outNormals, outTangents;
     if (this->NormalMode != None)
     {
-      outNormals = NewRealArray<R>(normals->GetName(), 3, numPts);
+      outNormals = NewOutputArray<R>(normals->GetName(), 3, numPts);
     }
     if (tangents)
     {
       outTangents =
-        NewRealArray<R>(inTangents->GetName(), inTangents->GetNumberOfComponents(), numPts);
+        NewOutputArray<R>(inTangents->GetName(), inTangents->GetNumberOfComponents(), numPts);
     }
 
     ArrayReader<R> pts(points), nrm(normalsR), tc(tcoordsR);
@@ -1268,15 +1629,17 @@ int vtkDisplacementMapFilter::RequestData(
       ctx.OutTangents = wTangents.get();
     }
     PolyLinks mesh;
+    // Mesh normals need the links only after pass 1: they are built beside it.
+    const bool linksBeside = this->NormalMode == Mesh;
     if (needLinks || this->MergeSeams || useDerivs)
     {
-      mesh.Build(input->GetPolys(), numPts, needLinks);
+      mesh.Build(input->GetPolys(), numPts, needLinks && !linksBeside);
       ctx.Polys = &mesh;
     }
-    std::vector<double> unitNormals;
+    Buffer<double> unitNormals;
     if (this->NormalMode == Exact)
     {
-      unitNormals.resize(3 * static_cast<size_t>(numPts));
+      unitNormals.Resize(3 * static_cast<size_t>(numPts));
       vtkSMPTools::For(0, numPts, Grain,
         [&](vtkIdType begin, vtkIdType end)
         {
@@ -1297,13 +1660,18 @@ int vtkDisplacementMapFilter::RequestData(
     // member) in increasing order, so that every sum over a group has one order whatever the thread
     // count.
     std::vector<std::pair<vtkIdType, vtkIdType>> groups;
-    if (this->MergeSeams)
+    // (The input's bounds are computed here, not in a thread beside pass 1.)
+    const double seamTolerance = this->MergeSeams ? this->SeamTolerance * input->GetLength() : 0.0;
+    auto findGroups = [&]()
     {
+      if (!this->MergeSeams)
+      {
+        return;
+      }
       const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
-        const std::vector<vtkIdType> rep =
-          CoincidentGroups(pts, candidates, this->SeamTolerance * input->GetLength());
+        const std::vector<vtkIdType> rep = CoincidentGroups(pts, candidates, seamTolerance);
         std::vector<unsigned char> isRep(candidates.size(), 0);
         for (size_t k = 0; k < candidates.size(); ++k)
         {
@@ -1322,7 +1690,7 @@ int vtkDisplacementMapFilter::RequestData(
         }
         std::sort(groups.begin(), groups.end());
       }
-    }
+    };
     auto forEachGroup = [&](auto&& body)
     {
       for (size_t b = 0; b < groups.size();)
@@ -1360,7 +1728,27 @@ int vtkDisplacementMapFilter::RequestData(
       {
         constexpr int interp = decltype(kind)::value;
         DisplaceWorker<interp, T, R> worker{ ctx, tex };
-        vtkSMPTools::For(0, numPts, Grain, worker);
+        // Pass 1 (threaded), the seam groups and Mesh's links (serial) read only the input and
+        // write apart: they run side by side, the serial ones on whichever threads pass 1 leaves.
+        vtkSMPTools::For(0, 3, 1,
+          [&](vtkIdType task0, vtkIdType task1)
+          {
+            for (vtkIdType task = task0; task < task1; ++task)
+            {
+              if (task == 0)
+              {
+                vtkSMPTools::For(0, numPts, Grain, worker);
+              }
+              else if (task == 1)
+              {
+                findGroups();
+              }
+              else if (linksBeside)
+              {
+                mesh.BuildLinks(numPts);
+              }
+            }
+          });
         // One displacement per group: the mean of the members' own.
         forEachGroup(
           [&](size_t b, size_t e)
@@ -1424,7 +1812,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (this->NormalMode == Mesh)
     {
       ArrayReader<R> moved(outPoints->GetData());
-      std::vector<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
+      Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
       MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
       vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
       MeshPointNormalWorker<R> worker{ ctx, cellNormals.data() };

@@ -4,7 +4,9 @@
 // The surface is the closed-form torus of the accuracy test (DisplacementTestSurfaces.h),
 // so every run also reports its error against the exact displaced surface as counters:
 // max normal angle error (degrees) and max vertex position error. Our filter runs with
-// Cubic interpolation (the more expensive one); the chain's probe is bilinear.
+// each interpolation: Linear is what the chain's probe does (like for like), Cubic the more
+// accurate and more expensive one, Nearest the cheapest. Both sides run on every core
+// (threads 0, each one's default) and on one thread.
 //
 //   build/bin/BenchDisplacementMapFilter --benchmark_repetitions=5
 //     --benchmark_report_aggregates_only=true --benchmark_out=displacement.json
@@ -103,21 +105,25 @@ void Report(benchmark::State& state, const Case& c, vtkPolyData* out, vtkDataArr
   state.SetItemsProcessed(state.iterations() * out->GetNumberOfPoints());
 }
 
+// threads 0: every core (the default); 1: one thread. (VTK 9.1's TBB backend keeps 1 thread
+// after Initialize(1) even when Initialize(0) follows: the count is explicit.)
+void SetThreads(int threads)
+{
+  vtkSMPTools::Initialize(
+    threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 void BM_DisplacementMapFilter(benchmark::State& state)
 {
   const Case& c = GetCase(static_cast<int>(state.range(0)));
-  // threads 0: every core; 1: one thread, like the VTK chain. (VTK 9.1's TBB backend keeps
-  // 1 thread after Initialize(1) even when Initialize(0) follows: the count is explicit.)
-  const int threads = static_cast<int>(state.range(2));
-  vtkSMPTools::Initialize(
-    threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
+  SetThreads(static_cast<int>(state.range(3)));
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, c.Mesh);
   filter->SetInputData(1, HeightImage());
   filter->SetScale(Scale);
   filter->SetMidlevel(Mid);
-  filter->SetInterpolationToCubic();
   filter->SetNormalMode(static_cast<int>(state.range(1)));
+  filter->SetInterpolation(static_cast<int>(state.range(2)));
   for (auto _ : state)
   {
     filter->Modified();
@@ -135,6 +141,8 @@ void BM_DisplacementMapFilter(benchmark::State& state)
 void BM_VTKChain(benchmark::State& state)
 {
   const Case& c = GetCase(static_cast<int>(state.range(0)));
+  // vtkWarpScalar and vtkPolyDataTangents are threaded with vtkSMPTools in VTK 9.1.
+  SetThreads(static_cast<int>(state.range(3)));
   vtkNew<vtkImageData> image;
   image->ShallowCopy(HeightImage());
   int dims[3];
@@ -184,30 +192,34 @@ void BM_VTKChain(benchmark::State& state)
     out = tangents->GetOutput();
   }
   Report(state, c, out, out->GetPointData()->GetNormals());
+  state.counters["threads"] = vtkSMPTools::GetEstimatedNumberOfThreads();
 }
 
-// Resolutions U (torus U x U/2): the last two are about 1M and 4M points.
+// Resolutions U (torus U x U/2): the last two are about 1M and 4M points. Arguments:
+// U, normal mode (0 for the chain), interpolation (the chain's is Linear), threads.
 void Sizes(benchmark::internal::Benchmark* b, bool modes)
 {
   for (int U : { 128, 256, 512, 1414, 2828 })
   {
-    if (modes)
+    for (int threads : { 0, 1 })
     {
+      if (!modes)
+      {
+        b->Args({ U, 0, vtkDisplacementMapFilter::Linear, threads });
+        continue;
+      }
       for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
              vtkDisplacementMapFilter::Mesh })
       {
-        for (int threads : { 0, 1 })
+        for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
+               vtkDisplacementMapFilter::Cubic })
         {
-          b->Args({ U, mode, threads });
+          b->Args({ U, mode, interp, threads });
         }
       }
     }
-    else
-    {
-      b->Args({ U, 0, 1 });
-    }
   }
-  b->ArgNames({ "U", "mode", "threads" })->Unit(benchmark::kMillisecond)->UseRealTime();
+  b->ArgNames({ "U", "mode", "interp", "threads" })->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 } // namespace
 
