@@ -17,6 +17,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMemory.h"
+#include "vtkSurfaceDetailVectorize.h"
 #include "vtkTypeInt64Array.h"
 
 #include <algorithm>
@@ -716,23 +717,9 @@ inline R ToReal(double v)
   return static_cast<R>(v);
 }
 
-// The block loops are also compiled for AVX2 (4 doubles per instruction instead of 2) and
-// that copy runs where the processor has it. AVX2 brings no FMA, so no product is fused with
-// a sum and the results are those of the baseline code to the bit.
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#define SURFACEDETAIL_TARGET_AVX2 __attribute__((target("avx2")))
-inline bool HaveAVX2()
-{
-  static const bool have = __builtin_cpu_supports("avx2");
-  return have;
-}
-#else
-#define SURFACEDETAIL_TARGET_AVX2
-inline bool HaveAVX2()
-{
-  return false;
-}
-#endif
+// The block loops are also compiled for AVX2 and that copy runs where the processor has it
+// (vtkSurfaceDetailVectorize.h: the same bits either way).
+using vtkSurfaceDetailVectorize::HaveAVX2;
 
 // Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
 // held as structure of arrays: the height samples and the fits (gathers) run point by point,

@@ -2,6 +2,7 @@
 
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkSurfaceDetailVectorize.h"
 
 #include <cmath>
 #include <typeinfo>
@@ -46,13 +47,7 @@ void vtkParametricDonut::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
-// As in vtkParametricSurfaceSource.cxx: AVX2 halves the vector stores of the row loop; no
-// FMA in either build, so the bits are the same.
-#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
-#define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
-#else
-#define SURFACEDETAIL_WIDE_VECTORS
-#endif
+// AVX2 halves the vector stores of the row loop (vtkSurfaceDetailVectorize.h).
 
 namespace
 {

@@ -1,16 +1,11 @@
 #include "vtkParametricSeparableFunction.h"
 
 #include "vtkMath.h"
+#include "vtkSurfaceDetailVectorize.h"
 
 #include <cmath>
 
-// AVX2 halves the vector stores of the row loops; neither build contracts into fused
-// multiply-adds, so both give the same bits.
-#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
-#define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
-#else
-#define SURFACEDETAIL_WIDE_VECTORS
-#endif
+// AVX2 halves the vector stores of the row loops (vtkSurfaceDetailVectorize.h).
 
 namespace
 {

@@ -18,6 +18,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMemory.h"
+#include "vtkSurfaceDetailVectorize.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 
@@ -309,20 +310,6 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
   return found;
 }
 
-// The frame loop is bound by square roots and divisions, which AVX does four at a time where
-// SSE2 does two; on x86-64 Linux the loader picks the AVX2 build on processors that have it.
-// Neither build contracts a*b+c into a fused multiply-add, so both give the same bits.
-#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
-#define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
-#else
-#define SURFACEDETAIL_WIDE_VECTORS
-#endif
-#if defined(__GNUC__) || defined(__clang__)
-#define SURFACEDETAIL_ALWAYS_INLINE __attribute__((always_inline))
-#else
-#define SURFACEDETAIL_ALWAYS_INLINE
-#endif
-
 // Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
 constexpr int BlockSize = 64;
 
@@ -472,13 +459,13 @@ void CheckFinite(int count, const double* __restrict px, const double* __restric
  * Always inlined, so that each target clone below vectorises it for its own instruction set.
  */
 template <bool WithTangents>
-SURFACEDETAIL_ALWAYS_INLINE inline void CheckFiniteAndFramesRun(int count,
-  const double* __restrict px, const double* __restrict py, const double* __restrict pz,
-  const double* __restrict dux, const double* __restrict duy, const double* __restrict duz,
-  const double* __restrict dvx, const double* __restrict dvy, const double* __restrict dvz,
-  double orientation, double tangentSign, double handedness, double* __restrict nonFinite,
-  double* __restrict regular, double* __restrict n0, double* __restrict n1, double* __restrict n2,
-  double* __restrict t0, double* __restrict t1, double* __restrict t2, double* __restrict t3)
+VTK_ALWAYS_INLINE void CheckFiniteAndFramesRun(int count, const double* __restrict px,
+  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
+  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
+  const double* __restrict dvy, const double* __restrict dvz, double orientation,
+  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
+  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
+  double* __restrict t1, double* __restrict t2, double* __restrict t3)
 {
   for (int k = 0; k < count; ++k)
   {
@@ -512,7 +499,9 @@ SURFACEDETAIL_ALWAYS_INLINE inline void CheckFiniteAndFramesRun(int count,
   }
 }
 
-// Two plain functions rather than one template: clang rejects target_clones on templates.
+// The frame loop is bound by square roots and divisions, so it also has an AVX2 build
+// (vtkSurfaceDetailVectorize.h: the same bits either way). Two plain functions rather than
+// one template: clang rejects target_clones on templates.
 SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndNormals(int count, const double* __restrict px,
   const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
   const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
