@@ -1479,7 +1479,8 @@ private:
 
   V3 Position(std::int32_t i) const
   {
-    return { double(this->P[3 * i]), double(this->P[3 * i + 1]), double(this->P[3 * i + 2]) };
+    return { double(this->P[3 * std::size_t(i)]), double(this->P[3 * std::size_t(i) + 1]),
+      double(this->P[3 * std::size_t(i) + 2]) };
   }
   std::array<double, 2> TCoord(std::int32_t i) const
   {
@@ -1491,9 +1492,10 @@ private:
   bool Hash(std::int32_t i, std::uint64_t& h) const
   {
     const TT* t = this->T + std::size_t(this->TcStride) * i;
-    const double v[8] = { double(this->P[3 * i]), double(this->P[3 * i + 1]),
-      double(this->P[3 * i + 2]), double(this->N[3 * i]), double(this->N[3 * i + 1]),
-      double(this->N[3 * i + 2]), double(t[0]), double(t[1]) };
+    const double v[8] = { double(this->P[3 * std::size_t(i)]),
+      double(this->P[3 * std::size_t(i) + 1]), double(this->P[3 * std::size_t(i) + 2]),
+      double(this->N[3 * std::size_t(i)]), double(this->N[3 * std::size_t(i) + 1]),
+      double(this->N[3 * std::size_t(i) + 2]), double(t[0]), double(t[1]) };
     static constexpr std::uint64_t K[8] = { 0x9e3779b97f4a7c15ULL, 0xc2b2ae3d27d4eb4fULL,
       0x165667b19e3779f9ULL, 0xd6e8feb86659fd93ULL, 0xa0761d6478bd642fULL, 0xe7037ed1a0b428dbULL,
       0x8ebc6af09c88c6e3ULL, 0x589965cc75374cc3ULL };
@@ -1518,7 +1520,8 @@ private:
   {
     for (int c = 0; c < 3; ++c)
     {
-      if (this->P[3 * i + c] != this->P[3 * o + c] || this->N[3 * i + c] != this->N[3 * o + c])
+      if (this->P[3 * std::size_t(i) + c] != this->P[3 * std::size_t(o) + c] ||
+        this->N[3 * std::size_t(i) + c] != this->N[3 * std::size_t(o) + c])
       {
         return false;
       }
@@ -1683,7 +1686,8 @@ private:
           if (!NotZero(area2) || !(lenOs2 > eps2 * (t31y * t31y * l1 + t21y * t21y * l2)) ||
             !(lenOt2 > eps2 * (t31x * t31x * l1 + t21x * t21x * l2)) ||
             !(lenOs2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)) ||
-            !(lenOt2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)))
+            !(lenOt2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)) ||
+            !(lenOs2 > 4.0 * FLT_MIN * FLT_MIN) || !(lenOt2 > 4.0 * FLT_MIN * FLT_MIN))
           {
             fail.store(true, std::memory_order_relaxed);
             return;
@@ -1837,7 +1841,8 @@ private:
 
   V3 UnitNormal(std::int32_t v) const
   {
-    V3 n{ double(this->N[3 * v]), double(this->N[3 * v + 1]), double(this->N[3 * v + 2]) };
+    V3 n{ double(this->N[3 * std::size_t(v)]), double(this->N[3 * std::size_t(v) + 1]),
+      double(this->N[3 * std::size_t(v) + 2]) };
     const double len = std::sqrt(Dot(n, n));
     if (len > 0.0 && std::isfinite(len))
     {
@@ -1953,20 +1958,22 @@ private:
     const double bb = n[0] * n[1] * ia;
     const double b1[3] = { 1.0 + sgn * n[0] * n[0] * ia, sgn * bb, -sgn * n[0] };
     const double b2[3] = { bb, sgn + n[1] * n[1] * ia, -n[1] };
-    const double pv[3] = { double(this->P[3 * v]), double(this->P[3 * v + 1]),
-      double(this->P[3 * v + 2]) };
+    const double pv[3] = { double(this->P[3 * std::size_t(v)]),
+      double(this->P[3 * std::size_t(v) + 1]), double(this->P[3 * std::size_t(v) + 2]) };
     double ex[MaxFastFan + 1], ey[MaxFastFan + 1];
     int ok = 1;
     for (int s = 0; s <= k; ++s)
     {
       const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
-      const double d[3] = { double(this->P[3 * x]) - pv[0], double(this->P[3 * x + 1]) - pv[1],
-        double(this->P[3 * x + 2]) - pv[2] };
-      // No check needed: a position edge is not zero (no degenerate triangles here), and
-      // one along the normal projects to zero, whose angle (0 / 0) is NaN and makes the
-      // vertex fail below.
+      const double d[3] = { double(this->P[3 * std::size_t(x)]) - pv[0],
+        double(this->P[3 * std::size_t(x) + 1]) - pv[1],
+        double(this->P[3 * std::size_t(x) + 2]) - pv[2] };
       ex[s] = d[0] * b1[0] + d[1] * b1[1] + d[2] * b1[2];
       ey[s] = d[0] * b2[0] + d[1] * b2[1] + d[2] * b2[2];
+      // The general path normalises a projected edge only when some component is above
+      // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+      // margin of 4), so shorter projections (an edge along the normal) go that way.
+      ok &= ex[s] * ex[s] + ey[s] * ey[s] > 12.0 * FLT_MIN * FLT_MIN;
     }
     // Projections onto the tangent plane through dot products with n: for a direction d,
     // |proj d|^2 = d.d - (d.n)^2, and proj d . r = d . r for r in the plane; the average

@@ -5,7 +5,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -17,6 +19,9 @@
 #include "vtkParametricSphere.h"
 #include "vtkParametricSurfaceSource.h"
 #include "vtkParametricTorus.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkTexturedSphereSource.h"
 
@@ -367,6 +372,122 @@ TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPath)
       maxDeg = std::max(maxDeg, vtkMath::DegreesFromRadians(std::acos(std::min(1.0, c))));
     }
     EXPECT_LT(maxDeg, 1e-4);
+  }
+}
+
+// Inputs at the edges of what the fast path's division-free tests see: the general path
+// (forced by a threshold below 180 degrees) drops a triangle's dP/ds when its length is not
+// above FLT_MIN, and leaves a projected edge unnormalised when all its components are that
+// small; the fast path must hand such meshes over rather than give other frames.
+TEST(vtkMikkTSpaceTangents, FastPathHandsOverTinyDerivativesAndEdges)
+{
+  auto compare = [](vtkPolyData* input, const char* name)
+  {
+    vtkNew<vtkMikkTSpaceTangents> fast, general;
+    fast->SetInputData(input);
+    general->SetInputData(input);
+    general->SetAngularThreshold(179.9);
+    fast->Update();
+    general->Update();
+    vtkDataArray* tf = fast->GetOutput()->GetPointData()->GetArray("Tangents");
+    vtkDataArray* tg = general->GetOutput()->GetPointData()->GetArray("Tangents");
+    ASSERT_NE(tf, nullptr) << name;
+    ASSERT_NE(tg, nullptr) << name;
+    ASSERT_EQ(tf->GetNumberOfTuples(), tg->GetNumberOfTuples()) << name;
+    for (vtkIdType p = 0; p < tf->GetNumberOfTuples(); ++p)
+    {
+      double a[4], b[4];
+      tf->GetTuple(p, a);
+      tg->GetTuple(p, b);
+      ASSERT_EQ(a[3], b[3]) << name << " point " << p;
+      const double c = vtkMath::Dot(a, b) / (vtkMath::Norm(a) * vtkMath::Norm(b));
+      EXPECT_LT(vtkMath::DegreesFromRadians(std::acos(std::min(1.0, c))), 1e-4)
+        << name << " point " << p;
+    }
+  };
+
+  // A bumpy 6 x 6 grid 1e-34 across with texture coordinates 1e-3 across: dP/ds is about
+  // 1e-31, below FLT_MIN once divided by the texture area's 1e-6 ... but not in the fast
+  // path's test scaled by the area.
+  for (int precision : { VTK_FLOAT, VTK_DOUBLE })
+  {
+    const int n = 6;
+    const double scale = 1e-34, tscale = 1e-3;
+    vtkNew<vtkPoints> points;
+    points->SetDataType(precision);
+    vtkNew<vtkFloatArray> normals;
+    normals->SetNumberOfComponents(3);
+    normals->SetName("Normals");
+    vtkNew<vtkFloatArray> tcoords;
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetName("TCoords");
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        // jitter so that no two triangles are alike
+        const double x = i + 0.15 * std::sin(3.1 * i + 1.7 * j);
+        const double y = j + 0.15 * std::cos(2.3 * i - 1.3 * j);
+        const double z = 0.3 * std::sin(0.7 * x) * std::cos(0.5 * y);
+        const double dzx = 0.21 * std::cos(0.7 * x) * std::cos(0.5 * y);
+        const double dzy = -0.15 * std::sin(0.7 * x) * std::sin(0.5 * y);
+        double nn[3] = { -dzx, -dzy, 1.0 };
+        vtkMath::Normalize(nn);
+        points->InsertNextPoint(x * scale, y * scale, z * scale);
+        normals->InsertNextTuple(nn);
+        tcoords->InsertNextTuple2(0.1 * x * tscale, 0.1 * y * tscale);
+      }
+    }
+    vtkNew<vtkCellArray> polys;
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const vtkIdType a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+        const vtkIdType t1[3] = { a, b, c }, t2[3] = { a, c, d };
+        polys->InsertNextCell(3, t1);
+        polys->InsertNextCell(3, t2);
+      }
+    }
+    vtkNew<vtkPolyData> grid;
+    grid->SetPoints(points);
+    grid->SetPolys(polys);
+    grid->GetPointData()->SetNormals(normals);
+    grid->GetPointData()->SetTCoords(tcoords);
+    compare(grid, precision == VTK_FLOAT ? "tiny grid, float" : "tiny grid, double");
+  }
+
+  // An edge along the normal up to 1e-39: its projection onto the tangent plane is not zero
+  // but below FLT_MIN in every component.
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(VTK_DOUBLE);
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(1e-39, 1e-39, 1);
+    points->InsertNextPoint(0, 1, 0);
+    points->InsertNextPoint(-1, 0, 0);
+    vtkNew<vtkDoubleArray> normals;
+    normals->SetNumberOfComponents(3);
+    normals->SetName("Normals");
+    vtkNew<vtkDoubleArray> tcoords;
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetName("TCoords");
+    const double t[4][2] = { { 0, 0 }, { 1, -1 }, { 0, 1 }, { -1, 0.8 } };
+    for (int i = 0; i < 4; ++i)
+    {
+      normals->InsertNextTuple3(0, 0, 1);
+      tcoords->InsertNextTuple(t[i]);
+    }
+    vtkNew<vtkCellArray> polys;
+    const vtkIdType t1[3] = { 0, 1, 2 }, t2[3] = { 0, 2, 3 };
+    polys->InsertNextCell(3, t1);
+    polys->InsertNextCell(3, t2);
+    vtkNew<vtkPolyData> fan;
+    fan->SetPoints(points);
+    fan->SetPolys(polys);
+    fan->GetPointData()->SetNormals(normals);
+    fan->GetPointData()->SetTCoords(tcoords);
+    compare(fan, "edge along the normal");
   }
 }
 
