@@ -1428,7 +1428,8 @@ private:
         {
           for (vtkIdType i = b; i < e; ++i)
           {
-            r[i].store(0, std::memory_order_relaxed);
+            // Constructed here: Block's memory is raw.
+            new (&r[i]) std::atomic<unsigned char>(0);
           }
         });
     }
