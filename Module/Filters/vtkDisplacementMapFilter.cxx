@@ -1427,6 +1427,12 @@ struct vtkDisplacementMapFilter::MeshCache
   std::vector<std::pair<vtkIdType, vtkIdType>> Groups;
   bool HaveGroups = false;
 
+  // Exact's unit input normals: from the normals array.
+  Key NormalsKey;
+  vtkTimeStamp NormalsTime;
+  Buffer<double> UnitNormals;
+  bool HaveUnitNormals = false;
+
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
   {
     return built.Objects == now.Objects && built.NumPoints == now.NumPoints &&
@@ -1702,9 +1708,22 @@ int vtkDisplacementMapFilter::RequestData(
         mesh.UseLinks(cache.Links);
       }
     }
-    Buffer<double> unitNormals;
     if (this->NormalMode == Exact)
     {
+      Buffer<double>& unitNormals = cache.UnitNormals;
+      MeshCache::Key normalsKey;
+      normalsKey.Objects[0] = normals;
+      normalsKey.NumPoints = numPts;
+      if (cache.HaveUnitNormals &&
+        MeshCache::Fresh(cache.NormalsKey, normalsKey, normals->GetMTime(), cache.NormalsTime))
+      {
+        ctx.UnitNormals = unitNormals.data();
+      }
+    }
+    if (this->NormalMode == Exact && !ctx.UnitNormals)
+    {
+      Buffer<double>& unitNormals = cache.UnitNormals;
+      cache.HaveUnitNormals = false;
       unitNormals.Resize(3 * static_cast<size_t>(numPts));
       vtkSMPTools::For(0, numPts, Grain,
         [&](vtkIdType begin, vtkIdType end)
@@ -1717,6 +1736,10 @@ int vtkDisplacementMapFilter::RequestData(
           }
         });
       ctx.UnitNormals = unitNormals.data();
+      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr };
+      cache.NormalsKey.NumPoints = numPts;
+      cache.NormalsTime.Modified();
+      cache.HaveUnitNormals = true;
     }
     if (useDerivs)
     {

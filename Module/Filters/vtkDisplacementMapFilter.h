@@ -247,9 +247,9 @@ protected:
   int NonFiniteScanComponent = -1;
   vtkIdType NonFiniteCount = 0;
 
-  // What depends on the input mesh alone (seam groups, point-to-polygon links), kept while
-  // the input's points and polygons do not change: moving a Scale slider or swapping the
-  // height map does not rebuild it.
+  // What depends on the input alone (seam groups, point-to-polygon links, Exact's unit
+  // normals), kept while the input's points, polygons and normals do not change: moving a
+  // Scale slider or swapping the height map does not rebuild it.
   struct MeshCache;
   std::unique_ptr<MeshCache> Cache;
 

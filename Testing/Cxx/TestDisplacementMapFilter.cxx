@@ -418,8 +418,8 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
 
 // The filter keeps what depends on the input mesh alone (seam groups, links) between
 // executions. Whatever changes after a first execution (Scale, points, texture coordinates,
-// connectivity, in place or by new objects), the output must be, to the bit, that of a fresh
-// filter; and each change must matter (the output moves), so that a stale cache would show.
+// normals, connectivity, in place or by new objects), the output must be, to the bit, that of a
+// fresh filter; and each change must matter (the output moves), so that a stale cache would show.
 TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
 {
   const Surface s = Torus();
@@ -474,6 +474,14 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
       }
       tc->Modified();
       check(0.2, "texture coordinates in place");
+
+      vtkDataArray* nrm = mesh->GetPointData()->GetNormals();
+      for (vtkIdType i = 0; i < nrm->GetNumberOfTuples(); i += 7)
+      {
+        nrm->SetComponent(i, 1, nrm->GetComponent(i, 1) + 0.01);
+      }
+      nrm->Modified();
+      check(0.2, "normals in place");
 
       // Connectivity changed in place: the seam closed (polygons use the first column
       // instead of its duplicates), so the links and the boundary change.
