@@ -368,17 +368,24 @@ std::vector<vtkIdType> Widen(vtkDataArray* a)
   return out;
 }
 
-// Polygons as offsets + connectivity, and the point-to-polygon links in CSR form (each
-// point's polygons in increasing id order, so that every sum over them has one order).
+// The point-to-polygon links in CSR form (each point's polygons in increasing id order, so
+// that every sum over them has one order).
+struct LinkTable
+{
+  Buffer<vtkIdType> Offsets, Links;
+};
+
+// Polygons as offsets + connectivity, and their links (owned by a LinkTable).
 struct PolyLinks
 {
   std::vector<vtkIdType> OffsetsCopy, ConnCopy;
   const vtkIdType* Offsets = nullptr;
   const vtkIdType* Conn = nullptr;
   vtkIdType NumCells = 0;
-  Buffer<vtkIdType> LinkOffsets, Links;
+  const vtkIdType* LinkOffsets = nullptr;
+  const vtkIdType* Links = nullptr;
 
-  void Build(vtkCellArray* polys, vtkIdType numPts, bool withLinks)
+  void Build(vtkCellArray* polys)
   {
     this->NumCells = polys->GetNumberOfCells();
     static_assert(sizeof(vtkIdType) == 8 || sizeof(vtkIdType) == 4, "id size");
@@ -400,34 +407,38 @@ struct PolyLinks
       this->Offsets = this->OffsetsCopy.data();
       this->Conn = this->ConnCopy.data();
     }
-    if (withLinks)
-    {
-      this->BuildLinks(numPts);
-    }
   }
 
-  void BuildLinks(vtkIdType numPts)
+  void UseLinks(const LinkTable& table)
+  {
+    this->LinkOffsets = table.Offsets.data();
+    this->Links = table.Links.data();
+  }
+
+  void BuildLinks(vtkIdType numPts, LinkTable& table) const
   {
     // Counts, then their running sums (the end of each point's list), then the polygons
     // placed from the last one down: each list ends up in increasing order and the ends
     // become the starts, with no cursor array.
-    this->LinkOffsets.Resize(numPts + 1);
-    std::fill_n(this->LinkOffsets.data(), numPts + 1, 0);
+    table.Offsets.Resize(numPts + 1);
+    vtkIdType* offsets = table.Offsets.data();
+    std::fill_n(offsets, numPts + 1, 0);
     const vtkIdType nConn = this->Offsets[this->NumCells];
     for (vtkIdType k = 0; k < nConn; ++k)
     {
-      ++this->LinkOffsets[this->Conn[k]];
+      ++offsets[this->Conn[k]];
     }
     for (vtkIdType i = 0; i < numPts; ++i)
     {
-      this->LinkOffsets[i + 1] += this->LinkOffsets[i];
+      offsets[i + 1] += offsets[i];
     }
-    this->Links.Resize(nConn);
+    table.Links.Resize(nConn);
+    vtkIdType* links = table.Links.data();
     for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
     {
       for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
       {
-        this->Links[--this->LinkOffsets[this->Conn[k]]] = c;
+        links[--offsets[this->Conn[k]]] = c;
       }
     }
   }
@@ -1393,10 +1404,51 @@ vtkIdType CountNonFinite(const Texels<T>& tex)
 } // namespace
 
 //------------------------------------------------------------------------------
+// Each part is valid while the objects it was built from are the same ones (compared, never
+// dereferenced) and none of them was modified after its build time.
+struct vtkDisplacementMapFilter::MeshCache
+{
+  struct Key
+  {
+    std::array<const void*, 5> Objects = {}; // polys, offsets, connectivity, points, their data
+    vtkIdType NumPoints = -1;
+  };
+
+  // Links: from the polygons and the point count.
+  Key LinksKey;
+  vtkTimeStamp LinksTime;
+  LinkTable Links;
+  bool HaveLinks = false;
+
+  // Seam groups (representative, member): from the polygons and the points.
+  Key GroupsKey;
+  vtkTimeStamp GroupsTime;
+  double GroupsTolerance = -1.0;
+  std::vector<std::pair<vtkIdType, vtkIdType>> Groups;
+  bool HaveGroups = false;
+
+  // Exact's unit input normals: from the normals array.
+  Key NormalsKey;
+  vtkTimeStamp NormalsTime;
+  Buffer<double> UnitNormals;
+  bool HaveUnitNormals = false;
+
+  static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
+  {
+    return built.Objects == now.Objects && built.NumPoints == now.NumPoints &&
+      changed <= t.GetMTime();
+  }
+};
+
+//------------------------------------------------------------------------------
 vtkDisplacementMapFilter::vtkDisplacementMapFilter()
+  : Cache(new MeshCache)
 {
   this->SetNumberOfInputPorts(2);
 }
+
+//------------------------------------------------------------------------------
+vtkDisplacementMapFilter::~vtkDisplacementMapFilter() = default;
 
 //------------------------------------------------------------------------------
 int vtkDisplacementMapFilter::FillInputPortInformation(int port, vtkInformation* info)
@@ -1616,16 +1668,62 @@ int vtkDisplacementMapFilter::RequestData(
       ctx.OutTangents = wTangents.get();
     }
     PolyLinks mesh;
+    MeshCache& cache = *this->Cache;
+    vtkCellArray* polys = input->GetPolys();
+    MeshCache::Key linksKey;
+    linksKey.Objects = { polys, polys->GetOffsetsArray(), polys->GetConnectivityArray(), nullptr,
+      nullptr };
+    linksKey.NumPoints = numPts;
+    const vtkMTimeType linksChanged = std::max({ polys->GetMTime(),
+      polys->GetOffsetsArray()->GetMTime(), polys->GetConnectivityArray()->GetMTime() });
+    MeshCache::Key groupsKey = linksKey;
+    groupsKey.Objects[3] = inPoints;
+    groupsKey.Objects[4] = inPoints->GetData();
+    const vtkMTimeType groupsChanged =
+      std::max({ linksChanged, inPoints->GetMTime(), inPoints->GetData()->GetMTime() });
+    const bool haveLinks =
+      cache.HaveLinks && MeshCache::Fresh(cache.LinksKey, linksKey, linksChanged, cache.LinksTime);
+    const bool haveGroups = cache.HaveGroups && cache.GroupsTolerance == this->SeamTolerance &&
+      MeshCache::Fresh(cache.GroupsKey, groupsKey, groupsChanged, cache.GroupsTime);
     // Mesh normals need the links only after pass 1: they are built beside it.
-    const bool linksBeside = this->NormalMode == Mesh;
+    const bool linksBeside = this->NormalMode == Mesh && !haveLinks;
+    auto buildLinks = [&]()
+    {
+      cache.HaveLinks = false;
+      mesh.BuildLinks(numPts, cache.Links);
+      cache.LinksKey = linksKey;
+      cache.LinksTime.Modified();
+      cache.HaveLinks = true;
+    };
     if (needLinks || this->MergeSeams || useDerivs)
     {
-      mesh.Build(input->GetPolys(), numPts, needLinks && !linksBeside);
+      mesh.Build(polys);
       ctx.Polys = &mesh;
+      if (needLinks && !haveLinks && !linksBeside)
+      {
+        buildLinks();
+      }
+      if (needLinks)
+      {
+        mesh.UseLinks(cache.Links);
+      }
     }
-    Buffer<double> unitNormals;
     if (this->NormalMode == Exact)
     {
+      Buffer<double>& unitNormals = cache.UnitNormals;
+      MeshCache::Key normalsKey;
+      normalsKey.Objects[0] = normals;
+      normalsKey.NumPoints = numPts;
+      if (cache.HaveUnitNormals &&
+        MeshCache::Fresh(cache.NormalsKey, normalsKey, normals->GetMTime(), cache.NormalsTime))
+      {
+        ctx.UnitNormals = unitNormals.data();
+      }
+    }
+    if (this->NormalMode == Exact && !ctx.UnitNormals)
+    {
+      Buffer<double>& unitNormals = cache.UnitNormals;
+      cache.HaveUnitNormals = false;
       unitNormals.Resize(3 * static_cast<size_t>(numPts));
       vtkSMPTools::For(0, numPts, Grain,
         [&](vtkIdType begin, vtkIdType end)
@@ -1638,6 +1736,10 @@ int vtkDisplacementMapFilter::RequestData(
           }
         });
       ctx.UnitNormals = unitNormals.data();
+      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr };
+      cache.NormalsKey.NumPoints = numPts;
+      cache.NormalsTime.Modified();
+      cache.HaveUnitNormals = true;
     }
     if (useDerivs)
     {
@@ -1646,15 +1748,19 @@ int vtkDisplacementMapFilter::RequestData(
     // Coincident points (seams, poles; from the input points alone) as groups of (representative,
     // member) in increasing order, so that every sum over a group has one order whatever the thread
     // count.
-    std::vector<std::pair<vtkIdType, vtkIdType>> groups;
+    static const std::vector<std::pair<vtkIdType, vtkIdType>> noGroups;
+    std::vector<std::pair<vtkIdType, vtkIdType>>& groups = cache.Groups;
+    const bool findsGroups = this->MergeSeams && !haveGroups;
     // (The input's bounds are computed here, not in a thread beside pass 1.)
-    const double seamTolerance = this->MergeSeams ? this->SeamTolerance * input->GetLength() : 0.0;
+    const double seamTolerance = findsGroups ? this->SeamTolerance * input->GetLength() : 0.0;
     auto findGroups = [&]()
     {
-      if (!this->MergeSeams)
+      if (!findsGroups)
       {
         return;
       }
+      cache.HaveGroups = false;
+      groups.clear();
       const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
@@ -1677,13 +1783,18 @@ int vtkDisplacementMapFilter::RequestData(
         }
         std::sort(groups.begin(), groups.end());
       }
+      cache.GroupsKey = groupsKey;
+      cache.GroupsTolerance = this->SeamTolerance;
+      cache.GroupsTime.Modified();
+      cache.HaveGroups = true;
     };
     auto forEachGroup = [&](auto&& body)
     {
-      for (size_t b = 0; b < groups.size();)
+      const auto& g = this->MergeSeams ? groups : noGroups;
+      for (size_t b = 0; b < g.size();)
       {
         size_t e = b;
-        while (e < groups.size() && groups[e].first == groups[b].first)
+        while (e < g.size() && g[e].first == g[b].first)
         {
           ++e;
         }
@@ -1732,10 +1843,14 @@ int vtkDisplacementMapFilter::RequestData(
               }
               else if (linksBeside)
               {
-                mesh.BuildLinks(numPts);
+                buildLinks();
               }
             }
           });
+        if (this->NormalMode == Mesh)
+        {
+          mesh.UseLinks(cache.Links);
+        }
         // One displacement per group: the mean of the members' own.
         forEachGroup(
           [&](size_t b, size_t e)
@@ -1857,7 +1972,13 @@ int vtkDisplacementMapFilter::RequestData(
     }
     return 1;
   };
-  return allFloat ? execute(float()) : execute(double());
+  const int ok = allFloat ? execute(float()) : execute(double());
+  if (this->GetReleaseDataFlag())
+  {
+    // The caller wants memory back after each update: keep nothing for the next one.
+    this->Cache.reset(new MeshCache);
+  }
+  return ok;
 }
 
 //------------------------------------------------------------------------------

@@ -107,6 +107,8 @@
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory> // For std::unique_ptr
+
 class vtkDataArray;
 
 class SURFACEDETAILFILTERS_EXPORT vtkDisplacementMapFilter : public vtkPolyDataAlgorithm
@@ -223,7 +225,7 @@ public:
 
 protected:
   vtkDisplacementMapFilter();
-  ~vtkDisplacementMapFilter() override = default;
+  ~vtkDisplacementMapFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -244,6 +246,12 @@ protected:
   vtkDataArray* NonFiniteScanArray = nullptr; // compared, never dereferenced
   int NonFiniteScanComponent = -1;
   vtkIdType NonFiniteCount = 0;
+
+  // What depends on the input alone (seam groups, point-to-polygon links, Exact's unit
+  // normals), kept while the input's points, polygons and normals do not change: moving a
+  // Scale slider or swapping the height map does not rebuild it.
+  struct MeshCache;
+  std::unique_ptr<MeshCache> Cache;
 
 private:
   vtkDisplacementMapFilter(const vtkDisplacementMapFilter&) = delete;

@@ -6,6 +6,7 @@
 
 #include "vtkDisplacementMapFilter.h"
 
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
@@ -413,6 +414,102 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
   }
   // Back to every core (VTK 9.1 keeps 1 thread on Initialize(0) after Initialize(1)).
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// The filter keeps what depends on the input mesh alone (seam groups, links) between
+// executions. Whatever changes after a first execution (Scale, points, texture coordinates,
+// normals, connectivity, in place or by new objects), the output must be, to the bit, that of a
+// fresh filter; and each change must matter (the output moves), so that a stale cache would show.
+TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  const int U = 48, V = 24;
+  auto same = [](vtkPolyData* a, vtkPolyData* b)
+  {
+    return SameBits(a->GetPoints()->GetData(), b->GetPoints()->GetData()) &&
+      SameBits(a->GetPointData()->GetNormals(), b->GetPointData()->GetNormals()) &&
+      SameBits(a->GetPointData()->GetArray("Tangents"), b->GetPointData()->GetArray("Tangents"));
+  };
+  for (int mode : AllModes)
+  {
+    for (bool releaseData : { false, true })
+    {
+      auto mesh = MakeMesh(s, U, V, false, true);
+      vtkNew<vtkDisplacementMapFilter> f;
+      f->SetInputData(0, mesh);
+      f->SetInputData(1, image);
+      f->SetNormalMode(mode);
+      f->SetMidlevel(0.5);
+      f->SetReleaseDataFlag(releaseData);
+      auto check = [&](double scale, const char* what)
+      {
+        auto before = vtkSmartPointer<vtkPolyData>::New();
+        if (f->GetOutput()->GetPoints())
+        {
+          before->DeepCopy(f->GetOutput());
+        }
+        f->SetScale(scale);
+        f->Update();
+        auto fresh = Displace(mesh, image, mode, scale, 0.5);
+        EXPECT_TRUE(same(f->GetOutput(), fresh)) << what << ", mode " << mode;
+        if (before->GetPoints())
+        {
+          EXPECT_FALSE(same(before, fresh)) << what << " changed nothing, mode " << mode;
+        }
+      };
+      check(0.1, "first execution");
+      check(0.2, "Scale");
+
+      // Points moved in place: one seam duplicate pulled off its twin (the groups change).
+      vtkDataArray* pts = mesh->GetPoints()->GetData();
+      pts->SetComponent(5 * (U + 1) + U, 2, pts->GetComponent(5 * (U + 1) + U, 2) + 0.05);
+      pts->Modified();
+      check(0.2, "points in place");
+
+      vtkDataArray* tc = mesh->GetPointData()->GetTCoords();
+      for (vtkIdType i = 0; i < tc->GetNumberOfTuples(); ++i)
+      {
+        tc->SetComponent(i, 0, tc->GetComponent(i, 0) + 0.01);
+      }
+      tc->Modified();
+      check(0.2, "texture coordinates in place");
+
+      vtkDataArray* nrm = mesh->GetPointData()->GetNormals();
+      for (vtkIdType i = 0; i < nrm->GetNumberOfTuples(); i += 7)
+      {
+        nrm->SetComponent(i, 1, nrm->GetComponent(i, 1) + 0.01);
+      }
+      nrm->Modified();
+      check(0.2, "normals in place");
+
+      // Connectivity changed in place: the seam closed (polygons use the first column
+      // instead of its duplicates), so the links and the boundary change.
+      vtkDataArray* conn = mesh->GetPolys()->GetConnectivityArray();
+      for (vtkIdType k = 0; k < conn->GetNumberOfValues(); ++k)
+      {
+        const vtkIdType id = static_cast<vtkIdType>(conn->GetComponent(k, 0));
+        if (id % (U + 1) == U)
+        {
+          conn->SetComponent(k, 0, static_cast<double>(id - U));
+        }
+      }
+      // (vtkCellArray's MTime does not include its arrays': the pipeline needs both.)
+      conn->Modified();
+      mesh->GetPolys()->Modified();
+      check(0.2, "connectivity in place");
+
+      // New objects in the same input: points and polygons of another mesh.
+      auto other = MakeMesh(s, U, V, false, true);
+      vtkNew<vtkPoints> newPoints;
+      newPoints->DeepCopy(other->GetPoints());
+      mesh->SetPoints(newPoints);
+      vtkNew<vtkCellArray> newPolys;
+      newPolys->DeepCopy(other->GetPolys());
+      mesh->SetPolys(newPolys);
+      check(0.3, "new points and polygons");
+    }
+  }
 }
 
 // Scale 0 changes nothing, to the bit (points in every mode; normals and tangents in the
