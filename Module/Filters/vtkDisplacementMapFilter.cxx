@@ -729,8 +729,7 @@ inline R ToReal(double v)
 }
 
 // The block loops are also compiled for AVX2 and that copy runs where the processor has it
-// (vtkSurfaceDetailVectorize.h: the same bits either way).
-using vtkSurfaceDetailVectorize::HaveAVX2;
+// (vtkSurfaceDetailVectorize::RunWidest: the same bits either way).
 
 // Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
 // held as structure of arrays: the height samples and the fits (gathers) run point by point,
@@ -749,22 +748,11 @@ struct DisplaceWorker
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    if (HaveAVX2())
-    {
-      this->RunAVX2(begin, end);
-    }
-    else
-    {
-      this->Run(begin, end);
-    }
+    vtkSurfaceDetailVectorize::RunWidest(*this, begin, end);
   }
 
-  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
-  {
-    this->Run(begin, end);
-  }
-
-  // Everything it calls for the block is inlined into it, so that RunAVX2 compiles it all.
+  // Everything it calls for the block is inlined into it, so that the AVX2 build compiles
+  // it all.
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     const Context<R>& c = this->C;
@@ -1116,19 +1104,7 @@ struct MeshPolygonNormalWorker
   // Each polygon's normal, once (in AVX2 where the processor has it, as pass 1).
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    if (HaveAVX2())
-    {
-      this->RunAVX2(begin, end);
-    }
-    else
-    {
-      this->Run(begin, end);
-    }
-  }
-
-  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
-  {
-    this->Run(begin, end);
+    vtkSurfaceDetailVectorize::RunWidest(*this, begin, end);
   }
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
@@ -1149,19 +1125,7 @@ struct MeshPointNormalWorker
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    if (HaveAVX2())
-    {
-      this->RunAVX2(begin, end);
-    }
-    else
-    {
-      this->Run(begin, end);
-    }
-  }
-
-  SURFACEDETAIL_TARGET_AVX2 void RunAVX2(vtkIdType begin, vtkIdType end) const
-  {
-    this->Run(begin, end);
+    vtkSurfaceDetailVectorize::RunWidest(*this, begin, end);
   }
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const

@@ -13,14 +13,16 @@
  * - SURFACEDETAIL_WIDE_VECTORS on a plain (non-template, non-member) function: the loader
  *   picks the copy (GCC/clang `target_clones`; clang does not take it on templates).
  * - SURFACEDETAIL_TARGET_AVX2 on a function that a caller runs only when
- *   vtkSurfaceDetailVectorize::HaveAVX2() says so: for members of class templates, where
- *   `target_clones` is not available.
+ *   vtkSurfaceDetailVectorize::HaveAVX2() says so: for templates, where `target_clones` is
+ *   not available. RunWidest() does that for a vtkSMPTools worker.
  *
  * Elsewhere (other compilers or processors) both macros are empty and HaveAVX2() is false.
  * Shared by the filters of this module; not installed.
  */
 #ifndef vtkSurfaceDetailVectorize_h
 #define vtkSurfaceDetailVectorize_h
+
+#include "vtkType.h"
 
 #if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
 #define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
@@ -45,6 +47,29 @@ inline bool HaveAVX2()
 #else
   return false;
 #endif
+}
+
+/// worker.Run(begin, end) in the AVX2 build (see RunWidest).
+template <typename Worker>
+SURFACEDETAIL_TARGET_AVX2 void RunAVX2(const Worker& worker, vtkIdType begin, vtkIdType end)
+{
+  worker.Run(begin, end);
+}
+
+/// For a vtkSMPTools worker's operator(): runs worker.Run(begin, end) in its AVX2 build where
+/// the processor has it, else in the baseline one. Run must be VTK_ALWAYS_INLINE (and what
+/// it calls inlined too) so that the AVX2 build compiles all of it.
+template <typename Worker>
+void RunWidest(const Worker& worker, vtkIdType begin, vtkIdType end)
+{
+  if (HaveAVX2())
+  {
+    RunAVX2(worker, begin, end);
+  }
+  else
+  {
+    worker.Run(begin, end);
+  }
 }
 } // namespace vtkSurfaceDetailVectorize
 
