@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMemory.h"
+#include "vtkSurfaceDetailVectorize.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
@@ -1366,10 +1367,247 @@ private:
 
 // Fans larger than this (poles) go the general way.
 constexpr int MaxFastFan = 32;
+
+// Whether the triangles prev[a] -> v -> next[a] (a < k) at a vertex v form one run (one
+// chain or one closed fan) in which each edge at v joins exactly two triangles or bounds the
+// run: the prev values are distinct, so are the next values, and the links a -> b where
+// next[a] == prev[b] chain all k triangles. IsOneRun takes the links (-1: none) and which
+// triangles have a link to them; the functions below find them.
+VTK_ALWAYS_INLINE bool IsOneRun(const std::int32_t* link, std::uint32_t hasIn, int k)
+{
+  const std::uint32_t noIn = ~hasIn & (k == 32 ? ~0u : (1u << k) - 1u);
+  if ((noIn & (noIn - 1u)) != 0)
+  {
+    return false; // more than one run
+  }
+  int start = 0;
+  while (noIn != 0 && !((noIn >> start) & 1u))
+  {
+    ++start;
+  }
+  // With distinct prev and next values the links are one-to-one, so k - 1 steps from the
+  // start that neither end nor come back visit every triangle.
+  for (int c = 1, cur = start; c < k; ++c)
+  {
+    cur = link[cur];
+    if (cur < 0 || cur == start)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Larger fans: the triangle b whose prev[b] is next[a] is found through a small hash table
+// of prev values (a quadratic scan mispredicts).
+VTK_ALWAYS_INLINE bool LargeFanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
+{
+  constexpr int TableBits = 6;
+  static_assert(MaxFastFan <= (1 << TableBits) / 2, "table at most half full");
+  unsigned char table[1 << TableBits];
+  std::memset(table, 0xff, sizeof(table));
+  auto slot = [](std::int32_t x)
+  { return (static_cast<std::uint32_t>(x) * 0x9e3779b1u) >> (32 - TableBits); };
+  for (int b = 0; b < k; ++b)
+  {
+    std::uint32_t h = slot(prev[b]);
+    for (; table[h] != 0xff; h = (h + 1) & ((1u << TableBits) - 1u))
+    {
+      if (prev[table[h]] == prev[b])
+      {
+        return false; // two triangles run the same way along an edge
+      }
+    }
+    table[h] = static_cast<unsigned char>(b);
+  }
+  std::int32_t link[MaxFastFan];
+  std::uint32_t hasIn = 0;
+  for (int a = 0; a < k; ++a)
+  {
+    int l = -1;
+    for (std::uint32_t h = slot(next[a]); table[h] != 0xff; h = (h + 1) & ((1u << TableBits) - 1u))
+    {
+      if (prev[table[h]] == next[a])
+      {
+        l = table[h];
+        break;
+      }
+    }
+    if (l >= 0 && ((hasIn >> l) & 1u))
+    {
+      return false;
+    }
+    link[a] = l;
+    hasIn |= l >= 0 ? 1u << l : 0u;
+  }
+  return IsOneRun(link, hasIn, k);
+}
+
+// Fans up to 8 triangles, in the AVX2 build: the prev and next values in 8 lanes, compared
+// with every rotation of each other (no hash table, no branch per pair). Lanes past k hold
+// distinct negative values, which equal no point id and no other padding.
+#if (defined(__x86_64__) || defined(__i386__)) &&                                                  \
+  (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 12))
+#define SURFACEDETAIL_MIKK_LANES 1
+using Lanes8 = std::int32_t __attribute__((vector_size(32)));
+// Vectors go by reference only: by value, their calling convention would differ between
+// the baseline and the AVX2 build (and GCC warns about it).
+
+// r = x rotated: r[a] = x[a + Rotation] (lanes mod 8).
+template <int Rotation>
+VTK_ALWAYS_INLINE void Rotate(const Lanes8& x, Lanes8& r)
+{
+  r = __builtin_shufflevector(x, x, Rotation & 7, (Rotation + 1) & 7, (Rotation + 2) & 7,
+    (Rotation + 3) & 7, (Rotation + 4) & 7, (Rotation + 5) & 7, (Rotation + 6) & 7,
+    (Rotation + 7) & 7);
+}
+
+// Lanes of x equal to some other lane of x, or of y to some other lane of y (rotations by
+// 1 to 4 meet every pair).
+template <int Rotation>
+VTK_ALWAYS_INLINE void Duplicates(const Lanes8& x, const Lanes8& y, Lanes8& dup)
+{
+  Lanes8 rx, ry;
+  Rotate<Rotation>(x, rx);
+  Rotate<Rotation>(y, ry);
+  dup |= (x == rx) | (y == ry);
+}
+
+// Where next[a] == prev[a + Rotation]: a links to a + Rotation, which has a link to it.
+template <int Rotation>
+VTK_ALWAYS_INLINE void Links(const Lanes8& nx, const Lanes8& pv, Lanes8& link, Lanes8& in)
+{
+  static constexpr Lanes8 Lane = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  Lanes8 r, back;
+  Rotate<Rotation>(pv, r);
+  const Lanes8 eq = nx == r;
+  const Lanes8 to = (Lane + Rotation) & 7;
+  link = (link & ~eq) | (to & eq);
+  Rotate<8 - Rotation>(eq, back);
+  in |= back;
+}
+
+VTK_ALWAYS_INLINE bool SmallFanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
+{
+  static constexpr Lanes8 Lane = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  Lanes8 nx, pv;
+  std::memcpy(&nx, next, sizeof(nx));
+  std::memcpy(&pv, prev, sizeof(pv));
+  const Lanes8 pad = Lane >= k;
+  nx = (nx & ~pad) | (pad & (-1 - Lane));
+  pv = (pv & ~pad) | (pad & (-9 - Lane));
+  Lanes8 dup = Lanes8{};
+  Duplicates<1>(nx, pv, dup);
+  Duplicates<2>(nx, pv, dup);
+  Duplicates<3>(nx, pv, dup);
+  Duplicates<4>(nx, pv, dup);
+  std::uint64_t any[4];
+  std::memcpy(any, &dup, sizeof(any));
+  if (((any[0] | any[1]) | (any[2] | any[3])) != 0)
+  {
+    return false; // two triangles run the same way along an edge
+  }
+  Lanes8 link = Lanes8{} - 1, in = Lanes8{};
+  Links<0>(nx, pv, link, in);
+  Links<1>(nx, pv, link, in);
+  Links<2>(nx, pv, link, in);
+  Links<3>(nx, pv, link, in);
+  Links<4>(nx, pv, link, in);
+  Links<5>(nx, pv, link, in);
+  Links<6>(nx, pv, link, in);
+  Links<7>(nx, pv, link, in);
+  std::int32_t links[8], ins[8];
+  std::memcpy(links, &link, sizeof(links));
+  std::memcpy(ins, &in, sizeof(ins));
+  std::uint32_t hasIn = 0;
+  for (int a = 0; a < 8; ++a)
+  {
+    hasIn |= static_cast<std::uint32_t>(ins[a] & 1) << a;
+  }
+  return IsOneRun(links, hasIn, k);
+}
+#else
+#define SURFACEDETAIL_MIKK_LANES 0
+#endif
+
+// Wide: in the AVX2 build (the lanes' code built for the baseline costs more than the hash).
+template <bool Wide>
+VTK_ALWAYS_INLINE bool FanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
+{
+#if SURFACEDETAIL_MIKK_LANES
+  if constexpr (Wide)
+  {
+    if (k <= 8)
+    {
+      return SmallFanIsOneRun(next, prev, k);
+    }
+  }
+#endif
+  return LargeFanIsOneRun(next, prev, k);
+}
+
 // Margins of the fast path's checks: squared sine of ~0.06 degrees for projections onto
 // the tangent plane, cosine of 89.94 degrees for directions within a quarter turn.
 constexpr double FastProjection2 = 1e-6;
 constexpr double FastCos = 1e-3;
+
+// The fans of a run of vertices are done in blocks, in three phases: gathering and checking
+// each fan, weighing all the block's corners in one loop of plain arithmetic on columns
+// (which the compiler vectorises), and summing each fan.
+struct FanBlock
+{
+  static constexpr int MaxVertices = 64;
+  static constexpr int MaxCorners = 256;
+  static_assert(MaxCorners >= MaxFastFan, "a fan fits in a block");
+  int NumberOfVertices = 0;
+  int NumberOfCorners = 0;
+  std::int32_t Vertex[MaxVertices];
+  float Handedness[MaxVertices];
+  int First[MaxVertices + 1];
+  std::int32_t Triangle[MaxCorners];
+  // Per corner: its vertex's unit normal, its two edges from the vertex, the triangle's
+  // dP/ds and dP/dt directions, the weight of dP/ds.
+  alignas(32) double N[3][MaxCorners];
+  alignas(32) double E1[3][MaxCorners];
+  alignas(32) double E2[3][MaxCorners];
+  alignas(32) double Os[3][MaxCorners];
+  alignas(32) double Ot[3][MaxCorners];
+  alignas(32) double Weight[MaxCorners];
+};
+
+// Each corner's angle, projected onto the tangent plane, over the length of its dP/ds
+// projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
+// dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
+VTK_ALWAYS_INLINE void WeighCorners(FanBlock& fb)
+{
+  const int nc = fb.NumberOfCorners;
+  const double* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
+  const double* __restrict e1x = fb.E1[0], * __restrict e1y = fb.E1[1], * __restrict e1z = fb.E1[2];
+  const double* __restrict e2x = fb.E2[0], * __restrict e2y = fb.E2[1], * __restrict e2z = fb.E2[2];
+  const double* __restrict osx = fb.Os[0], * __restrict osy = fb.Os[1], * __restrict osz = fb.Os[2];
+  double* __restrict weight = fb.Weight;
+  for (int c = 0; c < nc; ++c)
+  {
+    const double n1 = e1x[c] * nx[c] + e1y[c] * ny[c] + e1z[c] * nz[c];
+    const double n2 = e2x[c] * nx[c] + e2y[c] * ny[c] + e2z[c] * nz[c];
+    // The general path normalises a projected edge only when some component is above
+    // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+    // margin of 4), so shorter projections (an edge along the normal) go that way.
+    const double pl1 = e1x[c] * e1x[c] + e1y[c] * e1y[c] + e1z[c] * e1z[c] - n1 * n1;
+    const double pl2 = e2x[c] * e2x[c] + e2y[c] * e2y[c] + e2z[c] * e2z[c] - n2 * n2;
+    const double x = e1y[c] * e2z[c] - e1z[c] * e2y[c];
+    const double y = e1z[c] * e2x[c] - e1x[c] * e2z[c];
+    const double z = e1x[c] * e2y[c] - e1y[c] * e2x[c];
+    const double angle = FastAngle(std::abs(x * nx[c] + y * ny[c] + z * nz[c]),
+      e1x[c] * e2x[c] + e1y[c] * e2y[c] + e1z[c] * e2z[c] - n1 * n2);
+    const double on = osx[c] * nx[c] + osy[c] * ny[c] + osz[c] * nz[c];
+    // A failed check makes the weight NaN, which fails the fan's final test.
+    weight[c] =
+      (std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? angle
+                                                     : std::numeric_limits<double>::quiet_NaN()) /
+      std::sqrt(osx[c] * osx[c] + osy[c] * osy[c] + osz[c] * osz[c] - on * on);
+  }
+}
 
 template <typename PT, typename NT, typename TT>
 class FastMikk
@@ -1779,17 +2017,14 @@ private:
         {
           return;
         }
-        for (std::int32_t v = std::int32_t(b); v < std::int32_t(e); ++v)
+        const bool done = vtkSurfaceDetailVectorize::HaveAVX2()
+          ? FansAVX2(
+              *this, std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out)
+          : this->Fans<false>(
+              std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out);
+        if (!done)
         {
-          if (this->Welded && weld[v] != v)
-          {
-            continue; // a copy of a smaller point, filled below
-          }
-          if (!this->Vertex(v, w, dir, orient, first, corners, out + 4 * std::size_t(v)))
-          {
-            fail.store(true, std::memory_order_relaxed);
-            return;
-          }
+          fail.store(true, std::memory_order_relaxed);
         }
       });
     if (fail)
@@ -1840,7 +2075,7 @@ private:
     return true;
   }
 
-  V3 UnitNormal(std::int32_t v) const
+  VTK_ALWAYS_INLINE V3 UnitNormal(std::int32_t v) const
   {
     V3 n{ double(this->N[3 * std::size_t(v)]), double(this->N[3 * std::size_t(v) + 1]),
       double(this->N[3 * std::size_t(v) + 2]) };
@@ -1852,26 +2087,76 @@ private:
     return n;
   }
 
-  // One vertex: false if it is not a simple fan. Loops over the fan are kept apart and
-  // free of early exits (checks are accumulated) so that the compiler can vectorise them.
-  bool Vertex(std::int32_t v, const std::int32_t* w, const std::array<float, 6>* dir,
+  // The fans in the AVX2 build (see vtkSurfaceDetailVectorize.h): the corners' arithmetic
+  // four to a vector, the small fans' links found in eight lanes; the same results bit
+  // for bit (no fused multiply-add, and sums stay in order).
+  SURFACEDETAIL_TARGET_AVX2 static bool FansAVX2(const FastMikk& self, std::int32_t b,
+    std::int32_t e, const std::int32_t* w, const std::array<float, 6>* dir,
     const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
-    float* out) const
+    const std::int32_t* weld, float* out)
   {
-    const int k = first[v + 1] - first[v];
+    return self.Fans<true>(b, e, w, dir, orient, first, corners, weld, out);
+  }
+
+  template <bool Wide>
+  VTK_ALWAYS_INLINE bool Fans(std::int32_t b, std::int32_t e, const std::int32_t* w,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, const std::int32_t* weld, float* out) const
+  {
+    std::unique_ptr<FanBlock> block(new FanBlock);
+    FanBlock& fb = *block;
+    for (std::int32_t v = b; v < e;)
+    {
+      fb.NumberOfVertices = 0;
+      fb.NumberOfCorners = 0;
+      fb.First[0] = 0;
+      for (; v < e && fb.NumberOfVertices < FanBlock::MaxVertices; ++v)
+      {
+        if (this->Welded && weld[v] != v)
+        {
+          continue; // a copy of a smaller point, filled later
+        }
+        const int k = first[v + 1] - first[v];
+        if (k > FanBlock::MaxCorners - fb.NumberOfCorners)
+        {
+          break;
+        }
+        if (!this->GatherFan<Wide>(
+              v, k, w, dir, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        {
+          return false;
+        }
+      }
+      WeighCorners(fb);
+      if (!SumFans(fb, out))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Checks the fan of v and appends its corners to the block (a vertex that no triangle
+  // uses gets the default frame at once).
+  template <bool Wide>
+  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* w,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, FanBlock& fb, float* out) const
+  {
     const V3 n = this->UnitNormal(v);
     if (k == 0)
     {
       FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
       return true;
     }
-    if (k > MaxFastFan || !(std::abs(Dot(n, n) - 1.0) < 1e-6))
+    if (!(std::abs(Dot(n, n) - 1.0) < 1e-6))
     {
       return false;
     }
-    std::int32_t tri[MaxFastFan], next[MaxFastFan], prev[MaxFastFan];
+    std::int32_t next[MaxFastFan], prev[MaxFastFan];
     const std::int32_t* list = corners + first[v];
     const unsigned char o = orient[list[0] >> 2];
+    std::int32_t* tri = fb.Triangle + fb.NumberOfCorners;
     int same = 1;
     for (int a = 0; a < k; ++a)
     {
@@ -1882,154 +2167,79 @@ private:
       prev[a] = w[3 * t + prevCorner[i]];
       same &= orient[t] == o;
     }
-    if (!same)
+    // Each edge at v must join exactly two triangles or bound the fan (then the general
+    // path's greedy pairing finds the same links), and the links must chain all the
+    // triangles into one run.
+    if (!same || !FanIsOneRun<Wide>(next, prev, k))
     {
       return false;
     }
-    // Links across the edges at v; each edge must join exactly two triangles or bound the
-    // fan (then the general path's greedy pairing finds the same links), and the links
-    // must chain all the triangles into one run. The triangle b whose prev[b] is next[a]
-    // is found through a small hash table of prev values: a quadratic scan mispredicts, or
-    // when vectorised stalls on the store forwarding of the just written prev[].
-    constexpr int TableBits = 6;
-    static_assert(MaxFastFan <= (1 << TableBits) / 2, "table at most half full");
-    unsigned char table[1 << TableBits];
-    std::memset(table, 0xff, sizeof(table));
-    auto slot = [](std::int32_t x)
-    { return (static_cast<std::uint32_t>(x) * 0x9e3779b1u) >> (32 - TableBits); };
-    for (int b = 0; b < k; ++b)
-    {
-      std::uint32_t h = slot(prev[b]);
-      for (; table[h] != 0xff; h = (h + 1) & ((1u << TableBits) - 1u))
-      {
-        if (prev[table[h]] == prev[b])
-        {
-          return false; // two triangles run the same way along an edge
-        }
-      }
-      table[h] = static_cast<unsigned char>(b);
-    }
-    int link[MaxFastFan];
-    std::uint32_t hasIn = 0;
-    for (int a = 0; a < k; ++a)
-    {
-      int l = -1;
-      for (std::uint32_t h = slot(next[a]); table[h] != 0xff;
-           h = (h + 1) & ((1u << TableBits) - 1u))
-      {
-        if (prev[table[h]] == next[a])
-        {
-          l = table[h];
-          break;
-        }
-      }
-      if (l >= 0 && ((hasIn >> l) & 1u))
-      {
-        return false;
-      }
-      link[a] = l;
-      hasIn |= l >= 0 ? 1u << l : 0u;
-    }
-    const std::uint32_t noIn = ~hasIn & (k == 32 ? ~0u : (1u << k) - 1u);
-    if ((noIn & (noIn - 1u)) != 0)
-    {
-      return false; // more than one run
-    }
-    int start = 0;
-    while (noIn != 0 && !((noIn >> start) & 1u))
-    {
-      ++start;
-    }
-    // The fan in chain order, and its k + 1 edges: edge s comes before triangle s, edge
-    // s + 1 after it.
-    int chain[MaxFastFan];
-    chain[0] = start;
-    for (int c = 1; c < k; ++c)
-    {
-      chain[c] = link[chain[c - 1]];
-      if (chain[c] < 0 || chain[c] == start)
-      {
-        return false;
-      }
-    }
-    // An orthonormal basis of the tangent plane (Duff et al., "Building an orthonormal
-    // basis, revisited", 2017): projections become two dot products.
-    const double sgn = std::copysign(1.0, n[2]);
-    const double ia = -1.0 / (sgn + n[2]);
-    const double bb = n[0] * n[1] * ia;
-    const double b1[3] = { 1.0 + sgn * n[0] * n[0] * ia, sgn * bb, -sgn * n[0] };
-    const double b2[3] = { bb, sgn + n[1] * n[1] * ia, -n[1] };
     const double pv[3] = { double(this->P[3 * std::size_t(v)]),
       double(this->P[3 * std::size_t(v) + 1]), double(this->P[3 * std::size_t(v) + 2]) };
-    double ex[MaxFastFan + 1], ey[MaxFastFan + 1];
-    int ok = 1;
-    for (int s = 0; s <= k; ++s)
+    for (int a = 0, c = fb.NumberOfCorners; a < k; ++a, ++c)
     {
-      const std::int32_t x = s == 0 ? prev[chain[0]] : next[chain[s - 1]];
-      const double d[3] = { double(this->P[3 * std::size_t(x)]) - pv[0],
-        double(this->P[3 * std::size_t(x) + 1]) - pv[1],
-        double(this->P[3 * std::size_t(x) + 2]) - pv[2] };
-      ex[s] = d[0] * b1[0] + d[1] * b1[1] + d[2] * b1[2];
-      ey[s] = d[0] * b2[0] + d[1] * b2[1] + d[2] * b2[2];
-      // The general path normalises a projected edge only when some component is above
-      // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
-      // margin of 4), so shorter projections (an edge along the normal) go that way.
-      ok &= ex[s] * ex[s] + ey[s] * ey[s] > 12.0 * FLT_MIN * FLT_MIN;
-    }
-    // Projections onto the tangent plane through dot products with n: for a direction d,
-    // |proj d|^2 = d.d - (d.n)^2, and proj d . r = d . r for r in the plane; the average
-    // of the projections is the projection of the average.
-    // At the default threshold MikkTSpace separates only opposite directions: with every
-    // direction within a quarter turn of the first (with a margin), no two are opposite.
-    V3 r[2];
-    {
-      const auto& d = dir[tri[chain[0]]];
-      for (int i = 0; i < 2; ++i)
+      const std::size_t x1 = 3 * std::size_t(next[a]), x2 = 3 * std::size_t(prev[a]);
+      const auto& d = dir[tri[a]];
+      for (int i = 0; i < 3; ++i)
       {
-        const V3 x{ d[3 * i], d[3 * i + 1], d[3 * i + 2] };
-        r[i] = Sub(x, Scale(Dot(x, n), n));
-        const double len2 = Dot(r[i], r[i]);
-        if (!(len2 > FastProjection2))
-        {
-          return false;
-        }
-        r[i] = Scale(1.0 / std::sqrt(len2), r[i]);
+        fb.N[i][c] = n[i];
+        fb.E1[i][c] = double(this->P[x1 + i]) - pv[i];
+        fb.E2[i][c] = double(this->P[x2 + i]) - pv[i];
+        fb.Os[i][c] = d[i];
+        fb.Ot[i][c] = d[3 + i];
       }
     }
-    double angle[MaxFastFan];
-    for (int s = 0; s < k; ++s)
-    {
-      angle[s] = FastAngle(
-        std::abs(ex[s] * ey[s + 1] - ey[s] * ex[s + 1]), ex[s] * ex[s + 1] + ey[s] * ey[s + 1]);
-    }
-    double sum[3] = { 0.0, 0.0, 0.0 }, sumN = 0.0;
-    for (int s = 0; s < k; ++s)
-    {
-      const auto& d = dir[tri[chain[s]]];
-      const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
-      const double on = os[0] * n[0] + os[1] * n[1] + os[2] * n[2];
-      const double po2 = os[0] * os[0] + os[1] * os[1] + os[2] * os[2] - on * on;
-      ok &= os[0] * r[0][0] + os[1] * r[0][1] + os[2] * r[0][2] > FastCos;
-      ok &= ot[0] * r[1][0] + ot[1] * r[1][1] + ot[2] * r[1][2] > FastCos;
-      const double weight = angle[s] / std::sqrt(po2);
-      sum[0] += weight * os[0];
-      sum[1] += weight * os[1];
-      sum[2] += weight * os[2];
-      sumN += weight * on;
-    }
-    const V3 t{ sum[0] - sumN * n[0], sum[1] - sumN * n[1], sum[2] - sumN * n[2] };
-    const double len2 = Dot(t, t);
-    if (!ok || !(len2 > 1e-12 && std::isfinite(len2)))
-    {
-      return false;
-    }
-    const double inv = 1.0 / std::sqrt(len2);
-    for (int c = 0; c < 3; ++c)
-    {
-      out[c] = static_cast<float>(inv * t[c]);
-    }
-    out[3] = o != 0 ? 1.0f : -1.0f;
+    fb.Handedness[fb.NumberOfVertices] = o != 0 ? 1.0f : -1.0f;
+    fb.Vertex[fb.NumberOfVertices++] = v;
+    fb.NumberOfCorners += k;
+    fb.First[fb.NumberOfVertices] = fb.NumberOfCorners;
     return true;
+  }
+
+  // Per vertex, the weighted sum of dP/ds projected (the projection of the sum). At the
+  // default threshold MikkTSpace separates only opposite directions: with every direction
+  // within a quarter turn of the first corner's (with a margin), no two are.
+  VTK_ALWAYS_INLINE static bool SumFans(const FanBlock& fb, float* out)
+  {
+    int ok = 1;
+    for (int j = 0; j < fb.NumberOfVertices; ++j)
+    {
+      const int c0 = fb.First[j], c1 = fb.First[j + 1];
+      const V3 n{ fb.N[0][c0], fb.N[1][c0], fb.N[2][c0] };
+      V3 r[2];
+      for (int i = 0; i < 2; ++i)
+      {
+        const double(&d)[3][FanBlock::MaxCorners] = i == 0 ? fb.Os : fb.Ot;
+        const V3 x{ d[0][c0], d[1][c0], d[2][c0] };
+        r[i] = Sub(x, Scale(Dot(x, n), n));
+        const double len2 = Dot(r[i], r[i]);
+        ok &= len2 > FastProjection2;
+        r[i] = Scale(1.0 / std::sqrt(len2), r[i]);
+      }
+      double sum[3] = { 0.0, 0.0, 0.0 };
+      for (int c = c0; c < c1; ++c)
+      {
+        const double os[3] = { fb.Os[0][c], fb.Os[1][c], fb.Os[2][c] };
+        const double ot[3] = { fb.Ot[0][c], fb.Ot[1][c], fb.Ot[2][c] };
+        ok &= os[0] * r[0][0] + os[1] * r[0][1] + os[2] * r[0][2] > FastCos;
+        ok &= ot[0] * r[1][0] + ot[1] * r[1][1] + ot[2] * r[1][2] > FastCos;
+        sum[0] += fb.Weight[c] * os[0];
+        sum[1] += fb.Weight[c] * os[1];
+        sum[2] += fb.Weight[c] * os[2];
+      }
+      const double sumN = sum[0] * n[0] + sum[1] * n[1] + sum[2] * n[2];
+      const V3 t{ sum[0] - sumN * n[0], sum[1] - sumN * n[1], sum[2] - sumN * n[2] };
+      const double len2 = Dot(t, t);
+      ok &= len2 > 1e-12 && std::isfinite(len2);
+      const double inv = 1.0 / std::sqrt(len2);
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      for (int c = 0; c < 3; ++c)
+      {
+        o[c] = static_cast<float>(inv * t[c]);
+      }
+      o[3] = fb.Handedness[j];
+    }
+    return ok != 0;
   }
 };
 
