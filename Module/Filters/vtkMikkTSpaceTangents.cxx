@@ -1487,12 +1487,22 @@ VTK_ALWAYS_INLINE void Links(const Lanes8& nx, const Lanes8& pv, Lanes8& link, L
   in |= back;
 }
 
-VTK_ALWAYS_INLINE bool SmallFanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
+// The next and prev values are built in the vectors' lanes and stored from there (a vector
+// loaded from just stored scalars would wait for them: no store forwarding).
+VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
+  const std::int32_t* list, const std::int32_t* w, int k, std::int32_t* next, std::int32_t* prev)
 {
   static constexpr Lanes8 Lane = { 0, 1, 2, 3, 4, 5, 6, 7 };
   Lanes8 nx, pv;
-  std::memcpy(&nx, next, sizeof(nx));
-  std::memcpy(&pv, prev, sizeof(pv));
+  for (int a = 0; a < 8; ++a)
+  {
+    const std::int32_t c = list[a < k ? a : k - 1];
+    const std::int32_t t = c >> 2, i = c & 3;
+    nx[a] = w[3 * t + (i == 2 ? 0 : i + 1)];
+    pv[a] = w[3 * t + (i == 0 ? 2 : i - 1)];
+  }
+  std::memcpy(next, &nx, sizeof(nx));
+  std::memcpy(prev, &pv, sizeof(pv));
   const Lanes8 pad = Lane >= k;
   nx = (nx & ~pad) | (pad & (-1 - Lane));
   pv = (pv & ~pad) | (pad & (-9 - Lane));
@@ -1531,18 +1541,28 @@ VTK_ALWAYS_INLINE bool SmallFanIsOneRun(const std::int32_t* next, const std::int
 #endif
 
 // Wide: in the AVX2 build (the lanes' code built for the baseline costs more than the hash).
+// The fan's next and prev values (from its corner list) and whether it is one run; Wide:
+// in the AVX2 build (the lanes' code built for the baseline costs more than the hash).
 template <bool Wide>
-VTK_ALWAYS_INLINE bool FanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
+VTK_ALWAYS_INLINE bool FanIsOneRun(
+  const std::int32_t* list, const std::int32_t* w, int k, std::int32_t* next, std::int32_t* prev)
 {
 #if SURFACEDETAIL_MIKK_LANES
   if constexpr (Wide)
   {
     if (k <= 8)
     {
-      return SmallFanIsOneRun(next, prev, k);
+      return SmallFanIsOneRun(list, w, k, next, prev);
     }
   }
 #endif
+  for (int a = 0; a < k; ++a)
+  {
+    static constexpr int nextCorner[3] = { 1, 2, 0 }, prevCorner[3] = { 2, 0, 1 };
+    const std::int32_t t = list[a] >> 2, i = list[a] & 3;
+    next[a] = w[3 * t + nextCorner[i]];
+    prev[a] = w[3 * t + prevCorner[i]];
+  }
   return LargeFanIsOneRun(next, prev, k);
 }
 
@@ -1884,62 +1904,140 @@ private:
     vtkSMPTools::For(0, nTris,
       [&](vtkIdType b, vtkIdType e)
       {
-        for (vtkIdType t = b; t < e; ++t)
+        if (fail.load(std::memory_order_relaxed))
         {
-          if (offsets[t] != 3 * t || fail.load(std::memory_order_relaxed))
-          {
-            fail.store(true, std::memory_order_relaxed);
-            return;
-          }
-          std::int32_t pt[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            pt[k] = static_cast<std::int32_t>(conn[3 * t + k]);
-            w[3 * t + k] = this->Welded ? weld[pt[k]] : pt[k];
-            if (referenced)
-            {
-              referenced[pt[k]].store(1, std::memory_order_relaxed);
-            }
-          }
-          const V3 v1 = this->Position(pt[0]), v2 = this->Position(pt[1]),
-                   v3 = this->Position(pt[2]);
-          if (Equal(v1, v2) || Equal(v1, v3) || Equal(v2, v3))
-          {
-            fail.store(true, std::memory_order_relaxed);
-            return;
-          }
-          const auto t1 = this->TCoord(pt[0]), t2 = this->TCoord(pt[1]), t3 = this->TCoord(pt[2]);
-          const double t21x = t2[0] - t1[0], t21y = t2[1] - t1[1];
-          const double t31x = t3[0] - t1[0], t31y = t3[1] - t1[1];
-          const V3 d1 = Sub(v2, v1), d2 = Sub(v3, v1);
-          const double area2 = t21x * t31y - t21y * t31x;
-          const V3 os = Sub(Scale(t31y, d1), Scale(t21y, d2));
-          const V3 ot = Sub(Scale(t21x, d2), Scale(t31x, d1));
-          // The general path's tests (cancellation of dP/ds or dP/dt, usable derivatives),
-          // made stricter so that no square root or division is needed to pass them:
-          // (a + b)^2 <= 2 (a^2 + b^2), and a margin of 2 on the division-free ratios.
-          const double absArea = std::abs(area2);
-          const double l1 = Dot(d1, d1), l2 = Dot(d2, d2);
-          const double lenOs2 = Dot(os, os), lenOt2 = Dot(ot, ot);
-          constexpr double eps2 = 2.0 * CancellationEps * CancellationEps;
-          if (!NotZero(area2) || !(lenOs2 > eps2 * (t31y * t31y * l1 + t21y * t21y * l2)) ||
-            !(lenOt2 > eps2 * (t31x * t31x * l1 + t21x * t21x * l2)) ||
-            !(lenOs2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)) ||
-            !(lenOt2 > 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea)) ||
-            !(lenOs2 > 4.0 * FLT_MIN * FLT_MIN) || !(lenOt2 > 4.0 * FLT_MIN * FLT_MIN))
-          {
-            fail.store(true, std::memory_order_relaxed);
-            return;
-          }
-          const double lenOs = std::sqrt(lenOs2), lenOt = std::sqrt(lenOt2);
-          const double sign = area2 > 0.0 ? 1.0 : -1.0;
-          const double ss = sign / lenOs, st = sign / lenOt;
-          dir[t] = { float(ss * os[0]), float(ss * os[1]), float(ss * os[2]), float(st * ot[0]),
-            float(st * ot[1]), float(st * ot[2]) };
-          orient[t] = area2 > 0.0 ? 1 : 0;
+          return;
+        }
+        const bool done = vtkSurfaceDetailVectorize::HaveAVX2()
+          ? TrianglesAVX2(*this, b, e, offsets, conn, weld, referenced, w, dir, orient)
+          : this->TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+        if (!done)
+        {
+          fail.store(true, std::memory_order_relaxed);
         }
       });
     return !fail;
+  }
+
+  template <typename IdT>
+  SURFACEDETAIL_TARGET_AVX2 static bool TrianglesAVX2(const FastMikk& self, vtkIdType b,
+    vtkIdType e, const IdT* offsets, const IdT* conn, const std::int32_t* weld,
+    std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
+    unsigned char* orient)
+  {
+    return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+  }
+
+  // As the fans: blocks of triangles, their values gathered into columns, then one loop of
+  // plain arithmetic that the compiler vectorises (checks fold into a 0/1 flag).
+  template <typename IdT>
+  VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
+    const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
+    std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient) const
+  {
+    constexpr int Size = 128;
+    struct Columns
+    {
+      alignas(32) double X[9][Size]; // corner j's coordinate i at 3 j + i
+      alignas(32) double U[6][Size]; // corner j's texture coordinate i at 2 j + i
+      alignas(32) double Good[Size];
+      alignas(32) double Sign[Size];
+      alignas(32) float D[6][Size];
+    };
+    std::unique_ptr<Columns> columns(new Columns);
+    Columns& cb = *columns;
+    for (vtkIdType t0 = b; t0 < e; t0 += Size)
+    {
+      const int m = static_cast<int>(std::min<vtkIdType>(Size, e - t0));
+      for (int j = 0; j < m; ++j)
+      {
+        const vtkIdType t = t0 + j;
+        if (offsets[t] != 3 * t)
+        {
+          return false;
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          const std::int32_t p = static_cast<std::int32_t>(conn[3 * t + k]);
+          w[3 * t + k] = this->Welded ? weld[p] : p;
+          if (referenced)
+          {
+            referenced[p].store(1, std::memory_order_relaxed);
+          }
+          for (int i = 0; i < 3; ++i)
+          {
+            cb.X[3 * k + i][j] = double(this->P[3 * std::size_t(p) + i]);
+          }
+          const TT* tc = this->T + std::size_t(this->TcStride) * p;
+          cb.U[2 * k][j] = double(tc[0]);
+          cb.U[2 * k + 1][j] = double(tc[1]);
+        }
+      }
+      TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
+      for (int j = 0; j < m; ++j)
+      {
+        if (cb.Good[j] == 0.0)
+        {
+          return false;
+        }
+        const vtkIdType t = t0 + j;
+        dir[t] = { cb.D[0][j], cb.D[1][j], cb.D[2][j], cb.D[3][j], cb.D[4][j], cb.D[5][j] };
+        orient[t] = cb.Sign[j] > 0.0 ? 1 : 0;
+      }
+    }
+    return true;
+  }
+
+  template <int Size>
+  VTK_ALWAYS_INLINE static void TriangleColumns(const double (&x)[9][Size],
+    const double (&u)[6][Size], int m, double* __restrict good, double* __restrict sign,
+    float (&d)[6][Size])
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const double v1[3] = { x[0][j], x[1][j], x[2][j] };
+      const double v2[3] = { x[3][j], x[4][j], x[5][j] };
+      const double v3[3] = { x[6][j], x[7][j], x[8][j] };
+      // Two equal corners make a degenerate triangle.
+      double g = v1[0] != v2[0] ? 1.0 : (v1[1] != v2[1] ? 1.0 : (v1[2] != v2[2] ? 1.0 : 0.0));
+      g = v1[0] != v3[0] ? g : (v1[1] != v3[1] ? g : (v1[2] != v3[2] ? g : 0.0));
+      g = v2[0] != v3[0] ? g : (v2[1] != v3[1] ? g : (v2[2] != v3[2] ? g : 0.0));
+      const double t21x = u[2][j] - u[0][j], t21y = u[3][j] - u[1][j];
+      const double t31x = u[4][j] - u[0][j], t31y = u[5][j] - u[1][j];
+      const double d1[3] = { v2[0] - v1[0], v2[1] - v1[1], v2[2] - v1[2] };
+      const double d2[3] = { v3[0] - v1[0], v3[1] - v1[1], v3[2] - v1[2] };
+      const double area2 = t21x * t31y - t21y * t31x;
+      const double os[3] = { t31y * d1[0] - t21y * d2[0], t31y * d1[1] - t21y * d2[1],
+        t31y * d1[2] - t21y * d2[2] };
+      const double ot[3] = { t21x * d2[0] - t31x * d1[0], t21x * d2[1] - t31x * d1[1],
+        t21x * d2[2] - t31x * d1[2] };
+      // The general path's tests (cancellation of dP/ds or dP/dt, usable derivatives),
+      // made stricter so that no square root or division is needed to pass them:
+      // (a + b)^2 <= 2 (a^2 + b^2), and a margin of 2 on the division-free ratios.
+      const double absArea = std::abs(area2);
+      const double l1 = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
+      const double l2 = d2[0] * d2[0] + d2[1] * d2[1] + d2[2] * d2[2];
+      const double lenOs2 = os[0] * os[0] + os[1] * os[1] + os[2] * os[2];
+      const double lenOt2 = ot[0] * ot[0] + ot[1] * ot[1] + ot[2] * ot[2];
+      constexpr double eps2 = 2.0 * CancellationEps * CancellationEps;
+      const double floor2 = 4.0 * (FLT_MIN * absArea) * (FLT_MIN * absArea);
+      g = absArea > FLT_MIN ? g : 0.0;
+      g = lenOs2 > eps2 * (t31y * t31y * l1 + t21y * t21y * l2) ? g : 0.0;
+      g = lenOt2 > eps2 * (t31x * t31x * l1 + t21x * t21x * l2) ? g : 0.0;
+      g = lenOs2 > floor2 ? g : 0.0;
+      g = lenOt2 > floor2 ? g : 0.0;
+      g = lenOs2 > 4.0 * FLT_MIN * FLT_MIN ? g : 0.0;
+      g = lenOt2 > 4.0 * FLT_MIN * FLT_MIN ? g : 0.0;
+      good[j] = g;
+      const double s = area2 > 0.0 ? 1.0 : -1.0;
+      sign[j] = s;
+      const double ss = s / std::sqrt(lenOs2), st = s / std::sqrt(lenOt2);
+      for (int i = 0; i < 3; ++i)
+      {
+        d[i][j] = static_cast<float>(ss * os[i]);
+        d[3 + i][j] = static_cast<float>(st * ot[i]);
+      }
+    }
   }
 
   // Vertex -> its corners (4 * triangle + corner), each list in triangle order. Two tasks:
@@ -2160,17 +2258,14 @@ private:
     int same = 1;
     for (int a = 0; a < k; ++a)
     {
-      static constexpr int nextCorner[3] = { 1, 2, 0 }, prevCorner[3] = { 2, 0, 1 };
-      const std::int32_t t = list[a] >> 2, i = list[a] & 3;
+      const std::int32_t t = list[a] >> 2;
       tri[a] = t;
-      next[a] = w[3 * t + nextCorner[i]];
-      prev[a] = w[3 * t + prevCorner[i]];
       same &= orient[t] == o;
     }
     // Each edge at v must join exactly two triangles or bound the fan (then the general
     // path's greedy pairing finds the same links), and the links must chain all the
     // triangles into one run.
-    if (!same || !FanIsOneRun<Wide>(next, prev, k))
+    if (!same || !FanIsOneRun<Wide>(list, w, k, next, prev))
     {
       return false;
     }
