@@ -1571,8 +1571,8 @@ VTK_ALWAYS_INLINE bool FanIsOneRun(
 constexpr double FastProjection2 = 1e-6;
 constexpr double FastCos = 1e-3;
 
-// The fans of a run of vertices are done in blocks, in three phases: gathering and checking
-// each fan, weighing all the block's corners in one loop of plain arithmetic on columns
+// The fans of a run of vertices are done in blocks, in three phases: checking each fan and
+// listing its corners, weighing all the block's corners in one loop of plain arithmetic
 // (which the compiler vectorises), and summing each fan.
 struct FanBlock
 {
@@ -1584,50 +1584,16 @@ struct FanBlock
   std::int32_t Vertex[MaxVertices];
   float Handedness[MaxVertices];
   int First[MaxVertices + 1];
-  std::int32_t Triangle[MaxCorners];
-  // Per corner: its vertex's unit normal, its two edges from the vertex, the triangle's
-  // dP/ds and dP/dt directions, the weight of dP/ds.
+  // Per corner: its triangle, the point ids of the corner and of its next and previous
+  // corners (times 3: offsets of their coordinates), its vertex's unit normal, the weight of
+  // dP/ds.
+  alignas(32) std::int32_t Triangle[MaxCorners];
+  alignas(32) std::int32_t Self[MaxCorners];
+  alignas(32) std::int32_t Next[MaxCorners];
+  alignas(32) std::int32_t Prev[MaxCorners];
   alignas(32) double N[3][MaxCorners];
-  alignas(32) double E1[3][MaxCorners];
-  alignas(32) double E2[3][MaxCorners];
-  alignas(32) double Os[3][MaxCorners];
-  alignas(32) double Ot[3][MaxCorners];
   alignas(32) double Weight[MaxCorners];
 };
-
-// Each corner's angle, projected onto the tangent plane, over the length of its dP/ds
-// projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
-// dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
-VTK_ALWAYS_INLINE void WeighCorners(FanBlock& fb)
-{
-  const int nc = fb.NumberOfCorners;
-  const double* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
-  const double* __restrict e1x = fb.E1[0], * __restrict e1y = fb.E1[1], * __restrict e1z = fb.E1[2];
-  const double* __restrict e2x = fb.E2[0], * __restrict e2y = fb.E2[1], * __restrict e2z = fb.E2[2];
-  const double* __restrict osx = fb.Os[0], * __restrict osy = fb.Os[1], * __restrict osz = fb.Os[2];
-  double* __restrict weight = fb.Weight;
-  for (int c = 0; c < nc; ++c)
-  {
-    const double n1 = e1x[c] * nx[c] + e1y[c] * ny[c] + e1z[c] * nz[c];
-    const double n2 = e2x[c] * nx[c] + e2y[c] * ny[c] + e2z[c] * nz[c];
-    // The general path normalises a projected edge only when some component is above
-    // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
-    // margin of 4), so shorter projections (an edge along the normal) go that way.
-    const double pl1 = e1x[c] * e1x[c] + e1y[c] * e1y[c] + e1z[c] * e1z[c] - n1 * n1;
-    const double pl2 = e2x[c] * e2x[c] + e2y[c] * e2y[c] + e2z[c] * e2z[c] - n2 * n2;
-    const double x = e1y[c] * e2z[c] - e1z[c] * e2y[c];
-    const double y = e1z[c] * e2x[c] - e1x[c] * e2z[c];
-    const double z = e1x[c] * e2y[c] - e1y[c] * e2x[c];
-    const double angle = FastAngle(std::abs(x * nx[c] + y * ny[c] + z * nz[c]),
-      e1x[c] * e2x[c] + e1y[c] * e2y[c] + e1z[c] * e2z[c] - n1 * n2);
-    const double on = osx[c] * nx[c] + osy[c] * ny[c] + osz[c] * nz[c];
-    // A failed check makes the weight NaN, which fails the fan's final test.
-    weight[c] =
-      (std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? angle
-                                                     : std::numeric_limits<double>::quiet_NaN()) /
-      std::sqrt(osx[c] * osx[c] + osy[c] * osy[c] + osz[c] * osz[c] - on * on);
-  }
-}
 
 template <typename PT, typename NT, typename TT>
 class FastMikk
@@ -2219,14 +2185,13 @@ private:
         {
           break;
         }
-        if (!this->GatherFan<Wide>(
-              v, k, w, dir, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        if (!this->GatherFan<Wide>(v, k, w, orient, first, corners, fb, out + 4 * std::size_t(v)))
         {
           return false;
         }
       }
-      WeighCorners(fb);
-      if (!SumFans(fb, out))
+      this->WeighCorners(fb, dir);
+      if (!SumFans(fb, dir, out))
       {
         return false;
       }
@@ -2238,8 +2203,8 @@ private:
   // uses gets the default frame at once).
   template <bool Wide>
   VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* w,
-    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, FanBlock& fb, float* out) const
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    FanBlock& fb, float* out) const
   {
     const V3 n = this->UnitNormal(v);
     if (k == 0)
@@ -2269,20 +2234,14 @@ private:
     {
       return false;
     }
-    const double pv[3] = { double(this->P[3 * std::size_t(v)]),
-      double(this->P[3 * std::size_t(v) + 1]), double(this->P[3 * std::size_t(v) + 2]) };
     for (int a = 0, c = fb.NumberOfCorners; a < k; ++a, ++c)
     {
-      const std::size_t x1 = 3 * std::size_t(next[a]), x2 = 3 * std::size_t(prev[a]);
-      const auto& d = dir[tri[a]];
-      for (int i = 0; i < 3; ++i)
-      {
-        fb.N[i][c] = n[i];
-        fb.E1[i][c] = double(this->P[x1 + i]) - pv[i];
-        fb.E2[i][c] = double(this->P[x2 + i]) - pv[i];
-        fb.Os[i][c] = d[i];
-        fb.Ot[i][c] = d[3 + i];
-      }
+      fb.Self[c] = 3 * v;
+      fb.Next[c] = 3 * next[a];
+      fb.Prev[c] = 3 * prev[a];
+      fb.N[0][c] = n[0];
+      fb.N[1][c] = n[1];
+      fb.N[2][c] = n[2];
     }
     fb.Handedness[fb.NumberOfVertices] = o != 0 ? 1.0f : -1.0f;
     fb.Vertex[fb.NumberOfVertices++] = v;
@@ -2291,10 +2250,54 @@ private:
     return true;
   }
 
+  // Each corner's angle, projected onto the tangent plane, over the length of its dP/ds
+  // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
+  // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
+  // One loop over the block's corners, which the compiler vectorises (with gathers in the
+  // AVX2 build).
+  VTK_ALWAYS_INLINE void WeighCorners(FanBlock& fb, const std::array<float, 6>* dir) const
+  {
+    const int nc = fb.NumberOfCorners;
+    const PT* __restrict p = this->P;
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
+    const double* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
+    double* __restrict weight = fb.Weight;
+    for (int c = 0; c < nc; ++c)
+    {
+      const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
+      const double pv[3] = { double(p[x0]), double(p[x0 + 1]), double(p[x0 + 2]) };
+      const double e1x = double(p[x1]) - pv[0], e1y = double(p[x1 + 1]) - pv[1],
+                   e1z = double(p[x1 + 2]) - pv[2];
+      const double e2x = double(p[x2]) - pv[0], e2y = double(p[x2 + 1]) - pv[1],
+                   e2z = double(p[x2 + 2]) - pv[2];
+      const double osx = d[t], osy = d[t + 1], osz = d[t + 2];
+      const double n1 = e1x * nx[c] + e1y * ny[c] + e1z * nz[c];
+      const double n2 = e2x * nx[c] + e2y * ny[c] + e2z * nz[c];
+      // The general path normalises a projected edge only when some component is above
+      // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+      // margin of 4), so shorter projections (an edge along the normal) go that way.
+      const double pl1 = e1x * e1x + e1y * e1y + e1z * e1z - n1 * n1;
+      const double pl2 = e2x * e2x + e2y * e2y + e2z * e2z - n2 * n2;
+      const double x = e1y * e2z - e1z * e2y;
+      const double y = e1z * e2x - e1x * e2z;
+      const double z = e1x * e2y - e1y * e2x;
+      const double angle = FastAngle(
+        std::abs(x * nx[c] + y * ny[c] + z * nz[c]), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+      const double on = osx * nx[c] + osy * ny[c] + osz * nz[c];
+      // A failed check makes the weight NaN, which fails the fan's final test.
+      weight[c] =
+        (std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? angle
+                                                       : std::numeric_limits<double>::quiet_NaN()) /
+        std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+    }
+  }
+
   // Per vertex, the weighted sum of dP/ds projected (the projection of the sum). At the
   // default threshold MikkTSpace separates only opposite directions: with every direction
   // within a quarter turn of the first corner's (with a margin), no two are.
-  VTK_ALWAYS_INLINE static bool SumFans(const FanBlock& fb, float* out)
+  VTK_ALWAYS_INLINE static bool SumFans(
+    const FanBlock& fb, const std::array<float, 6>* dir, float* out)
   {
     int ok = 1;
     for (int j = 0; j < fb.NumberOfVertices; ++j)
@@ -2304,8 +2307,8 @@ private:
       V3 r[2];
       for (int i = 0; i < 2; ++i)
       {
-        const double(&d)[3][FanBlock::MaxCorners] = i == 0 ? fb.Os : fb.Ot;
-        const V3 x{ d[0][c0], d[1][c0], d[2][c0] };
+        const auto& d = dir[fb.Triangle[c0]];
+        const V3 x{ d[3 * i], d[3 * i + 1], d[3 * i + 2] };
         r[i] = Sub(x, Scale(Dot(x, n), n));
         const double len2 = Dot(r[i], r[i]);
         ok &= len2 > FastProjection2;
@@ -2314,8 +2317,8 @@ private:
       double sum[3] = { 0.0, 0.0, 0.0 };
       for (int c = c0; c < c1; ++c)
       {
-        const double os[3] = { fb.Os[0][c], fb.Os[1][c], fb.Os[2][c] };
-        const double ot[3] = { fb.Ot[0][c], fb.Ot[1][c], fb.Ot[2][c] };
+        const auto& d = dir[fb.Triangle[c]];
+        const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
         ok &= os[0] * r[0][0] + os[1] * r[0][1] + os[2] * r[0][2] > FastCos;
         ok &= ot[0] * r[1][0] + ot[1] * r[1][1] + ot[2] * r[1][2] > FastCos;
         sum[0] += fb.Weight[c] * os[0];
@@ -2364,7 +2367,7 @@ vtkSmartPointer<vtkFloatArray> FastTangents(
   const vtkIdType nPts = input->GetNumberOfPoints();
   const vtkIdType nTris = polys->GetNumberOfCells();
   if (input->GetNumberOfStrips() > 0 || nTris == 0 ||
-    nPts >= std::numeric_limits<std::int32_t>::max() || nTris >= (vtkIdType(1) << 29))
+    nPts >= std::numeric_limits<std::int32_t>::max() / 3 || nTris >= (vtkIdType(1) << 29))
   {
     return nullptr;
   }
