@@ -1584,15 +1584,24 @@ struct FanBlock
   std::int32_t Vertex[MaxVertices];
   float Handedness[MaxVertices];
   int First[MaxVertices + 1];
-  // Per corner: its triangle, the point ids of the corner and of its next and previous
-  // corners (times 3: offsets of their coordinates), its vertex's unit normal, the weight of
-  // dP/ds.
+  // Per vertex: its unit normal, the offset of its first triangle's directions, the
+  // projections of those (unit vectors, see References), whether checks passed, the sum of
+  // weighted dP/ds, the tangent.
+  alignas(32) double NV[3][MaxVertices];
+  alignas(32) std::int32_t First6[MaxVertices];
+  alignas(32) double R[6][MaxVertices];
+  alignas(32) double Good[MaxVertices];
+  alignas(32) double S[3][MaxVertices];
+  alignas(32) float Tangent[3][MaxVertices];
+  // Per corner: its triangle, the point ids of the corner and of
+  // its next and previous corners (times 3: offsets of their coordinates), its vertex's unit
+  // normal, its weighted dP/ds.
   alignas(32) std::int32_t Triangle[MaxCorners];
   alignas(32) std::int32_t Self[MaxCorners];
   alignas(32) std::int32_t Next[MaxCorners];
   alignas(32) std::int32_t Prev[MaxCorners];
   alignas(32) double N[3][MaxCorners];
-  alignas(32) double Weight[MaxCorners];
+  alignas(32) double WeightedOs[3][MaxCorners];
 };
 
 template <typename PT, typename NT, typename TT>
@@ -2190,6 +2199,7 @@ private:
           return false;
         }
       }
+      References(fb, dir);
       this->WeighCorners(fb, dir);
       if (!SumFans(fb, dir, out))
       {
@@ -2234,6 +2244,11 @@ private:
     {
       return false;
     }
+    const int j = fb.NumberOfVertices;
+    fb.NV[0][j] = n[0];
+    fb.NV[1][j] = n[1];
+    fb.NV[2][j] = n[2];
+    fb.First6[j] = 6 * tri[0];
     for (int a = 0, c = fb.NumberOfCorners; a < k; ++a, ++c)
     {
       fb.Self[c] = 3 * v;
@@ -2262,7 +2277,7 @@ private:
     const float* __restrict d = dir[0].data();
     const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
     const double* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
-    double* __restrict weight = fb.Weight;
+    double* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
     for (int c = 0; c < nc; ++c)
     {
       const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
@@ -2286,58 +2301,108 @@ private:
         std::abs(x * nx[c] + y * ny[c] + z * nz[c]), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
       const double on = osx * nx[c] + osy * ny[c] + osz * nz[c];
       // A failed check makes the weight NaN, which fails the fan's final test.
-      weight[c] =
+      const double weight =
         (std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? angle
                                                        : std::numeric_limits<double>::quiet_NaN()) /
         std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+      wx[c] = weight * osx;
+      wy[c] = weight * osy;
+      wz[c] = weight * osz;
     }
   }
 
-  // Per vertex, the weighted sum of dP/ds projected (the projection of the sum). At the
-  // default threshold MikkTSpace separates only opposite directions: with every direction
-  // within a quarter turn of the first corner's (with a margin), no two are.
-  VTK_ALWAYS_INLINE static bool SumFans(
-    const FanBlock& fb, const std::array<float, 6>* dir, float* out)
+  // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
+  // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
+  // directions, and with every direction within a quarter turn of these (with a margin),
+  // no two are.
+  VTK_ALWAYS_INLINE static void References(FanBlock& fb, const std::array<float, 6>* dir)
   {
-    int ok = 1;
-    for (int j = 0; j < fb.NumberOfVertices; ++j)
+    const int nv = fb.NumberOfVertices;
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict first6 = fb.First6;
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    double* __restrict good = fb.Good;
+    double* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    double* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < nv; ++j)
     {
-      const int c0 = fb.First[j], c1 = fb.First[j + 1];
-      const V3 n{ fb.N[0][c0], fb.N[1][c0], fb.N[2][c0] };
-      V3 r[2];
-      for (int i = 0; i < 2; ++i)
-      {
-        const auto& d = dir[fb.Triangle[c0]];
-        const V3 x{ d[3 * i], d[3 * i + 1], d[3 * i + 2] };
-        r[i] = Sub(x, Scale(Dot(x, n), n));
-        const double len2 = Dot(r[i], r[i]);
-        ok &= len2 > FastProjection2;
-        r[i] = Scale(1.0 / std::sqrt(len2), r[i]);
-      }
+      const std::int32_t t = first6[j];
+      const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
+      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
+      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
+      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
+      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
+      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+      r0x[j] = ip * p[0];
+      r0y[j] = ip * p[1];
+      r0z[j] = ip * p[2];
+      r1x[j] = iq * q[0];
+      r1y[j] = iq * q[1];
+      r1z[j] = iq * q[2];
+    }
+  }
+
+  // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
+  // in corner order, then the rest in one loop over the block's vertices.
+  VTK_ALWAYS_INLINE static bool SumFans(FanBlock& fb, const std::array<float, 6>* dir, float* out)
+  {
+    const int nv = fb.NumberOfVertices;
+    int ok = 1;
+    for (int j = 0; j < nv; ++j)
+    {
+      const double r0[3] = { fb.R[0][j], fb.R[1][j], fb.R[2][j] };
+      const double r1[3] = { fb.R[3][j], fb.R[4][j], fb.R[5][j] };
       double sum[3] = { 0.0, 0.0, 0.0 };
-      for (int c = c0; c < c1; ++c)
+      for (int c = fb.First[j]; c < fb.First[j + 1]; ++c)
       {
         const auto& d = dir[fb.Triangle[c]];
         const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
-        ok &= os[0] * r[0][0] + os[1] * r[0][1] + os[2] * r[0][2] > FastCos;
-        ok &= ot[0] * r[1][0] + ot[1] * r[1][1] + ot[2] * r[1][2] > FastCos;
-        sum[0] += fb.Weight[c] * os[0];
-        sum[1] += fb.Weight[c] * os[1];
-        sum[2] += fb.Weight[c] * os[2];
+        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > FastCos;
+        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > FastCos;
+        sum[0] += fb.WeightedOs[0][c];
+        sum[1] += fb.WeightedOs[1][c];
+        sum[2] += fb.WeightedOs[2][c];
       }
-      const double sumN = sum[0] * n[0] + sum[1] * n[1] + sum[2] * n[2];
-      const V3 t{ sum[0] - sumN * n[0], sum[1] - sumN * n[1], sum[2] - sumN * n[2] };
-      const double len2 = Dot(t, t);
-      ok &= len2 > 1e-12 && std::isfinite(len2);
+      fb.S[0][j] = sum[0];
+      fb.S[1][j] = sum[1];
+      fb.S[2][j] = sum[2];
+    }
+    if (!ok)
+    {
+      return false;
+    }
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
+    double* __restrict good = fb.Good;
+    float* __restrict tx = fb.Tangent[0], * __restrict ty = fb.Tangent[1], * __restrict tz = fb.Tangent[2];
+    for (int j = 0; j < nv; ++j)
+    {
+      const double sumN = sx[j] * nx[j] + sy[j] * ny[j] + sz[j] * nz[j];
+      const double t[3] = { sx[j] - sumN * nx[j], sy[j] - sumN * ny[j], sz[j] - sumN * nz[j] };
+      const double len2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+      // Not finite is not above 1e-12 or not below the largest double.
+      good[j] = std::min(len2 - 1e-12, DBL_MAX - len2) > 0.0 ? good[j] : 0.0;
       const double inv = 1.0 / std::sqrt(len2);
-      float* o = out + 4 * std::size_t(fb.Vertex[j]);
-      for (int c = 0; c < 3; ++c)
+      tx[j] = static_cast<float>(inv * t[0]);
+      ty[j] = static_cast<float>(inv * t[1]);
+      tz[j] = static_cast<float>(inv * t[2]);
+    }
+    for (int j = 0; j < nv; ++j)
+    {
+      if (fb.Good[j] == 0.0)
       {
-        o[c] = static_cast<float>(inv * t[c]);
+        return false;
       }
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      o[0] = fb.Tangent[0][j];
+      o[1] = fb.Tangent[1][j];
+      o[2] = fb.Tangent[2][j];
       o[3] = fb.Handedness[j];
     }
-    return ok != 0;
+    return true;
   }
 };
 
