@@ -1576,8 +1576,8 @@ constexpr double FastCos = 1e-3;
 // (which the compiler vectorises), and summing each fan.
 struct FanBlock
 {
-  static constexpr int MaxVertices = 64;
-  static constexpr int MaxCorners = 256;
+  static constexpr int MaxVertices = 128;
+  static constexpr int MaxCorners = 512;
   static_assert(MaxCorners >= MaxFastFan, "a fan fits in a block");
   int NumberOfVertices = 0;
   int NumberOfCorners = 0;
