@@ -1903,8 +1903,8 @@ private:
     return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
   }
 
-  // As the fans: blocks of triangles, their values gathered into columns, then one loop of
-  // plain arithmetic that the compiler vectorises (checks fold into a 0/1 flag).
+  // As the fans: blocks of triangles, each checked and listed, then one loop of plain
+  // arithmetic that the compiler vectorises (checks fold into a 0/1 flag).
   template <typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
@@ -1913,8 +1913,8 @@ private:
     constexpr int Size = 128;
     struct Columns
     {
-      alignas(32) double X[9][Size]; // corner j's coordinate i at 3 j + i
-      alignas(32) double U[6][Size]; // corner j's texture coordinate i at 2 j + i
+      alignas(32) std::int32_t X[3][Size]; // offsets of the corners' coordinates
+      alignas(32) std::int32_t U[3][Size]; // offsets of the corners' texture coordinates
       alignas(32) double Good[Size];
       alignas(32) double Sign[Size];
       alignas(32) float D[6][Size];
@@ -1939,16 +1939,11 @@ private:
           {
             referenced[p].store(1, std::memory_order_relaxed);
           }
-          for (int i = 0; i < 3; ++i)
-          {
-            cb.X[3 * k + i][j] = double(this->P[3 * std::size_t(p) + i]);
-          }
-          const TT* tc = this->T + std::size_t(this->TcStride) * p;
-          cb.U[2 * k][j] = double(tc[0]);
-          cb.U[2 * k + 1][j] = double(tc[1]);
+          cb.X[k][j] = 3 * p;
+          cb.U[k][j] = this->TcStride * p;
         }
       }
-      TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
+      this->TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
       for (int j = 0; j < m; ++j)
       {
         if (cb.Good[j] == 0.0)
@@ -1963,22 +1958,29 @@ private:
     return true;
   }
 
+  // One loop over a block's triangles (with gathers in the AVX2 build).
   template <int Size>
-  VTK_ALWAYS_INLINE static void TriangleColumns(const double (&x)[9][Size],
-    const double (&u)[6][Size], int m, double* __restrict good, double* __restrict sign,
-    float (&d)[6][Size])
+  VTK_ALWAYS_INLINE void TriangleColumns(const std::int32_t (&x)[3][Size],
+    const std::int32_t (&u)[3][Size], int m, double* __restrict good, double* __restrict sign,
+    float (&d)[6][Size]) const
   {
+    const PT* __restrict p = this->P;
+    const TT* __restrict tc = this->T;
     for (int j = 0; j < m; ++j)
     {
-      const double v1[3] = { x[0][j], x[1][j], x[2][j] };
-      const double v2[3] = { x[3][j], x[4][j], x[5][j] };
-      const double v3[3] = { x[6][j], x[7][j], x[8][j] };
+      const std::int32_t a = x[0][j], b = x[1][j], c = x[2][j];
+      const std::int32_t ua = u[0][j], ub = u[1][j], uc = u[2][j];
+      const double v1[3] = { double(p[a]), double(p[a + 1]), double(p[a + 2]) };
+      const double v2[3] = { double(p[b]), double(p[b + 1]), double(p[b + 2]) };
+      const double v3[3] = { double(p[c]), double(p[c + 1]), double(p[c + 2]) };
       // Two equal corners make a degenerate triangle.
       double g = v1[0] != v2[0] ? 1.0 : (v1[1] != v2[1] ? 1.0 : (v1[2] != v2[2] ? 1.0 : 0.0));
       g = v1[0] != v3[0] ? g : (v1[1] != v3[1] ? g : (v1[2] != v3[2] ? g : 0.0));
       g = v2[0] != v3[0] ? g : (v2[1] != v3[1] ? g : (v2[2] != v3[2] ? g : 0.0));
-      const double t21x = u[2][j] - u[0][j], t21y = u[3][j] - u[1][j];
-      const double t31x = u[4][j] - u[0][j], t31y = u[5][j] - u[1][j];
+      const double t21x = double(tc[ub]) - double(tc[ua]),
+                   t21y = double(tc[ub + 1]) - double(tc[ua + 1]);
+      const double t31x = double(tc[uc]) - double(tc[ua]),
+                   t31y = double(tc[uc + 1]) - double(tc[ua + 1]);
       const double d1[3] = { v2[0] - v1[0], v2[1] - v1[1], v2[2] - v1[2] };
       const double d2[3] = { v3[0] - v1[0], v3[1] - v1[1], v3[2] - v1[2] };
       const double area2 = t21x * t31y - t21y * t31x;
@@ -2432,7 +2434,9 @@ vtkSmartPointer<vtkFloatArray> FastTangents(
   const vtkIdType nPts = input->GetNumberOfPoints();
   const vtkIdType nTris = polys->GetNumberOfCells();
   if (input->GetNumberOfStrips() > 0 || nTris == 0 ||
-    nPts >= std::numeric_limits<std::int32_t>::max() / 3 || nTris >= (vtkIdType(1) << 29))
+    nPts >=
+      std::numeric_limits<std::int32_t>::max() / std::max(3, tcoords->GetNumberOfComponents()) ||
+    nTris >= (vtkIdType(1) << 29))
   {
     return nullptr;
   }
