@@ -1526,6 +1526,7 @@ VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
   Links<5>(nx, pv, link, in);
   Links<6>(nx, pv, link, in);
   Links<7>(nx, pv, link, in);
+#if defined(__clang__)
   std::int32_t links[8], ins[8];
   std::memcpy(links, &link, sizeof(links));
   std::memcpy(ins, &in, sizeof(ins));
@@ -1535,6 +1536,43 @@ VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
     hasIn |= static_cast<std::uint32_t>(ins[a] & 1) << a;
   }
   return IsOneRun(links, hasIn, k);
+#else
+  // The walk of IsOneRun in the lanes (a walk through memory waits on each step, and on
+  // the vector's store): a chain's end is linked back to its start (the one triangle with
+  // no link to it), padding lanes to themselves; then the links are one permutation, and
+  // the run is one if the start comes back only after k steps. Lane j gets link^j(start)
+  // by composing link with itself (variable shuffles: vpermd).
+  const Lanes8 real = Lane < k;
+  const Lanes8 noIn = (in == 0) & real;
+  Lanes8 r, starts = noIn & 1, start = noIn & Lane;
+  Rotate<4>(starts, r);
+  starts += r;
+  Rotate<2>(starts, r);
+  starts += r;
+  Rotate<1>(starts, r);
+  starts += r;
+  Rotate<4>(start, r);
+  start += r;
+  Rotate<2>(start, r);
+  start += r;
+  Rotate<1>(start, r);
+  start += r;
+  const Lanes8 end = (link < 0) & real;
+  link = (link & ~end) | (start & end);
+  link = (link & real) | (Lane & ~real);
+  const Lanes8 link2 = __builtin_shuffle(link, link), link4 = __builtin_shuffle(link2, link2);
+  Lanes8 orbit = start;
+  const Lanes8 b0 = (Lane & 1) != 0, b1 = (Lane & 2) != 0, b2 = (Lane & 4) != 0;
+  orbit = (orbit & ~b0) | (__builtin_shuffle(link, orbit) & b0);
+  orbit = (orbit & ~b1) | (__builtin_shuffle(link2, orbit) & b1);
+  orbit = (orbit & ~b2) | (__builtin_shuffle(link4, orbit) & b2);
+  const Lanes8 early = (orbit == start) & (Lane > 0) & real;
+  std::uint64_t bad[4];
+  std::memcpy(bad, &early, sizeof(bad));
+  std::int32_t count;
+  std::memcpy(&count, &starts, sizeof(count));
+  return count <= 1 && ((bad[0] | bad[1]) | (bad[2] | bad[3])) == 0;
+#endif
 }
 #else
 #define SURFACEDETAIL_MIKK_LANES 0
