@@ -28,10 +28,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -470,6 +473,105 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverTinyDerivativesAndEdges)
     fan->GetPointData()->SetNormals(normals);
     fan->GetPointData()->SetTCoords(tcoords);
     ExpectFastPathIsGeneralPath(fan, "edge along the normal");
+  }
+}
+
+// A triangle soup around one vertex: ring points around the origin (point 0) at the given
+// heights, texture coordinates from x and y, normals +z.
+vtkSmartPointer<vtkPolyData> FansAroundOrigin(
+  const std::vector<std::array<double, 3>>& ring, const std::vector<std::array<vtkIdType, 3>>& tris)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetName("Normals");
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetName("TCoords");
+  points->InsertNextPoint(0, 0, 0);
+  for (const auto& x : ring)
+  {
+    points->InsertNextPoint(x.data());
+  }
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    normals->InsertNextTuple3(0, 0, 1);
+    tcoords->InsertNextTuple2(0.5 + 0.4 * x[0], 0.5 + 0.4 * x[1]);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : tris)
+  {
+    polys->InsertNextCell(3, t.data());
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetPointData()->SetTCoords(tcoords);
+  return mesh;
+}
+
+// The fast path takes a vertex only if its triangles make one run (one closed fan or one
+// chain) in which every edge at the vertex joins two triangles or bounds the run; fans of
+// up to 8 triangles are checked in vector lanes, larger ones through a hash table. Where
+// the run is not one, the general algorithm splits the vertex or pairs edges its own way,
+// and the default must give exactly its frames (and its number of points).
+TEST(vtkMikkTSpaceTangents, FastPathHandsOverFansThatAreNotOneRun)
+{
+  for (int n : { 4, 6 }) // up to 2n triangles at the origin
+  {
+    std::vector<std::array<double, 3>> ring;
+    for (int side = 0; side < 2; ++side)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double a = 2.0 * vtkMath::Pi() * (i + 0.3 * side) / n;
+        ring.push_back({ std::cos(a), std::sin(a), side == 0 ? 0.5 : -0.5 });
+      }
+    }
+    auto up = [&](int i) { return vtkIdType(1 + i % n); };
+    auto down = [&](int i) { return vtkIdType(1 + n + i % n); };
+    auto check = [&](const std::vector<std::array<vtkIdType, 3>>& tris, const char* name)
+    {
+      const std::string what = std::string(name) + " (" + std::to_string(tris.size()) + ")";
+      ExpectFastPathIsGeneralPath(FansAroundOrigin(ring, tris), what.c_str());
+    };
+    // Two closed fans (a double cone): two runs.
+    std::vector<std::array<vtkIdType, 3>> cone;
+    for (int i = 0; i < n; ++i)
+    {
+      cone.push_back({ 0, up(i), up(i + 1) });
+      cone.push_back({ 0, down(i), down(i + 1) });
+    }
+    check(cone, "double cone");
+    // Two open chains.
+    std::vector<std::array<vtkIdType, 3>> chains;
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      chains.push_back({ 0, up(i), up(i + 1) });
+      chains.push_back({ 0, down(i), down(i + 1) });
+    }
+    check(chains, "two chains");
+    // A closed fan and one triangle sharing an edge's direction with it (0 -> up(0) twice).
+    std::vector<std::array<vtkIdType, 3>> twice;
+    for (int i = 0; i < n; ++i)
+    {
+      twice.push_back({ 0, up(i), up(i + 1) });
+    }
+    twice.push_back({ 0, up(0), down(0) });
+    check(twice, "edge run twice");
+    // A closed fan, and one more triangle at the origin that touches it only there.
+    std::vector<std::array<vtkIdType, 3>> apart(twice.begin(), twice.end() - 1);
+    apart.push_back({ 0, down(0), down(1) });
+    check(apart, "apart");
+    // The double cone splits the origin into two points.
+    auto doubleCone = FansAroundOrigin(ring, cone);
+    vtkNew<vtkMikkTSpaceTangents> filter;
+    filter->SetInputData(doubleCone);
+    filter->Update();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), doubleCone->GetNumberOfPoints() + 1);
   }
 }
 
