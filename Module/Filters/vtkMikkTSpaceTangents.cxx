@@ -1578,7 +1578,6 @@ VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
 #define SURFACEDETAIL_MIKK_LANES 0
 #endif
 
-// Wide: in the AVX2 build (the lanes' code built for the baseline costs more than the hash).
 // The fan's next and prev values (from its corner list) and whether it is one run; Wide:
 // in the AVX2 build (the lanes' code built for the baseline costs more than the hash).
 template <bool Wide>
@@ -1631,9 +1630,9 @@ struct FanBlock
   alignas(32) double Good[MaxVertices];
   alignas(32) double S[3][MaxVertices];
   alignas(32) float Tangent[3][MaxVertices];
-  // Per corner: its triangle, the point ids of the corner and of
-  // its next and previous corners (times 3: offsets of their coordinates), its vertex's unit
-  // normal, its weighted dP/ds.
+  // Per corner: its triangle, the point ids of the corner and of its next and previous
+  // corners (times 3: offsets of their coordinates), its vertex's unit normal, its weighted
+  // dP/ds.
   alignas(32) std::int32_t Triangle[MaxCorners];
   alignas(32) std::int32_t Self[MaxCorners];
   alignas(32) std::int32_t Next[MaxCorners];
