@@ -1368,6 +1368,10 @@ private:
 // Fans larger than this (poles) go the general way.
 constexpr int MaxFastFan = 32;
 
+// Meshes with more triangles go the general way: the fans' corner loops index the
+// triangles' directions (6 floats each) with 32-bit offsets, 6 * triangle + 5.
+constexpr vtkIdType MaxFastTriangles = std::numeric_limits<std::int32_t>::max() / 6;
+
 // Whether the triangles prev[a] -> v -> next[a] (a < k) at a vertex v form one run (one
 // chain or one closed fan) in which each edge at v joins exactly two triangles or bounds the
 // run: the prev values are distinct, so are the next values, and the links a -> b where
@@ -2473,7 +2477,7 @@ vtkSmartPointer<vtkFloatArray> FastTangents(
   if (input->GetNumberOfStrips() > 0 || nTris == 0 ||
     nPts >=
       std::numeric_limits<std::int32_t>::max() / std::max(3, tcoords->GetNumberOfComponents()) ||
-    nTris >= (vtkIdType(1) << 29))
+    nTris > MaxFastTriangles)
   {
     return nullptr;
   }
