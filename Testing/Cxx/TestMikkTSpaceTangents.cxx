@@ -575,6 +575,43 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverFansThatAreNotOneRun)
   }
 }
 
+// The other side: a fan that is one run, closed or open, of every size from 1 triangle
+// to past the small fans' 8 lanes (9 is the first the hash table takes), its triangles
+// listed out of chain order, at point 0 (a real id next to the lanes' negative padding),
+// must give the general algorithm's frames wherever the fast path finishes.
+TEST(vtkMikkTSpaceTangents, FastPathOneRunFansOfEverySizeAgreeWithGeneralPath)
+{
+  for (int k = 1; k <= 12; ++k)
+  {
+    for (bool closed : { true, false })
+    {
+      if (closed && k < 3)
+      {
+        continue;
+      }
+      const int n = closed ? k : k + 1; // ring points
+      std::vector<std::array<double, 3>> ring;
+      for (int i = 0; i < n; ++i)
+      {
+        const double a = (closed ? 2.0 * vtkMath::Pi() : 1.5 * vtkMath::Pi()) * i / k;
+        ring.push_back({ std::cos(a), std::sin(a), 0.1 * std::sin(3.0 * a) });
+      }
+      // Every other triangle from the last one backwards, then the rest.
+      std::vector<std::array<vtkIdType, 3>> tris;
+      for (int start : { k - 1, k - 2 })
+      {
+        for (int c = start; c >= 0; c -= 2)
+        {
+          tris.push_back({ 0, vtkIdType(1 + c), vtkIdType(1 + (c + 1) % n) });
+        }
+      }
+      const std::string what =
+        std::string(closed ? "closed" : "open") + " fan of " + std::to_string(k);
+      ExpectFastPathIsGeneralPath(FansAroundOrigin(ring, tris), what.c_str());
+    }
+  }
+}
+
 // vtkParametricSurfaceSource's analytic frames (T = dP/ds made orthogonal to N, w from
 // dP/dt) and MikkTSpace's on the same tessellation agree on smooth, regular surfaces, so
 // either can feed the mapper and the baker. Near a sphere's poles the parameterisation is
