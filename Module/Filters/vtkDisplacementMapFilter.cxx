@@ -826,14 +826,17 @@ struct DisplaceWorker
       const double x = n[0][k], y = n[1][k], z = n[2][k];
       const double len = std::sqrt(x * x + y * y + z * z);
       const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && IsFinite(len);
+      // Bitwise & and no re-read of what the loop stored: GCC otherwise splits the loop on
+      // the short circuit and re-reads masked stores (a store-forwarding stall per block).
+      const bool scale = (len > 0.0) & IsFinite(len);
       const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool keep = len != 0.0 && IsFinite(sx + sy + sz);
-      n[0][k] = keep ? sx : 0.0;
-      n[1][k] = keep ? sy : 0.0;
+      const bool keep = (len != 0.0) & IsFinite(sx + sy + sz);
+      const double ux = keep ? sx : 0.0, uy = keep ? sy : 0.0;
+      n[0][k] = ux;
+      n[1][k] = uy;
       n[2][k] = keep ? sz : 0.0;
-      fallback[0][k] = n[0][k];
-      fallback[1][k] = n[1][k];
+      fallback[0][k] = ux;
+      fallback[1][k] = uy;
       fallback[2][k] = keep ? sz : 1.0;
     }
   }
@@ -967,7 +970,7 @@ struct DisplaceWorker
           mk[j] = a * nk[j] + bs * nxPt[j] - bt * nxPs[j];
         }
       }
-      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !IsFinite(area);
+      const bool degenerate = !(std::abs(area) > 1e-10 * size) | !IsFinite(area);
       const double sign = area < 0.0 ? -1.0 : 1.0;
       for (int j = 0; j < 3; ++j)
       {
@@ -987,9 +990,9 @@ struct DisplaceWorker
       const double x = m[0][k], y = m[1][k], z = m[2][k];
       const double len = std::sqrt(x * x + y * y + z * z);
       const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && IsFinite(len);
+      const bool scale = (len > 0.0) & IsFinite(len);
       const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool bad = len == 0.0 || !IsFinite(sx + sy + sz);
+      const bool bad = (len == 0.0) | !IsFinite(sx + sy + sz);
       m[0][k] = bad ? fallback[0][k] : sx;
       m[1][k] = bad ? fallback[1][k] : sy;
       m[2][k] = bad ? fallback[2][k] : sz;
@@ -1012,7 +1015,8 @@ struct DisplaceWorker
   {
     const Context<R>& c = this->C;
     Gather<NC>(c.Tangents->P + NC * first, count, t);
-    double bad = 0.0;
+    // An integer OR as the reduction (a max of doubles would keep the loop scalar).
+    int bad = 0;
     for (int k = 0; k < count; ++k)
     {
       double x = t[0][k], y = t[1][k], z = t[2][k];
@@ -1022,9 +1026,9 @@ struct DisplaceWorker
       z -= along * m[2][k];
       const double len = std::sqrt(x * x + y * y + z * z);
       const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && IsFinite(len);
+      const bool scale = (len > 0.0) & IsFinite(len);
       const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      bad = std::max(bad, len == 0.0 || !IsFinite(sx + sy + sz) ? 1.0 : 0.0);
+      bad |= static_cast<int>((len == 0.0) | !IsFinite(sx + sy + sz));
       t[0][k] = sx;
       t[1][k] = sy;
       t[2][k] = sz;
@@ -1037,7 +1041,7 @@ struct DisplaceWorker
         out[NC * k + j] = static_cast<R>(t[j][k]);
       }
     }
-    if (bad == 0.0)
+    if (!bad)
     {
       return;
     }
