@@ -731,65 +731,14 @@ inline R ToReal(double v)
 // The block loops are also compiled for AVX2 and that copy runs where the processor has it
 // (vtkSurfaceDetailVectorize::RunWidest: the same bits either way).
 
-// Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
-// held as structure of arrays: the height samples and the fits (gathers) run point by point,
-// everything else in short branch-free loops over the block that the compiler vectorises; the
-// rare points that need a fallback (a tangent with no direction left) are redone afterwards
-// with the general code. Each loop keeps the operations and their order of the per-point
-// helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the results are
-// theirs to the bit.
-template <int Interp, typename T, typename R>
-struct DisplaceWorker
+// The per-block steps that pass 1 and Mesh's point normals share: points in blocks of Block,
+// held as structure of arrays in lanes of double.
+template <typename R>
+struct BlockOps
 {
   static constexpr int Block = 64;
   using Lanes = double[Block];
   const Context<R>& C;
-  const Texels<T>& Tex;
-
-  void operator()(vtkIdType begin, vtkIdType end) const
-  {
-    vtkSurfaceDetailVectorize::RunWidest(*this, begin, end);
-  }
-
-  // Everything it calls for the block is inlined into it, so that the AVX2 build compiles
-  // it all.
-  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
-  {
-    const Context<R>& c = this->C;
-    const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
-      c.NormalMode == vtkDisplacementMapFilter::Exact;
-    const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
-    alignas(64) Lanes n[3], fallback[3], d, ds, dt, ps[3], pt[3], ns[3], nt[3], m[3], x[4];
-    for (vtkIdType first = begin; first < end; first += Block)
-    {
-      const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
-      this->UnitNormals(first, count, n, fallback);
-      this->Heights(first, count, d, ds, dt);
-      this->Points(first, count, n, d, x);
-      if (!analytic)
-      {
-        continue;
-      }
-      this->Derivatives(first, count, exact, ps, pt, ns, nt);
-      if (exact)
-      {
-        this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m);
-      }
-      else
-      {
-        this->template Directions<false>(count, n, d, ds, dt, ps, pt, ns, nt, m);
-      }
-      this->Normals(first, count, fallback, m);
-      if (c.OutTangents && c.OutTangents->NC == 4)
-      {
-        this->template Tangents<4>(first, count, m, x);
-      }
-      else if (c.OutTangents)
-      {
-        this->template Tangents<3>(first, count, m, x);
-      }
-    }
-  }
 
   // Interleaved values of R to lanes, and back (for R float, clamped to float's range).
   template <int NC>
@@ -841,6 +790,138 @@ struct DisplaceWorker
     }
   }
 
+  // WriteNormal for the block: normalises m in place and writes it.
+  VTK_ALWAYS_INLINE void Normals(
+    vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      const double x = m[0][k], y = m[1][k], z = m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = (len > 0.0) & IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool bad = (len == 0.0) | !IsFinite(sx + sy + sz);
+      m[0][k] = bad ? fallback[0][k] : sx;
+      m[1][k] = bad ? fallback[1][k] : sy;
+      m[2][k] = bad ? fallback[2][k] : sz;
+    }
+    // Unit vectors: static_cast as WriteNormal, no range to clamp.
+    R* out = this->C.OutNormals->P + 3 * first;
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        out[3 * k + j] = static_cast<R>(m[j][k]);
+      }
+    }
+  }
+
+  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
+  // direction is redone by WriteTangent itself (same results for the others).
+  template <int NC>
+  VTK_ALWAYS_INLINE void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
+  {
+    const Context<R>& c = this->C;
+    Gather<NC>(c.Tangents->P + NC * first, count, t);
+    // An integer OR as the reduction (a max of doubles would keep the loop scalar).
+    int bad = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      double x = t[0][k], y = t[1][k], z = t[2][k];
+      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
+      x -= along * m[0][k];
+      y -= along * m[1][k];
+      z -= along * m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = (len > 0.0) & IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      bad |= static_cast<int>((len == 0.0) | !IsFinite(sx + sy + sz));
+      t[0][k] = sx;
+      t[1][k] = sy;
+      t[2][k] = sz;
+    }
+    R* out = c.OutTangents->P + NC * first;
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = static_cast<R>(t[j][k]);
+      }
+    }
+    if (!bad)
+    {
+      return;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double mk[3] = { m[0][k], m[1][k], m[2][k] };
+      WriteTangent(c, first + k, mk);
+    }
+  }
+};
+
+// Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
+// held as structure of arrays: the height samples and the fits (gathers) run point by point,
+// everything else in short branch-free loops over the block that the compiler vectorises; the
+// rare points that need a fallback (a tangent with no direction left) are redone afterwards
+// with the general code. Each loop keeps the operations and their order of the per-point
+// helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the results are
+// theirs to the bit.
+template <int Interp, typename T, typename R>
+struct DisplaceWorker : BlockOps<R>
+{
+  using Base = BlockOps<R>;
+  using Base::Block;
+  using typename Base::Lanes;
+  const Texels<T>& Tex;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    vtkSurfaceDetailVectorize::RunWidest(*this, begin, end);
+  }
+
+  // Everything it calls for the block is inlined into it, so that the AVX2 build compiles
+  // it all.
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
+  {
+    const Context<R>& c = this->C;
+    const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
+      c.NormalMode == vtkDisplacementMapFilter::Exact;
+    const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
+    alignas(64) Lanes n[3], fallback[3], d, ds, dt, ps[3], pt[3], ns[3], nt[3], m[3], x[4];
+    for (vtkIdType first = begin; first < end; first += Block)
+    {
+      const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
+      this->UnitNormals(first, count, n, fallback);
+      this->Heights(first, count, d, ds, dt);
+      this->Points(first, count, n, d, x);
+      if (!analytic)
+      {
+        continue;
+      }
+      this->Derivatives(first, count, exact, ps, pt, ns, nt);
+      if (exact)
+      {
+        this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m);
+      }
+      else
+      {
+        this->template Directions<false>(count, n, d, ds, dt, ps, pt, ns, nt, m);
+      }
+      this->Normals(first, count, fallback, m);
+      if (c.OutTangents && c.OutTangents->NC == 4)
+      {
+        this->template Tangents<4>(first, count, m, x);
+      }
+      else if (c.OutTangents)
+      {
+        this->template Tangents<3>(first, count, m, x);
+      }
+    }
+  }
+
   VTK_ALWAYS_INLINE void Heights(vtkIdType first, int count, Lanes d, Lanes ds, Lanes dt) const
   {
     const Context<R>& c = this->C;
@@ -863,7 +944,7 @@ struct DisplaceWorker
   VTK_ALWAYS_INLINE void Points(
     vtkIdType first, int count, const Lanes n[3], const Lanes d, Lanes x[3]) const
   {
-    Gather<3>(this->C.Points->P + 3 * first, count, x);
+    this->template Gather<3>(this->C.Points->P + 3 * first, count, x);
     for (int j = 0; j < 3; ++j)
     {
       for (int k = 0; k < count; ++k)
@@ -872,7 +953,7 @@ struct DisplaceWorker
         x[j][k] = offset == 0.0 ? x[j][k] : Finite(x[j][k] + offset);
       }
     }
-    Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
+    this->template Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
   }
 
   // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t.
@@ -882,8 +963,8 @@ struct DisplaceWorker
     const Context<R>& c = this->C;
     if (c.DPdu)
     {
-      Gather<3>(c.DPdu->P + 3 * first, count, ps);
-      Gather<3>(c.DPdv->P + 3 * first, count, pt);
+      this->template Gather<3>(c.DPdu->P + 3 * first, count, ps);
+      this->template Gather<3>(c.DPdv->P + 3 * first, count, pt);
       for (int j = 0; j < 3; ++j)
       {
         for (int k = 0; k < count; ++k)
@@ -980,77 +1061,6 @@ struct DisplaceWorker
       }
     }
   }
-
-  // WriteNormal for the block: normalises m in place and writes it.
-  VTK_ALWAYS_INLINE void Normals(
-    vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
-  {
-    for (int k = 0; k < count; ++k)
-    {
-      const double x = m[0][k], y = m[1][k], z = m[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = (len > 0.0) & IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool bad = (len == 0.0) | !IsFinite(sx + sy + sz);
-      m[0][k] = bad ? fallback[0][k] : sx;
-      m[1][k] = bad ? fallback[1][k] : sy;
-      m[2][k] = bad ? fallback[2][k] : sz;
-    }
-    // Unit vectors: static_cast as WriteNormal, no range to clamp.
-    R* out = this->C.OutNormals->P + 3 * first;
-    for (int k = 0; k < count; ++k)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        out[3 * k + j] = static_cast<R>(m[j][k]);
-      }
-    }
-  }
-
-  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
-  // direction is redone by WriteTangent itself (same results for the others).
-  template <int NC>
-  VTK_ALWAYS_INLINE void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
-  {
-    const Context<R>& c = this->C;
-    Gather<NC>(c.Tangents->P + NC * first, count, t);
-    // An integer OR as the reduction (a max of doubles would keep the loop scalar).
-    int bad = 0;
-    for (int k = 0; k < count; ++k)
-    {
-      double x = t[0][k], y = t[1][k], z = t[2][k];
-      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
-      x -= along * m[0][k];
-      y -= along * m[1][k];
-      z -= along * m[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = (len > 0.0) & IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      bad |= static_cast<int>((len == 0.0) | !IsFinite(sx + sy + sz));
-      t[0][k] = sx;
-      t[1][k] = sy;
-      t[2][k] = sz;
-    }
-    R* out = c.OutTangents->P + NC * first;
-    for (int k = 0; k < count; ++k)
-    {
-      for (int j = 0; j < NC; ++j)
-      {
-        out[NC * k + j] = static_cast<R>(t[j][k]);
-      }
-    }
-    if (!bad)
-    {
-      return;
-    }
-    for (int k = 0; k < count; ++k)
-    {
-      const double mk[3] = { m[0][k], m[1][k], m[2][k] };
-      WriteTangent(c, first + k, mk);
-    }
-  }
 };
 
 // Mesh normals: area-weighted sum of the displaced polygons around each point, each
@@ -1120,11 +1130,14 @@ struct MeshPolygonNormalWorker
   }
 };
 
-// Each point's normal: the sum of its polygons' in increasing polygon order.
+// Each point's normal: the sum of its polygons' in increasing polygon order, then normalised and
+// its tangent re-orthogonalised in blocks (BlockOps: WriteNormalAndTangent's bits).
 template <typename R>
-struct MeshPointNormalWorker
+struct MeshPointNormalWorker : BlockOps<R>
 {
-  const Context<R>& C;
+  using Base = BlockOps<R>;
+  using Base::Block;
+  using typename Base::Lanes;
   const double* CellNormals;
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -1134,18 +1147,37 @@ struct MeshPointNormalWorker
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
-    const PolyLinks& mesh = *this->C.Polys;
-    for (vtkIdType i = begin; i < end; ++i)
+    const Context<R>& c = this->C;
+    const PolyLinks& mesh = *c.Polys;
+    alignas(64) Lanes n[3], fallback[3], m[3], x[4];
+    for (vtkIdType first = begin; first < end; first += Block)
     {
-      double sum[3] = { 0.0, 0.0, 0.0 };
-      for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+      const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
+      for (int k = 0; k < count; ++k)
       {
-        const double* x = this->CellNormals + 3 * mesh.Links[l];
-        sum[0] += x[0];
-        sum[1] += x[1];
-        sum[2] += x[2];
+        const vtkIdType i = first + k;
+        double sum[3] = { 0.0, 0.0, 0.0 };
+        for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+        {
+          const double* p = this->CellNormals + 3 * mesh.Links[l];
+          sum[0] += p[0];
+          sum[1] += p[1];
+          sum[2] += p[2];
+        }
+        m[0][k] = sum[0];
+        m[1][k] = sum[1];
+        m[2][k] = sum[2];
       }
-      WriteNormalAndTangent(this->C, i, sum);
+      this->UnitNormals(first, count, n, fallback);
+      this->Normals(first, count, fallback, m);
+      if (c.OutTangents && c.OutTangents->NC == 4)
+      {
+        this->template Tangents<4>(first, count, m, x);
+      }
+      else if (c.OutTangents)
+      {
+        this->template Tangents<3>(first, count, m, x);
+      }
     }
   }
 };
@@ -1793,7 +1825,7 @@ int vtkDisplacementMapFilter::RequestData(
       auto displace = [&](auto kind)
       {
         constexpr int interp = decltype(kind)::value;
-        DisplaceWorker<interp, T, R> worker{ ctx, tex };
+        DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
         // Pass 1 (threaded), the seam groups and Mesh's links (serial) read only the input and
         // write apart: they run side by side, the serial ones on whichever threads pass 1 leaves.
         vtkSMPTools::For(0, 3, 1,
@@ -1885,7 +1917,7 @@ int vtkDisplacementMapFilter::RequestData(
       Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
       MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
       vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
-      MeshPointNormalWorker<R> worker{ ctx, cellNormals.data() };
+      MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
       vtkSMPTools::For(0, numPts, Grain, worker);
     }
 
