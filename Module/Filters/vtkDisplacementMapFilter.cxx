@@ -1071,7 +1071,12 @@ struct MeshPolygonNormalWorker
   const Context<R>& C;
   const ArrayReader<R>& Moved;
   double* CellNormals;
+  // Each polygon's orientation (-1 or 1), which depends on the input alone: found and stored in
+  // Signs, or (Known) read from it, which spares reading the input points and normals again.
+  signed char* Signs;
+  bool Known;
 
+  template <bool Known>
   VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
   {
     const PolyLinks& mesh = *this->C.Polys;
@@ -1079,6 +1084,27 @@ struct MeshPolygonNormalWorker
     double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
     double m0[3], p0[3];
     this->Moved.Get3(mesh.Conn[b], m0);
+    if (Known)
+    {
+      for (vtkIdType k = b + 1; k + 1 < e; ++k)
+      {
+        double m1[3], m2[3], x[3];
+        this->Moved.Get3(mesh.Conn[k], m1);
+        this->Moved.Get3(mesh.Conn[k + 1], m2);
+        const double a1[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
+        const double a2[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
+        Cross(a1, a2, x);
+        moved[0] += x[0];
+        moved[1] += x[1];
+        moved[2] += x[2];
+      }
+      const double sign = this->Signs[cell] < 0 ? -1.0 : 1.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = sign * moved[k];
+      }
+      return;
+    }
     this->C.Points->Get3(mesh.Conn[b], p0);
     for (vtkIdType k = b; k < e; ++k)
     {
@@ -1109,6 +1135,7 @@ struct MeshPolygonNormalWorker
       orig[2] += x[2];
     }
     const double sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+    this->Signs[cell] = sign < 0.0 ? -1 : 1;
     for (int k = 0; k < 3; ++k)
     {
       out[k] = sign * moved[k];
@@ -1123,9 +1150,17 @@ struct MeshPolygonNormalWorker
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
+    if (this->Known)
+    {
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        this->template PolygonNormal<true>(cell, this->CellNormals + 3 * cell);
+      }
+      return;
+    }
     for (vtkIdType cell = begin; cell < end; ++cell)
     {
-      this->PolygonNormal(cell, this->CellNormals + 3 * cell);
+      this->template PolygonNormal<false>(cell, this->CellNormals + 3 * cell);
     }
   }
 };
@@ -1410,7 +1445,8 @@ struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
   {
-    std::array<const void*, 5> Objects = {}; // polys, offsets, connectivity, points, their data
+    // polys, offsets, connectivity, points, their data, normals
+    std::array<const void*, 6> Objects = {};
     vtkIdType NumPoints = -1;
   };
 
@@ -1432,6 +1468,12 @@ struct vtkDisplacementMapFilter::MeshCache
   vtkTimeStamp NormalsTime;
   Buffer<double> UnitNormals;
   bool HaveUnitNormals = false;
+
+  // Mesh's polygon orientations: from the polygons, the points and the normals.
+  Key SignsKey;
+  vtkTimeStamp SignsTime;
+  Buffer<signed char> Signs;
+  bool HaveSigns = false;
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
   {
@@ -1736,7 +1778,7 @@ int vtkDisplacementMapFilter::RequestData(
           }
         });
       ctx.UnitNormals = unitNormals.data();
-      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr };
+      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr, nullptr };
       cache.NormalsKey.NumPoints = numPts;
       cache.NormalsTime.Modified();
       cache.HaveUnitNormals = true;
@@ -1915,8 +1957,25 @@ int vtkDisplacementMapFilter::RequestData(
     {
       ArrayReader<R> moved(outPoints->GetData());
       Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
-      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
+      MeshCache::Key signsKey = groupsKey;
+      signsKey.Objects[5] = normals;
+      const vtkMTimeType signsChanged = std::max(groupsChanged, normals->GetMTime());
+      const bool haveSigns = cache.HaveSigns &&
+        MeshCache::Fresh(cache.SignsKey, signsKey, signsChanged, cache.SignsTime);
+      if (!haveSigns)
+      {
+        cache.HaveSigns = false;
+        cache.Signs.Resize(std::max<vtkIdType>(mesh.NumCells, 1));
+      }
+      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data(), cache.Signs.data(),
+        haveSigns };
       vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
+      if (!haveSigns)
+      {
+        cache.SignsKey = signsKey;
+        cache.SignsTime.Modified();
+        cache.HaveSigns = true;
+      }
       MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
       vtkSMPTools::For(0, numPts, Grain, worker);
     }
