@@ -483,6 +483,17 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
       nrm->Modified();
       check(0.2, "normals in place");
 
+      // Normals reversed in place: every polygon's orientation (kept by Mesh) flips with them.
+      for (vtkIdType i = 0; i < nrm->GetNumberOfTuples(); ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          nrm->SetComponent(i, k, -nrm->GetComponent(i, k));
+        }
+      }
+      nrm->Modified();
+      check(0.2, "normals reversed in place");
+
       // Connectivity changed in place: the seam closed (polygons use the first column
       // instead of its duplicates), so the links and the boundary change.
       vtkDataArray* conn = mesh->GetPolys()->GetConnectivityArray();
