@@ -336,20 +336,28 @@ public:
   Buffer(const Buffer&) = delete;
   Buffer& operator=(const Buffer&) = delete;
 
+  // Keeps the block when its size is already @a n (a cache rebuilt for the same mesh).
   void Resize(size_t n)
   {
+    if (this->P && this->N == n)
+    {
+      return;
+    }
     vtkSurfaceDetailMemory::Release(this->P);
+    this->N = 0;
     this->P = static_cast<V*>(vtkSurfaceDetailMemory::Allocate(n * sizeof(V)));
     if (!this->P)
     {
       throw std::bad_alloc();
     }
+    this->N = n;
   }
   V* data() const { return this->P; }
   V& operator[](size_t i) const { return this->P[i]; }
 
 private:
   V* P = nullptr;
+  size_t N = 0;
 };
 
 std::vector<vtkIdType> Widen(vtkDataArray* a)
@@ -536,6 +544,12 @@ struct Context
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
   // Exact mode: the input normals normalised once (each is a neighbour of a dozen fits).
   const double* UnitNormals = nullptr;
+  // The fitted derivatives, which depend on the input alone: per point FitStride values, P_s and
+  // P_t when fitted (no dPdu/dPdv), then n_s and n_t (Exact). Written by pass 1, or (FitsKnown)
+  // read instead of fitting again.
+  double* Fits = nullptr;
+  int FitStride = 0;
+  bool FitsKnown = false;
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -983,8 +997,30 @@ struct DisplaceWorker : BlockOps<R>
       const vtkIdType i = first + k;
       double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
       double Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-      FitDerivatives(
-        c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      double* kept = c.Fits ? c.Fits + static_cast<vtkIdType>(c.FitStride) * i : nullptr;
+      if (!c.FitsKnown)
+      {
+        FitDerivatives(
+          c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      }
+      if (kept)
+      {
+        double* fitted[4] = { Ps, Pt, Ns, Nt };
+        for (int v = c.DPdu ? 2 : 0; v < (exact ? 4 : 2); ++v, kept += 3)
+        {
+          for (int j = 0; j < 3; ++j)
+          {
+            if (c.FitsKnown)
+            {
+              fitted[v][j] = kept[j];
+            }
+            else
+            {
+              kept[j] = fitted[v][j];
+            }
+          }
+        }
+      }
       for (int j = 0; j < 3; ++j)
       {
         ps[j][k] = Ps[j];
@@ -1445,8 +1481,8 @@ struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
   {
-    // polys, offsets, connectivity, points, their data, normals
-    std::array<const void*, 6> Objects = {};
+    // polys, offsets, connectivity, points, their data, normals, texture coordinates
+    std::array<const void*, 7> Objects = {};
     vtkIdType NumPoints = -1;
   };
 
@@ -1474,6 +1510,14 @@ struct vtkDisplacementMapFilter::MeshCache
   vtkTimeStamp SignsTime;
   Buffer<signed char> Signs;
   bool HaveSigns = false;
+
+  // The fitted derivatives (Context::Fits): from the polygons, points, normals and texture
+  // coordinates; Layout says which were fitted (1: P_s and P_t, 2: n_s and n_t).
+  Key FitsKey;
+  vtkTimeStamp FitsTime;
+  int FitsLayout = 0;
+  Buffer<double> Fits;
+  bool HaveFits = false;
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
   {
@@ -1778,7 +1822,7 @@ int vtkDisplacementMapFilter::RequestData(
           }
         });
       ctx.UnitNormals = unitNormals.data();
-      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr, nullptr };
+      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
       cache.NormalsKey.NumPoints = numPts;
       cache.NormalsTime.Modified();
       cache.HaveUnitNormals = true;
@@ -1786,6 +1830,27 @@ int vtkDisplacementMapFilter::RequestData(
     if (useDerivs)
     {
       EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
+    }
+    const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
+      (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
+    MeshCache::Key fitsKey = groupsKey;
+    fitsKey.Objects[5] = normals;
+    fitsKey.Objects[6] = tcoords;
+    bool keepFits = false;
+    if (fitsLayout != 0)
+    {
+      const vtkMTimeType fitsChanged =
+        std::max({ groupsChanged, normals->GetMTime(), tcoords->GetMTime() });
+      ctx.FitsKnown = cache.HaveFits && cache.FitsLayout == fitsLayout &&
+        MeshCache::Fresh(cache.FitsKey, fitsKey, fitsChanged, cache.FitsTime);
+      ctx.FitStride = ((fitsLayout & 1) ? 6 : 0) + ((fitsLayout & 2) ? 6 : 0);
+      if (!ctx.FitsKnown)
+      {
+        cache.HaveFits = false;
+        cache.Fits.Resize(static_cast<size_t>(ctx.FitStride) * numPts);
+        keepFits = true;
+      }
+      ctx.Fits = cache.Fits.data();
     }
     // Coincident points (seams, poles; from the input points alone) as groups of (representative,
     // member) in increasing order, so that every sum over a group has one order whatever the thread
@@ -1945,6 +2010,13 @@ int vtkDisplacementMapFilter::RequestData(
       default:
         run(static_cast<const double*>(raw));
         break;
+    }
+    if (keepFits)
+    {
+      cache.FitsKey = fitsKey;
+      cache.FitsLayout = fitsLayout;
+      cache.FitsTime.Modified();
+      cache.HaveFits = true;
     }
     if (nonFinite > 0)
     {

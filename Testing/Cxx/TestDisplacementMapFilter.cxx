@@ -467,10 +467,11 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
       pts->Modified();
       check(0.2, "points in place");
 
+      // (Stretched, not only shifted: Exact's kept fits are derivatives in texture space.)
       vtkDataArray* tc = mesh->GetPointData()->GetTCoords();
       for (vtkIdType i = 0; i < tc->GetNumberOfTuples(); ++i)
       {
-        tc->SetComponent(i, 0, tc->GetComponent(i, 0) + 0.01);
+        tc->SetComponent(i, 0, 1.01 * tc->GetComponent(i, 0) + 0.01);
       }
       tc->Modified();
       check(0.2, "texture coordinates in place");
