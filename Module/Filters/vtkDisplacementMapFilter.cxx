@@ -1112,7 +1112,7 @@ struct MeshPolygonNormalWorker
   signed char* Signs;
   bool Known;
 
-  template <bool Known>
+  template <bool SignKnown>
   VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
   {
     const PolyLinks& mesh = *this->C.Polys;
@@ -1120,7 +1120,7 @@ struct MeshPolygonNormalWorker
     double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
     double m0[3], p0[3];
     this->Moved.Get3(mesh.Conn[b], m0);
-    if (Known)
+    if (SignKnown)
     {
       for (vtkIdType k = b + 1; k + 1 < e; ++k)
       {
