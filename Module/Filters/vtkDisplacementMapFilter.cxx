@@ -336,20 +336,28 @@ public:
   Buffer(const Buffer&) = delete;
   Buffer& operator=(const Buffer&) = delete;
 
+  // Keeps the block when its size is already @a n (a cache rebuilt for the same mesh).
   void Resize(size_t n)
   {
+    if (this->P && this->N == n)
+    {
+      return;
+    }
     vtkSurfaceDetailMemory::Release(this->P);
+    this->N = 0;
     this->P = static_cast<V*>(vtkSurfaceDetailMemory::Allocate(n * sizeof(V)));
     if (!this->P)
     {
       throw std::bad_alloc();
     }
+    this->N = n;
   }
   V* data() const { return this->P; }
   V& operator[](size_t i) const { return this->P[i]; }
 
 private:
   V* P = nullptr;
+  size_t N = 0;
 };
 
 std::vector<vtkIdType> Widen(vtkDataArray* a)
@@ -536,6 +544,12 @@ struct Context
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
   // Exact mode: the input normals normalised once (each is a neighbour of a dozen fits).
   const double* UnitNormals = nullptr;
+  // The fitted derivatives, which depend on the input alone: per point FitStride values, P_s and
+  // P_t when fitted (no dPdu/dPdv), then n_s and n_t (Exact). Written by pass 1, or (FitsKnown)
+  // read instead of fitting again.
+  double* Fits = nullptr;
+  int FitStride = 0;
+  bool FitsKnown = false;
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -731,6 +745,137 @@ inline R ToReal(double v)
 // The block loops are also compiled for AVX2 and that copy runs where the processor has it
 // (vtkSurfaceDetailVectorize::RunWidest: the same bits either way).
 
+// The per-block steps that pass 1 and Mesh's point normals share: points in blocks of Block,
+// held as structure of arrays in lanes of double.
+template <typename R>
+struct BlockOps
+{
+  static constexpr int Block = 64;
+  using Lanes = double[Block];
+  const Context<R>& C;
+
+  // Interleaved values of R to lanes, and back (for R float, clamped to float's range).
+  template <int NC>
+  static VTK_ALWAYS_INLINE void Gather(const R* in, int count, Lanes* lanes)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        lanes[j][k] = in[NC * k + j];
+      }
+    }
+  }
+
+  template <int NC>
+  static VTK_ALWAYS_INLINE void Scatter(const Lanes* lanes, int count, R* out)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = ToReal<R>(lanes[j][k]);
+      }
+    }
+  }
+
+  // InputNormal for the block, and WriteNormal's fallback: that normal, or +z where it has none.
+  VTK_ALWAYS_INLINE void UnitNormals(
+    vtkIdType first, int count, Lanes n[3], Lanes fallback[3]) const
+  {
+    Gather<3>(this->C.Normals->P + 3 * first, count, n);
+    for (int k = 0; k < count; ++k)
+    {
+      const double x = n[0][k], y = n[1][k], z = n[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      // Bitwise & and no re-read of what the loop stored: GCC otherwise splits the loop on
+      // the short circuit and re-reads masked stores (a store-forwarding stall per block).
+      const bool scale = (len > 0.0) & IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool keep = (len != 0.0) & IsFinite(sx + sy + sz);
+      const double ux = keep ? sx : 0.0, uy = keep ? sy : 0.0;
+      n[0][k] = ux;
+      n[1][k] = uy;
+      n[2][k] = keep ? sz : 0.0;
+      fallback[0][k] = ux;
+      fallback[1][k] = uy;
+      fallback[2][k] = keep ? sz : 1.0;
+    }
+  }
+
+  // WriteNormal for the block: normalises m in place and writes it.
+  VTK_ALWAYS_INLINE void Normals(
+    vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      const double x = m[0][k], y = m[1][k], z = m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = (len > 0.0) & IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      const bool bad = (len == 0.0) | !IsFinite(sx + sy + sz);
+      m[0][k] = bad ? fallback[0][k] : sx;
+      m[1][k] = bad ? fallback[1][k] : sy;
+      m[2][k] = bad ? fallback[2][k] : sz;
+    }
+    // Unit vectors: static_cast as WriteNormal, no range to clamp.
+    R* out = this->C.OutNormals->P + 3 * first;
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        out[3 * k + j] = static_cast<R>(m[j][k]);
+      }
+    }
+  }
+
+  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
+  // direction is redone by WriteTangent itself (same results for the others).
+  template <int NC>
+  VTK_ALWAYS_INLINE void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
+  {
+    const Context<R>& c = this->C;
+    Gather<NC>(c.Tangents->P + NC * first, count, t);
+    // An integer OR as the reduction (a max of doubles would keep the loop scalar).
+    int bad = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      double x = t[0][k], y = t[1][k], z = t[2][k];
+      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
+      x -= along * m[0][k];
+      y -= along * m[1][k];
+      z -= along * m[2][k];
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = (len > 0.0) & IsFinite(len);
+      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+      bad |= static_cast<int>((len == 0.0) | !IsFinite(sx + sy + sz));
+      t[0][k] = sx;
+      t[1][k] = sy;
+      t[2][k] = sz;
+    }
+    R* out = c.OutTangents->P + NC * first;
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < NC; ++j)
+      {
+        out[NC * k + j] = static_cast<R>(t[j][k]);
+      }
+    }
+    if (!bad)
+    {
+      return;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double mk[3] = { m[0][k], m[1][k], m[2][k] };
+      WriteTangent(c, first + k, mk);
+    }
+  }
+};
+
 // Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
 // held as structure of arrays: the height samples and the fits (gathers) run point by point,
 // everything else in short branch-free loops over the block that the compiler vectorises; the
@@ -739,11 +884,11 @@ inline R ToReal(double v)
 // helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the results are
 // theirs to the bit.
 template <int Interp, typename T, typename R>
-struct DisplaceWorker
+struct DisplaceWorker : BlockOps<R>
 {
-  static constexpr int Block = 64;
-  using Lanes = double[Block];
-  const Context<R>& C;
+  using Base = BlockOps<R>;
+  using Base::Block;
+  using typename Base::Lanes;
   const Texels<T>& Tex;
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -791,53 +936,6 @@ struct DisplaceWorker
     }
   }
 
-  // Interleaved values of R to lanes, and back (for R float, clamped to float's range).
-  template <int NC>
-  static VTK_ALWAYS_INLINE void Gather(const R* in, int count, Lanes* lanes)
-  {
-    for (int k = 0; k < count; ++k)
-    {
-      for (int j = 0; j < NC; ++j)
-      {
-        lanes[j][k] = in[NC * k + j];
-      }
-    }
-  }
-
-  template <int NC>
-  static VTK_ALWAYS_INLINE void Scatter(const Lanes* lanes, int count, R* out)
-  {
-    for (int k = 0; k < count; ++k)
-    {
-      for (int j = 0; j < NC; ++j)
-      {
-        out[NC * k + j] = ToReal<R>(lanes[j][k]);
-      }
-    }
-  }
-
-  // InputNormal for the block, and WriteNormal's fallback: that normal, or +z where it has none.
-  VTK_ALWAYS_INLINE void UnitNormals(
-    vtkIdType first, int count, Lanes n[3], Lanes fallback[3]) const
-  {
-    Gather<3>(this->C.Normals->P + 3 * first, count, n);
-    for (int k = 0; k < count; ++k)
-    {
-      const double x = n[0][k], y = n[1][k], z = n[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool keep = len != 0.0 && IsFinite(sx + sy + sz);
-      n[0][k] = keep ? sx : 0.0;
-      n[1][k] = keep ? sy : 0.0;
-      n[2][k] = keep ? sz : 0.0;
-      fallback[0][k] = n[0][k];
-      fallback[1][k] = n[1][k];
-      fallback[2][k] = keep ? sz : 1.0;
-    }
-  }
-
   VTK_ALWAYS_INLINE void Heights(vtkIdType first, int count, Lanes d, Lanes ds, Lanes dt) const
   {
     const Context<R>& c = this->C;
@@ -860,7 +958,7 @@ struct DisplaceWorker
   VTK_ALWAYS_INLINE void Points(
     vtkIdType first, int count, const Lanes n[3], const Lanes d, Lanes x[3]) const
   {
-    Gather<3>(this->C.Points->P + 3 * first, count, x);
+    this->template Gather<3>(this->C.Points->P + 3 * first, count, x);
     for (int j = 0; j < 3; ++j)
     {
       for (int k = 0; k < count; ++k)
@@ -869,7 +967,7 @@ struct DisplaceWorker
         x[j][k] = offset == 0.0 ? x[j][k] : Finite(x[j][k] + offset);
       }
     }
-    Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
+    this->template Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
   }
 
   // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t.
@@ -879,8 +977,8 @@ struct DisplaceWorker
     const Context<R>& c = this->C;
     if (c.DPdu)
     {
-      Gather<3>(c.DPdu->P + 3 * first, count, ps);
-      Gather<3>(c.DPdv->P + 3 * first, count, pt);
+      this->template Gather<3>(c.DPdu->P + 3 * first, count, ps);
+      this->template Gather<3>(c.DPdv->P + 3 * first, count, pt);
       for (int j = 0; j < 3; ++j)
       {
         for (int k = 0; k < count; ++k)
@@ -899,8 +997,30 @@ struct DisplaceWorker
       const vtkIdType i = first + k;
       double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
       double Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-      FitDerivatives(
-        c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      double* kept = c.Fits ? c.Fits + static_cast<vtkIdType>(c.FitStride) * i : nullptr;
+      if (!c.FitsKnown)
+      {
+        FitDerivatives(
+          c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+      }
+      if (kept)
+      {
+        double* fitted[4] = { Ps, Pt, Ns, Nt };
+        for (int v = c.DPdu ? 2 : 0; v < (exact ? 4 : 2); ++v, kept += 3)
+        {
+          for (int j = 0; j < 3; ++j)
+          {
+            if (c.FitsKnown)
+            {
+              fitted[v][j] = kept[j];
+            }
+            else
+            {
+              kept[j] = fitted[v][j];
+            }
+          }
+        }
+      }
       for (int j = 0; j < 3; ++j)
       {
         ps[j][k] = Ps[j];
@@ -967,7 +1087,7 @@ struct DisplaceWorker
           mk[j] = a * nk[j] + bs * nxPt[j] - bt * nxPs[j];
         }
       }
-      const bool degenerate = !(std::abs(area) > 1e-10 * size) || !IsFinite(area);
+      const bool degenerate = !(std::abs(area) > 1e-10 * size) | !IsFinite(area);
       const double sign = area < 0.0 ? -1.0 : 1.0;
       for (int j = 0; j < 3; ++j)
       {
@@ -975,76 +1095,6 @@ struct DisplaceWorker
         const double flipped = sign < 0.0 ? -mk[j] : mk[j];
         m[j][k] = degenerate ? nk[j] : flipped;
       }
-    }
-  }
-
-  // WriteNormal for the block: normalises m in place and writes it.
-  VTK_ALWAYS_INLINE void Normals(
-    vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
-  {
-    for (int k = 0; k < count; ++k)
-    {
-      const double x = m[0][k], y = m[1][k], z = m[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool bad = len == 0.0 || !IsFinite(sx + sy + sz);
-      m[0][k] = bad ? fallback[0][k] : sx;
-      m[1][k] = bad ? fallback[1][k] : sy;
-      m[2][k] = bad ? fallback[2][k] : sz;
-    }
-    // Unit vectors: static_cast as WriteNormal, no range to clamp.
-    R* out = this->C.OutNormals->P + 3 * first;
-    for (int k = 0; k < count; ++k)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        out[3 * k + j] = static_cast<R>(m[j][k]);
-      }
-    }
-  }
-
-  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
-  // direction is redone by WriteTangent itself (same results for the others).
-  template <int NC>
-  VTK_ALWAYS_INLINE void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
-  {
-    const Context<R>& c = this->C;
-    Gather<NC>(c.Tangents->P + NC * first, count, t);
-    double bad = 0.0;
-    for (int k = 0; k < count; ++k)
-    {
-      double x = t[0][k], y = t[1][k], z = t[2][k];
-      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
-      x -= along * m[0][k];
-      y -= along * m[1][k];
-      z -= along * m[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      bad = std::max(bad, len == 0.0 || !IsFinite(sx + sy + sz) ? 1.0 : 0.0);
-      t[0][k] = sx;
-      t[1][k] = sy;
-      t[2][k] = sz;
-    }
-    R* out = c.OutTangents->P + NC * first;
-    for (int k = 0; k < count; ++k)
-    {
-      for (int j = 0; j < NC; ++j)
-      {
-        out[NC * k + j] = static_cast<R>(t[j][k]);
-      }
-    }
-    if (bad == 0.0)
-    {
-      return;
-    }
-    for (int k = 0; k < count; ++k)
-    {
-      const double mk[3] = { m[0][k], m[1][k], m[2][k] };
-      WriteTangent(c, first + k, mk);
     }
   }
 };
@@ -1057,7 +1107,12 @@ struct MeshPolygonNormalWorker
   const Context<R>& C;
   const ArrayReader<R>& Moved;
   double* CellNormals;
+  // Each polygon's orientation (-1 or 1), which depends on the input alone: found and stored in
+  // Signs, or (Known) read from it, which spares reading the input points and normals again.
+  signed char* Signs;
+  bool Known;
 
+  template <bool SignKnown>
   VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
   {
     const PolyLinks& mesh = *this->C.Polys;
@@ -1065,6 +1120,27 @@ struct MeshPolygonNormalWorker
     double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
     double m0[3], p0[3];
     this->Moved.Get3(mesh.Conn[b], m0);
+    if (SignKnown)
+    {
+      for (vtkIdType k = b + 1; k + 1 < e; ++k)
+      {
+        double m1[3], m2[3], x[3];
+        this->Moved.Get3(mesh.Conn[k], m1);
+        this->Moved.Get3(mesh.Conn[k + 1], m2);
+        const double a1[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
+        const double a2[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
+        Cross(a1, a2, x);
+        moved[0] += x[0];
+        moved[1] += x[1];
+        moved[2] += x[2];
+      }
+      const double sign = this->Signs[cell] < 0 ? -1.0 : 1.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = sign * moved[k];
+      }
+      return;
+    }
     this->C.Points->Get3(mesh.Conn[b], p0);
     for (vtkIdType k = b; k < e; ++k)
     {
@@ -1095,6 +1171,7 @@ struct MeshPolygonNormalWorker
       orig[2] += x[2];
     }
     const double sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+    this->Signs[cell] = sign < 0.0 ? -1 : 1;
     for (int k = 0; k < 3; ++k)
     {
       out[k] = sign * moved[k];
@@ -1109,18 +1186,29 @@ struct MeshPolygonNormalWorker
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
+    if (this->Known)
+    {
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        this->template PolygonNormal<true>(cell, this->CellNormals + 3 * cell);
+      }
+      return;
+    }
     for (vtkIdType cell = begin; cell < end; ++cell)
     {
-      this->PolygonNormal(cell, this->CellNormals + 3 * cell);
+      this->template PolygonNormal<false>(cell, this->CellNormals + 3 * cell);
     }
   }
 };
 
-// Each point's normal: the sum of its polygons' in increasing polygon order.
+// Each point's normal: the sum of its polygons' in increasing polygon order, then normalised and
+// its tangent re-orthogonalised in blocks (BlockOps: WriteNormalAndTangent's bits).
 template <typename R>
-struct MeshPointNormalWorker
+struct MeshPointNormalWorker : BlockOps<R>
 {
-  const Context<R>& C;
+  using Base = BlockOps<R>;
+  using Base::Block;
+  using typename Base::Lanes;
   const double* CellNormals;
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -1130,18 +1218,37 @@ struct MeshPointNormalWorker
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
-    const PolyLinks& mesh = *this->C.Polys;
-    for (vtkIdType i = begin; i < end; ++i)
+    const Context<R>& c = this->C;
+    const PolyLinks& mesh = *c.Polys;
+    alignas(64) Lanes n[3], fallback[3], m[3], x[4];
+    for (vtkIdType first = begin; first < end; first += Block)
     {
-      double sum[3] = { 0.0, 0.0, 0.0 };
-      for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+      const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
+      for (int k = 0; k < count; ++k)
       {
-        const double* x = this->CellNormals + 3 * mesh.Links[l];
-        sum[0] += x[0];
-        sum[1] += x[1];
-        sum[2] += x[2];
+        const vtkIdType i = first + k;
+        double sum[3] = { 0.0, 0.0, 0.0 };
+        for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+        {
+          const double* p = this->CellNormals + 3 * mesh.Links[l];
+          sum[0] += p[0];
+          sum[1] += p[1];
+          sum[2] += p[2];
+        }
+        m[0][k] = sum[0];
+        m[1][k] = sum[1];
+        m[2][k] = sum[2];
       }
-      WriteNormalAndTangent(this->C, i, sum);
+      this->UnitNormals(first, count, n, fallback);
+      this->Normals(first, count, fallback, m);
+      if (c.OutTangents && c.OutTangents->NC == 4)
+      {
+        this->template Tangents<4>(first, count, m, x);
+      }
+      else if (c.OutTangents)
+      {
+        this->template Tangents<3>(first, count, m, x);
+      }
     }
   }
 };
@@ -1374,7 +1481,8 @@ struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
   {
-    std::array<const void*, 5> Objects = {}; // polys, offsets, connectivity, points, their data
+    // polys, offsets, connectivity, points, their data, normals, texture coordinates
+    std::array<const void*, 7> Objects = {};
     vtkIdType NumPoints = -1;
   };
 
@@ -1396,6 +1504,20 @@ struct vtkDisplacementMapFilter::MeshCache
   vtkTimeStamp NormalsTime;
   Buffer<double> UnitNormals;
   bool HaveUnitNormals = false;
+
+  // Mesh's polygon orientations: from the polygons, the points and the normals.
+  Key SignsKey;
+  vtkTimeStamp SignsTime;
+  Buffer<signed char> Signs;
+  bool HaveSigns = false;
+
+  // The fitted derivatives (Context::Fits): from the polygons, points, normals and texture
+  // coordinates; Layout says which were fitted (1: P_s and P_t, 2: n_s and n_t).
+  Key FitsKey;
+  vtkTimeStamp FitsTime;
+  int FitsLayout = 0;
+  Buffer<double> Fits;
+  bool HaveFits = false;
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
   {
@@ -1700,7 +1822,7 @@ int vtkDisplacementMapFilter::RequestData(
           }
         });
       ctx.UnitNormals = unitNormals.data();
-      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr };
+      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
       cache.NormalsKey.NumPoints = numPts;
       cache.NormalsTime.Modified();
       cache.HaveUnitNormals = true;
@@ -1708,6 +1830,27 @@ int vtkDisplacementMapFilter::RequestData(
     if (useDerivs)
     {
       EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
+    }
+    const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
+      (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
+    MeshCache::Key fitsKey = groupsKey;
+    fitsKey.Objects[5] = normals;
+    fitsKey.Objects[6] = tcoords;
+    bool keepFits = false;
+    if (fitsLayout != 0)
+    {
+      const vtkMTimeType fitsChanged =
+        std::max({ groupsChanged, normals->GetMTime(), tcoords->GetMTime() });
+      ctx.FitsKnown = cache.HaveFits && cache.FitsLayout == fitsLayout &&
+        MeshCache::Fresh(cache.FitsKey, fitsKey, fitsChanged, cache.FitsTime);
+      ctx.FitStride = ((fitsLayout & 1) ? 6 : 0) + ((fitsLayout & 2) ? 6 : 0);
+      if (!ctx.FitsKnown)
+      {
+        cache.HaveFits = false;
+        cache.Fits.Resize(static_cast<size_t>(ctx.FitStride) * numPts);
+        keepFits = true;
+      }
+      ctx.Fits = cache.Fits.data();
     }
     // Coincident points (seams, poles; from the input points alone) as groups of (representative,
     // member) in increasing order, so that every sum over a group has one order whatever the thread
@@ -1789,7 +1932,7 @@ int vtkDisplacementMapFilter::RequestData(
       auto displace = [&](auto kind)
       {
         constexpr int interp = decltype(kind)::value;
-        DisplaceWorker<interp, T, R> worker{ ctx, tex };
+        DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
         // Pass 1 (threaded), the seam groups and Mesh's links (serial) read only the input and
         // write apart: they run side by side, the serial ones on whichever threads pass 1 leaves.
         vtkSMPTools::For(0, 3, 1,
@@ -1868,6 +2011,13 @@ int vtkDisplacementMapFilter::RequestData(
         run(static_cast<const double*>(raw));
         break;
     }
+    if (keepFits)
+    {
+      cache.FitsKey = fitsKey;
+      cache.FitsLayout = fitsLayout;
+      cache.FitsTime.Modified();
+      cache.HaveFits = true;
+    }
     if (nonFinite > 0)
     {
       vtkWarningMacro(<< nonFinite << " height value(s) in component " << this->Component
@@ -1879,9 +2029,26 @@ int vtkDisplacementMapFilter::RequestData(
     {
       ArrayReader<R> moved(outPoints->GetData());
       Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
-      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data() };
+      MeshCache::Key signsKey = groupsKey;
+      signsKey.Objects[5] = normals;
+      const vtkMTimeType signsChanged = std::max(groupsChanged, normals->GetMTime());
+      const bool haveSigns = cache.HaveSigns &&
+        MeshCache::Fresh(cache.SignsKey, signsKey, signsChanged, cache.SignsTime);
+      if (!haveSigns)
+      {
+        cache.HaveSigns = false;
+        cache.Signs.Resize(std::max<vtkIdType>(mesh.NumCells, 1));
+      }
+      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data(), cache.Signs.data(),
+        haveSigns };
       vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
-      MeshPointNormalWorker<R> worker{ ctx, cellNormals.data() };
+      if (!haveSigns)
+      {
+        cache.SignsKey = signsKey;
+        cache.SignsTime.Modified();
+        cache.HaveSigns = true;
+      }
+      MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
       vtkSMPTools::For(0, numPts, Grain, worker);
     }
 

@@ -248,8 +248,9 @@ protected:
   vtkIdType NonFiniteCount = 0;
 
   // What depends on the input alone (seam groups, point-to-polygon links, Exact's unit
-  // normals), kept while the input's points, polygons and normals do not change: moving a
-  // Scale slider or swapping the height map does not rebuild it.
+  // normals, Mesh's polygon orientations, the fitted derivatives), kept while the input's points,
+  // polygons, normals and texture coordinates do not change: moving a Scale slider or swapping the
+  // height map does not rebuild it.
   struct MeshCache;
   std::unique_ptr<MeshCache> Cache;
 
