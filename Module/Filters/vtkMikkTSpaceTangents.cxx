@@ -1466,6 +1466,18 @@ VTK_ALWAYS_INLINE void Rotate(const Lanes8& x, Lanes8& r)
     (Rotation + 7) & 7);
 }
 
+// s = the sum of all eight lanes of x, in every lane.
+VTK_ALWAYS_INLINE void SumOfLanes(const Lanes8& x, Lanes8& s)
+{
+  Lanes8 r;
+  Rotate<4>(x, r);
+  s = x + r;
+  Rotate<2>(s, r);
+  s += r;
+  Rotate<1>(s, r);
+  s += r;
+}
+
 // Lanes of x equal to some other lane of x, or of y to some other lane of y (rotations by
 // 1 to 4 meet every pair).
 template <int Rotation>
@@ -1548,19 +1560,9 @@ VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
   // by composing link with itself (variable shuffles: vpermd).
   const Lanes8 real = Lane < k;
   const Lanes8 noIn = (in == 0) & real;
-  Lanes8 r, starts = noIn & 1, start = noIn & Lane;
-  Rotate<4>(starts, r);
-  starts += r;
-  Rotate<2>(starts, r);
-  starts += r;
-  Rotate<1>(starts, r);
-  starts += r;
-  Rotate<4>(start, r);
-  start += r;
-  Rotate<2>(start, r);
-  start += r;
-  Rotate<1>(start, r);
-  start += r;
+  Lanes8 starts, start;
+  SumOfLanes(noIn & 1, starts);
+  SumOfLanes(noIn & Lane, start);
   const Lanes8 end = (link < 0) & real;
   link = (link & ~end) | (start & end);
   link = (link & real) | (Lane & ~real);
