@@ -1760,7 +1760,12 @@ int vtkDisplacementMapFilter::RequestData(
     linksKey.Objects = { polys, polys->GetOffsetsArray(), polys->GetConnectivityArray(), nullptr,
       nullptr };
     linksKey.NumPoints = numPts;
-    const vtkMTimeType linksChanged = std::max({ polys->GetMTime(),
+    // Data changed in place may be announced by the polydata's or the point data's Modified()
+    // alone (the pipeline sees it): their own MTimes count too, not only the arrays'.
+    const vtkMTimeType polyDataChanged = input->vtkObject::GetMTime();
+    const vtkMTimeType pointDataChanged =
+      std::max(polyDataChanged, input->GetPointData()->vtkObject::GetMTime());
+    const vtkMTimeType linksChanged = std::max({ polyDataChanged, polys->GetMTime(),
       polys->GetOffsetsArray()->GetMTime(), polys->GetConnectivityArray()->GetMTime() });
     MeshCache::Key groupsKey = linksKey;
     groupsKey.Objects[3] = inPoints;
@@ -1801,7 +1806,8 @@ int vtkDisplacementMapFilter::RequestData(
       normalsKey.Objects[0] = normals;
       normalsKey.NumPoints = numPts;
       if (cache.HaveUnitNormals &&
-        MeshCache::Fresh(cache.NormalsKey, normalsKey, normals->GetMTime(), cache.NormalsTime))
+        MeshCache::Fresh(cache.NormalsKey, normalsKey,
+          std::max(pointDataChanged, normals->GetMTime()), cache.NormalsTime))
       {
         ctx.UnitNormals = unitNormals.data();
       }
@@ -1840,7 +1846,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (fitsLayout != 0)
     {
       const vtkMTimeType fitsChanged =
-        std::max({ groupsChanged, normals->GetMTime(), tcoords->GetMTime() });
+        std::max({ groupsChanged, pointDataChanged, normals->GetMTime(), tcoords->GetMTime() });
       ctx.FitsKnown = cache.HaveFits && cache.FitsLayout == fitsLayout &&
         MeshCache::Fresh(cache.FitsKey, fitsKey, fitsChanged, cache.FitsTime);
       ctx.FitStride = ((fitsLayout & 1) ? 6 : 0) + ((fitsLayout & 2) ? 6 : 0);
@@ -2031,7 +2037,8 @@ int vtkDisplacementMapFilter::RequestData(
       Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
       MeshCache::Key signsKey = groupsKey;
       signsKey.Objects[5] = normals;
-      const vtkMTimeType signsChanged = std::max(groupsChanged, normals->GetMTime());
+      const vtkMTimeType signsChanged =
+        std::max({ groupsChanged, pointDataChanged, normals->GetMTime() });
       const bool haveSigns = cache.HaveSigns &&
         MeshCache::Fresh(cache.SignsKey, signsKey, signsChanged, cache.SignsTime);
       if (!haveSigns)
