@@ -353,6 +353,7 @@ public:
     this->N = n;
   }
   V* data() const { return this->P; }
+  size_t size() const { return this->N; }
   V& operator[](size_t i) const { return this->P[i]; }
 
 private:
@@ -1519,6 +1520,14 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> Fits;
   bool HaveFits = false;
 
+  // The memory held, in bytes.
+  size_t Bytes() const
+  {
+    return sizeof(vtkIdType) * (this->Links.Offsets.size() + this->Links.Links.size()) +
+      sizeof(this->Groups[0]) * this->Groups.capacity() +
+      sizeof(double) * (this->UnitNormals.size() + this->Fits.size()) + this->Signs.size();
+  }
+
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
   {
     return built.Objects == now.Objects && built.NumPoints == now.NumPoints &&
@@ -1579,6 +1588,12 @@ int vtkDisplacementMapFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkImageData* image = vtkImageData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (this->GetReleaseDataFlag())
+  {
+    // Also when this execution returns early (Scale 0, empty or bad input): the flag was set
+    // after an execution that kept data.
+    this->Cache.reset(new MeshCache);
+  }
   if (!input || !output)
   {
     vtkErrorMacro("Input port 0 needs a vtkPolyData.");
@@ -2168,4 +2183,5 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
   os << indent << "NonFiniteCount (last scan of the height map): " << this->NonFiniteCount << "\n";
+  os << indent << "Mesh data kept between executions: " << this->Cache->Bytes() << " bytes\n";
 }

@@ -750,6 +750,38 @@ TEST(DisplacementMapFilter, ReExecutionAfterPieceChange)
   }
 }
 
+// The mesh data kept between executions shows in PrintSelf, and ReleaseDataFlag gives it back
+// (also when the next execution returns early, as Scale 0 does).
+TEST(DisplacementMapFilter, KeptDataIsPrintedAndReleased)
+{
+  const Surface s = Torus();
+  auto mesh = MakeMesh(s, 48, 24, false);
+  vtkNew<vtkDisplacementMapFilter> f;
+  f->SetInputData(0, mesh);
+  f->SetInputData(1, MakeHeightImage(s.Height, 64, 32));
+  f->SetMidlevel(0.5);
+  auto kept = [&]()
+  {
+    std::ostringstream os;
+    f->Print(os);
+    const std::string key = "Mesh data kept between executions: ";
+    const size_t at = os.str().find(key);
+    EXPECT_NE(at, std::string::npos);
+    return at == std::string::npos ? -1.0 : std::stod(os.str().substr(at + key.size()));
+  };
+  EXPECT_EQ(kept(), 0.0);
+  f->Update();
+  // At least the unit normals and the fits (P_s, P_t, n_s, n_t) of Exact: 15 doubles a point.
+  EXPECT_GE(kept(), 15.0 * sizeof(double) * mesh->GetNumberOfPoints());
+  f->SetReleaseDataFlag(true);
+  f->SetScale(0.0);
+  f->Update();
+  EXPECT_EQ(kept(), 0.0);
+  f->SetScale(0.1);
+  f->Update();
+  EXPECT_EQ(kept(), 0.0);
+}
+
 // Scale 0 changes nothing, to the bit (points in every mode; normals and tangents in the
 // modes that derive them from the height map).
 TEST(DisplacementMapFilter, ScaleZeroIsIdentity)
