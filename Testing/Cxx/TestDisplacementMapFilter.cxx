@@ -550,6 +550,11 @@ void ExpectFreshAfter(vtkDisplacementMapFilter* f, const char* what, Change&& ch
   fresh->SetNormalMode(f->GetNormalMode());
   fresh->SetScale(f->GetScale());
   fresh->SetMidlevel(f->GetMidlevel());
+  fresh->SetComponent(f->GetComponent());
+  fresh->SetWrap(f->GetWrap());
+  fresh->SetInterpolation(f->GetInterpolation());
+  fresh->SetMergeSeams(f->GetMergeSeams());
+  fresh->SetSeamTolerance(f->GetSeamTolerance());
   fresh->Update();
   const int mode = f->GetNormalMode();
   EXPECT_TRUE(SameOutput(f->GetOutput(), fresh->GetOutput())) << what << ", mode " << mode;
@@ -717,6 +722,57 @@ TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
         f->SetScale(0.25);
       });
     vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+  }
+}
+
+// The kept data against every setting changed between executions (none of them is in its keys,
+// so each must either not matter to it or rebuild it).
+TEST(DisplacementMapFilter, ReExecutionAfterSettingsChange)
+{
+  const Surface s = Torus();
+  const int U = 48, V = 24;
+  // Two channels: the torus' heights, and another smooth field.
+  auto first = MakeHeightImage(s.Height, 128, 64);
+  auto second = MakeHeightImage([](double u, double v)
+    { return 0.5 + 0.4 * std::sin(6 * Pi * u) * std::cos(2 * Pi * v); },
+    128, 64);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(128, 64, 1);
+  image->AllocateScalars(VTK_DOUBLE, 2);
+  for (vtkIdType k = 0; k < 128 * 64; ++k)
+  {
+    image->GetPointData()->GetScalars()->SetComponent(
+      k, 0, first->GetPointData()->GetScalars()->GetComponent(k, 0));
+    image->GetPointData()->GetScalars()->SetComponent(
+      k, 1, second->GetPointData()->GetScalars()->GetComponent(k, 0));
+  }
+  auto mesh = MakeMesh(s, U, V, false);
+  // One seam duplicate 1e-4 off its twin: merged or not by SeamTolerance.
+  vtkDataArray* pts = mesh->GetPoints()->GetData();
+  pts->SetComponent(5 * (U + 1) + U, 2, pts->GetComponent(5 * (U + 1) + U, 2) + 1e-4);
+  for (int mode : AllModes)
+  {
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, image);
+    f->SetNormalMode(mode);
+    f->SetMidlevel(0.5);
+    f->SetScale(0.2);
+    for (int other : AllModes)
+    {
+      if (other != mode)
+      {
+        ExpectFreshAfter(f, "NormalMode", [&]() { f->SetNormalMode(other); });
+      }
+    }
+    ExpectFreshAfter(f, "NormalMode back", [&]() { f->SetNormalMode(mode); });
+    ExpectFreshAfter(f, "Interpolation", [&]() { f->SetInterpolationToCubic(); });
+    ExpectFreshAfter(f, "Wrap", [&]() { f->SetWrapToClampToEdge(); });
+    ExpectFreshAfter(f, "Component", [&]() { f->SetComponent(1); });
+    ExpectFreshAfter(f, "SeamTolerance", [&]() { f->SetSeamTolerance(1e-3); });
+    ExpectFreshAfter(f, "MergeSeams off", [&]() { f->MergeSeamsOff(); });
+    ExpectFreshAfter(f, "MergeSeams on", [&]() { f->MergeSeamsOn(); });
+    ExpectFreshAfter(f, "SeamTolerance back", [&]() { f->SetSeamTolerance(1e-6); });
   }
 }
 
