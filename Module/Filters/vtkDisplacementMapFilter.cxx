@@ -1588,7 +1588,11 @@ int vtkDisplacementMapFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkImageData* image = vtkImageData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (this->GetReleaseDataFlag())
+  // The caller wants memory back after each update (this filter's flag, or every data
+  // object's): nothing is kept for the next one.
+  const bool keepNothing =
+    this->GetReleaseDataFlag() || vtkDataObject::GetGlobalReleaseDataFlag() != 0;
+  if (keepNothing)
   {
     // Also when this execution returns early (Scale 0, empty or bad input): the flag was set
     // after an execution that kept data.
@@ -2126,9 +2130,8 @@ int vtkDisplacementMapFilter::RequestData(
     return 1;
   };
   const int ok = allFloat ? execute(float()) : execute(double());
-  if (this->GetReleaseDataFlag())
+  if (keepNothing)
   {
-    // The caller wants memory back after each update: keep nothing for the next one.
     this->Cache.reset(new MeshCache);
   }
   return ok;

@@ -806,8 +806,8 @@ TEST(DisplacementMapFilter, ReExecutionAfterPieceChange)
   }
 }
 
-// The mesh data kept between executions shows in PrintSelf, and ReleaseDataFlag gives it back
-// (also when the next execution returns early, as Scale 0 does).
+// The mesh data kept between executions shows in PrintSelf, and ReleaseDataFlag (the filter's or
+// the global one) gives it back (also when the next execution returns early, as Scale 0 does).
 TEST(DisplacementMapFilter, KeptDataIsPrintedAndReleased)
 {
   const Surface s = Torus();
@@ -835,6 +835,16 @@ TEST(DisplacementMapFilter, KeptDataIsPrintedAndReleased)
   EXPECT_EQ(kept(), 0.0);
   f->SetScale(0.1);
   f->Update();
+  EXPECT_EQ(kept(), 0.0);
+  // The global flag asks the same of every algorithm.
+  f->SetReleaseDataFlag(false);
+  f->SetScale(0.2);
+  f->Update();
+  EXPECT_GT(kept(), 0.0);
+  vtkDataObject::SetGlobalReleaseDataFlag(1);
+  f->SetScale(0.3);
+  f->Update();
+  vtkDataObject::SetGlobalReleaseDataFlag(0);
   EXPECT_EQ(kept(), 0.0);
 }
 
