@@ -1712,6 +1712,16 @@ int vtkDisplacementMapFilter::RequestData(
   {
     used.push_back(inTangents);
   }
+  for (vtkDataArray* a : used)
+  {
+    if (a->GetNumberOfTuples() < numPts)
+    {
+      vtkErrorMacro("The point array " << (a->GetName() ? a->GetName() : "(unnamed)") << " has "
+                                       << a->GetNumberOfTuples() << " tuples for " << numPts
+                                       << " points; give it one tuple per point.");
+      return 0;
+    }
+  }
   const bool allFloat = std::all_of(used.begin(), used.end(),
     [](vtkDataArray* a) { return a->GetDataType() == VTK_FLOAT && a->HasStandardMemoryLayout(); });
   auto execute = [&](auto precision) -> int

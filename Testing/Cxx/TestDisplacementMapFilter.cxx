@@ -1156,6 +1156,13 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
   auto noNormals = vtkSmartPointer<vtkPolyData>::New();
   noNormals->DeepCopy(good);
   noNormals->GetPointData()->SetNormals(nullptr);
+  // Arrays shorter than the points (read out of bounds before they were checked).
+  auto shortNormals = vtkSmartPointer<vtkPolyData>::New();
+  shortNormals->DeepCopy(good);
+  shortNormals->GetPointData()->GetNormals()->SetNumberOfTuples(3);
+  auto shortTCoords = vtkSmartPointer<vtkPolyData>::New();
+  shortTCoords->DeepCopy(good);
+  shortTCoords->GetPointData()->GetTCoords()->SetNumberOfTuples(3);
   vtkNew<vtkImageData> empty;
   vtkNew<vtkImageData> volume;
   volume->SetDimensions(4, 4, 2);
@@ -1175,6 +1182,18 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
       [&](vtkDisplacementMapFilter* f)
       {
         f->SetInputData(0, noNormals);
+        f->SetInputData(1, image);
+      } },
+    { "short normals", "Normals has 3 tuples for 25 points",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, shortNormals);
+        f->SetInputData(1, image);
+      } },
+    { "short tcoords", "TCoords has 3 tuples for 25 points",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, shortTCoords);
         f->SetInputData(1, image);
       } },
     { "empty image", "empty",
