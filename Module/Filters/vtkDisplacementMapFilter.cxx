@@ -1477,7 +1477,9 @@ vtkIdType CountNonFinite(const Texels<T>& tex)
 
 //------------------------------------------------------------------------------
 // Each part is valid while the objects it was built from are the same ones (compared, never
-// dereferenced) and none of them was modified after its build time.
+// dereferenced) and none of them, nor the polydata or its point data that hold them, was
+// modified after its build time. A new object at a freed one's address is no risk: its
+// construction (vtkObject::Modified) comes after the build time.
 struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
