@@ -353,6 +353,7 @@ public:
     this->N = n;
   }
   V* data() const { return this->P; }
+  size_t size() const { return this->N; }
   V& operator[](size_t i) const { return this->P[i]; }
 
 private:
@@ -1476,7 +1477,9 @@ vtkIdType CountNonFinite(const Texels<T>& tex)
 
 //------------------------------------------------------------------------------
 // Each part is valid while the objects it was built from are the same ones (compared, never
-// dereferenced) and none of them was modified after its build time.
+// dereferenced) and none of them, nor the polydata or its point data that hold them, was
+// modified after its build time. A new object at a freed one's address is no risk: its
+// construction (vtkObject::Modified) comes after the build time.
 struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
@@ -1518,6 +1521,14 @@ struct vtkDisplacementMapFilter::MeshCache
   int FitsLayout = 0;
   Buffer<double> Fits;
   bool HaveFits = false;
+
+  // The memory held, in bytes.
+  size_t Bytes() const
+  {
+    return sizeof(vtkIdType) * (this->Links.Offsets.size() + this->Links.Links.size()) +
+      sizeof(this->Groups[0]) * this->Groups.capacity() +
+      sizeof(double) * (this->UnitNormals.size() + this->Fits.size()) + this->Signs.size();
+  }
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
   {
@@ -1579,6 +1590,16 @@ int vtkDisplacementMapFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkImageData* image = vtkImageData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // The caller wants memory back after each update (this filter's flag, or every data
+  // object's): nothing is kept for the next one.
+  const bool keepNothing =
+    this->GetReleaseDataFlag() || vtkDataObject::GetGlobalReleaseDataFlag() != 0;
+  if (keepNothing)
+  {
+    // Also when this execution returns early (Scale 0, empty or bad input): the flag was set
+    // after an execution that kept data.
+    this->Cache.reset(new MeshCache);
+  }
   if (!input || !output)
   {
     vtkErrorMacro("Input port 0 needs a vtkPolyData.");
@@ -1693,6 +1714,16 @@ int vtkDisplacementMapFilter::RequestData(
   {
     used.push_back(inTangents);
   }
+  for (vtkDataArray* a : used)
+  {
+    if (a->GetNumberOfTuples() < numPts)
+    {
+      vtkErrorMacro("The point array " << (a->GetName() ? a->GetName() : "(unnamed)") << " has "
+                                       << a->GetNumberOfTuples() << " tuples for " << numPts
+                                       << " points; give it one tuple per point.");
+      return 0;
+    }
+  }
   const bool allFloat = std::all_of(used.begin(), used.end(),
     [](vtkDataArray* a) { return a->GetDataType() == VTK_FLOAT && a->HasStandardMemoryLayout(); });
   auto execute = [&](auto precision) -> int
@@ -1760,7 +1791,12 @@ int vtkDisplacementMapFilter::RequestData(
     linksKey.Objects = { polys, polys->GetOffsetsArray(), polys->GetConnectivityArray(), nullptr,
       nullptr };
     linksKey.NumPoints = numPts;
-    const vtkMTimeType linksChanged = std::max({ polys->GetMTime(),
+    // Data changed in place may be announced by the polydata's or the point data's Modified()
+    // alone (the pipeline sees it): their own MTimes count too, not only the arrays'.
+    const vtkMTimeType polyDataChanged = input->vtkObject::GetMTime();
+    const vtkMTimeType pointDataChanged =
+      std::max(polyDataChanged, input->GetPointData()->vtkObject::GetMTime());
+    const vtkMTimeType linksChanged = std::max({ polyDataChanged, polys->GetMTime(),
       polys->GetOffsetsArray()->GetMTime(), polys->GetConnectivityArray()->GetMTime() });
     MeshCache::Key groupsKey = linksKey;
     groupsKey.Objects[3] = inPoints;
@@ -1801,7 +1837,8 @@ int vtkDisplacementMapFilter::RequestData(
       normalsKey.Objects[0] = normals;
       normalsKey.NumPoints = numPts;
       if (cache.HaveUnitNormals &&
-        MeshCache::Fresh(cache.NormalsKey, normalsKey, normals->GetMTime(), cache.NormalsTime))
+        MeshCache::Fresh(cache.NormalsKey, normalsKey,
+          std::max(pointDataChanged, normals->GetMTime()), cache.NormalsTime))
       {
         ctx.UnitNormals = unitNormals.data();
       }
@@ -1840,7 +1877,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (fitsLayout != 0)
     {
       const vtkMTimeType fitsChanged =
-        std::max({ groupsChanged, normals->GetMTime(), tcoords->GetMTime() });
+        std::max({ groupsChanged, pointDataChanged, normals->GetMTime(), tcoords->GetMTime() });
       ctx.FitsKnown = cache.HaveFits && cache.FitsLayout == fitsLayout &&
         MeshCache::Fresh(cache.FitsKey, fitsKey, fitsChanged, cache.FitsTime);
       ctx.FitStride = ((fitsLayout & 1) ? 6 : 0) + ((fitsLayout & 2) ? 6 : 0);
@@ -2031,7 +2068,8 @@ int vtkDisplacementMapFilter::RequestData(
       Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
       MeshCache::Key signsKey = groupsKey;
       signsKey.Objects[5] = normals;
-      const vtkMTimeType signsChanged = std::max(groupsChanged, normals->GetMTime());
+      const vtkMTimeType signsChanged =
+        std::max({ groupsChanged, pointDataChanged, normals->GetMTime() });
       const bool haveSigns = cache.HaveSigns &&
         MeshCache::Fresh(cache.SignsKey, signsKey, signsChanged, cache.SignsTime);
       if (!haveSigns)
@@ -2104,9 +2142,8 @@ int vtkDisplacementMapFilter::RequestData(
     return 1;
   };
   const int ok = allFloat ? execute(float()) : execute(double());
-  if (this->GetReleaseDataFlag())
+  if (keepNothing)
   {
-    // The caller wants memory back after each update: keep nothing for the next one.
     this->Cache.reset(new MeshCache);
   }
   return ok;
@@ -2161,4 +2198,5 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
   os << indent << "NonFiniteCount (last scan of the height map): " << this->NonFiniteCount << "\n";
+  os << indent << "Mesh data kept between executions: " << this->Cache->Bytes() << " bytes\n";
 }

@@ -98,6 +98,11 @@
  * are requested downstream. Threads: vtkSMPTools, with results independent of the number of
  * threads.
  *
+ * Memory: what depends on the input surface alone (seam groups, point-to-polygon links, Exact's
+ * unit normals and fitted derivatives, Mesh's polygon orientations; about 180 bytes a point
+ * for Exact on triangles) is kept between executions, so that a new Scale or height map does
+ * not rebuild it; PrintSelf gives its size. With ReleaseDataFlag on, nothing is kept.
+ *
  * @sa vtkParametricSurfaceSource vtkHeightMapToNormalMap vtkWarpScalar vtkPolyDataNormals
  */
 
@@ -250,7 +255,7 @@ protected:
   // What depends on the input alone (seam groups, point-to-polygon links, Exact's unit
   // normals, Mesh's polygon orientations, the fitted derivatives), kept while the input's points,
   // polygons, normals and texture coordinates do not change: moving a Scale slider or swapping the
-  // height map does not rebuild it.
+  // height map does not rebuild it. Dropped at each execution when ReleaseDataFlag is on.
   struct MeshCache;
   std::unique_ptr<MeshCache> Cache;
 

@@ -524,6 +524,330 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
   }
 }
 
+// Outputs equal to the bit: points, normals and tangents (when there are any).
+bool SameOutput(vtkPolyData* a, vtkPolyData* b)
+{
+  vtkDataArray* ta = a->GetPointData()->GetArray("Tangents");
+  vtkDataArray* tb = b->GetPointData()->GetArray("Tangents");
+  return SameBits(a->GetPoints()->GetData(), b->GetPoints()->GetData()) &&
+    SameBits(a->GetPointData()->GetNormals(), b->GetPointData()->GetNormals()) &&
+    ((!ta && !tb) || (ta && tb && SameBits(ta, tb)));
+}
+
+// Runs @a change on the input of a filter that has executed, re-executes, and expects the output
+// of a fresh filter (and a different one than before, so that a stale cache would show).
+template <typename Change>
+void ExpectFreshAfter(vtkDisplacementMapFilter* f, const char* what, Change&& change)
+{
+  auto before = vtkSmartPointer<vtkPolyData>::New();
+  f->Update();
+  before->DeepCopy(f->GetOutput());
+  change();
+  f->Update();
+  vtkNew<vtkDisplacementMapFilter> fresh;
+  fresh->SetInputData(0, f->GetInputDataObject(0, 0));
+  fresh->SetInputData(1, f->GetInputDataObject(1, 0));
+  fresh->SetNormalMode(f->GetNormalMode());
+  fresh->SetScale(f->GetScale());
+  fresh->SetMidlevel(f->GetMidlevel());
+  fresh->SetComponent(f->GetComponent());
+  fresh->SetWrap(f->GetWrap());
+  fresh->SetInterpolation(f->GetInterpolation());
+  fresh->SetMergeSeams(f->GetMergeSeams());
+  fresh->SetSeamTolerance(f->GetSeamTolerance());
+  fresh->Update();
+  const int mode = f->GetNormalMode();
+  EXPECT_TRUE(SameOutput(f->GetOutput(), fresh->GetOutput())) << what << ", mode " << mode;
+  EXPECT_FALSE(SameOutput(before, fresh->GetOutput())) << what << " changed nothing, mode " << mode;
+}
+
+// VTK's contract for data changed in place is that some object the pipeline sees is Modified():
+// the polydata or its point data will do (vtkPoints::SetPoint and vtkDataArray::SetComponent
+// leave the MTimes alone). The kept mesh data must follow such a change as the pipeline does.
+TEST(DisplacementMapFilter, ReExecutionAfterContainerModified)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  const int U = 48, V = 24;
+  for (int mode : AllModes)
+  {
+    auto mesh = MakeMesh(s, U, V, false, true);
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, image);
+    f->SetNormalMode(mode);
+    f->SetMidlevel(0.5);
+    f->SetScale(0.2);
+    ExpectFreshAfter(f, "points in place, then the polydata Modified()",
+      [&]()
+      {
+        // One seam duplicate pulled off its twin, and the points near it moved.
+        vtkPoints* pts = mesh->GetPoints();
+        for (vtkIdType i = 4 * (U + 1) + 1; i < 6 * (U + 1); ++i)
+        {
+          double p[3];
+          pts->GetPoint(i, p);
+          p[2] += 0.05;
+          pts->SetPoint(i, p);
+        }
+        mesh->Modified();
+      });
+    ExpectFreshAfter(f, "normals in place, then the point data Modified()",
+      [&]()
+      {
+        vtkDataArray* nrm = mesh->GetPointData()->GetNormals();
+        for (vtkIdType i = 0; i < nrm->GetNumberOfTuples(); ++i)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            nrm->SetComponent(i, k, -nrm->GetComponent(i, k));
+          }
+        }
+        mesh->GetPointData()->Modified();
+      });
+    ExpectFreshAfter(f, "texture coordinates in place, then the polydata Modified()",
+      [&]()
+      {
+        vtkDataArray* tc = mesh->GetPointData()->GetTCoords();
+        for (vtkIdType i = 0; i < tc->GetNumberOfTuples(); ++i)
+        {
+          tc->SetComponent(i, 0, 1.01 * tc->GetComponent(i, 0) + 0.01);
+        }
+        mesh->Modified();
+      });
+  }
+}
+
+// The kept mesh data against every other way the input can change between executions: a new
+// input object (which may reuse a freed one's address), a copy of another mesh into the same
+// object, another active array, dPdu/dPdv appearing and going, another precision, another thread
+// count, another piece.
+TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
+{
+  const Surface torus = Torus(), sphere = Sphere();
+  auto image = MakeHeightImage(torus.Height, 128, 64);
+  const int U = 48, V = 24;
+  for (int mode : AllModes)
+  {
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputData(1, image);
+    f->SetNormalMode(mode);
+    f->SetMidlevel(0.5);
+    f->SetScale(0.2);
+    auto mesh = MakeMesh(torus, U, V, false);
+    f->SetInputData(0, mesh);
+    // The first input and everything that refers to it freed before the next one is made, so
+    // that its objects may come back at the same addresses.
+    ExpectFreshAfter(f, "a new input object",
+      [&]()
+      {
+        f->SetInputData(0, nullptr);
+        f->GetOutput()->Initialize();
+        mesh = nullptr;
+        mesh = MakeMesh(sphere, U, V, false);
+        f->SetInputData(0, mesh);
+      });
+    ExpectFreshAfter(f, "another mesh deep-copied into the input",
+      [&]() { mesh->DeepCopy(MakeMesh(torus, U, V, false)); });
+    ExpectFreshAfter(f, "another mesh shallow-copied into the input",
+      [&]() { mesh->ShallowCopy(MakeMesh(sphere, U, V, false)); });
+    ExpectFreshAfter(f, "other texture coordinates made active by name",
+      [&]()
+      {
+        vtkNew<vtkDoubleArray> tc;
+        tc->DeepCopy(mesh->GetPointData()->GetTCoords());
+        tc->SetName("Stretched");
+        for (vtkIdType i = 0; i < tc->GetNumberOfTuples(); ++i)
+        {
+          tc->SetComponent(i, 1, 0.9 * tc->GetComponent(i, 1) + 0.02);
+        }
+        mesh->GetPointData()->AddArray(tc);
+        mesh->GetPointData()->SetActiveTCoords("Stretched");
+      });
+    ExpectFreshAfter(f, "other normals made active by name",
+      [&]()
+      {
+        vtkNew<vtkDoubleArray> nrm;
+        nrm->DeepCopy(mesh->GetPointData()->GetNormals());
+        nrm->SetName("Reversed");
+        for (vtkIdType i = 0; i < nrm->GetNumberOfValues(); ++i)
+        {
+          nrm->SetValue(i, -nrm->GetValue(i));
+        }
+        mesh->GetPointData()->AddArray(nrm);
+        mesh->GetPointData()->SetActiveNormals("Reversed");
+      });
+    // dPdu/dPdv are read in the analytic modes only, tangents in all but None.
+    const bool analytic =
+      mode == vtkDisplacementMapFilter::Approximate || mode == vtkDisplacementMapFilter::Exact;
+    auto withDerivatives = MakeMesh(sphere, U, V, true);
+    if (analytic)
+    {
+      // (The analytic dPdu/dPdv differ from the fitted P_s, P_t, so the output moves.)
+      ExpectFreshAfter(f, "dPdu and dPdv added",
+        [&]()
+        {
+          mesh->GetPointData()->AddArray(withDerivatives->GetPointData()->GetArray("dPdu"));
+          mesh->GetPointData()->AddArray(withDerivatives->GetPointData()->GetArray("dPdv"));
+        });
+      ExpectFreshAfter(f, "dPdu and dPdv removed",
+        [&]()
+        {
+          mesh->GetPointData()->RemoveArray("dPdu");
+          mesh->GetPointData()->RemoveArray("dPdv");
+        });
+    }
+    ExpectFreshAfter(f, "a float mesh",
+      [&]()
+      {
+        mesh = MakeMesh(torus, U, V, false, true);
+        f->SetInputData(0, mesh);
+      });
+    if (mode != vtkDisplacementMapFilter::None)
+    {
+      ExpectFreshAfter(f, "float input made double by a double tangent array",
+        [&]()
+        {
+          vtkNew<vtkDoubleArray> tangents;
+          tangents->DeepCopy(mesh->GetPointData()->GetArray("Tangents"));
+          mesh->GetPointData()->AddArray(tangents);
+        });
+    }
+    ExpectFreshAfter(f, "another thread count",
+      [&]()
+      {
+        vtkSMPTools::Initialize(1);
+        f->Update();
+        vtkSMPTools::Initialize(2);
+        f->SetScale(0.25);
+      });
+    vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+  }
+}
+
+// The kept data against every setting changed between executions (none of them is in its keys,
+// so each must either not matter to it or rebuild it).
+TEST(DisplacementMapFilter, ReExecutionAfterSettingsChange)
+{
+  const Surface s = Torus();
+  const int U = 48, V = 24;
+  // Two channels: the torus' heights, and another smooth field.
+  auto first = MakeHeightImage(s.Height, 128, 64);
+  auto second = MakeHeightImage([](double u, double v)
+    { return 0.5 + 0.4 * std::sin(6 * Pi * u) * std::cos(2 * Pi * v); },
+    128, 64);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(128, 64, 1);
+  image->AllocateScalars(VTK_DOUBLE, 2);
+  for (vtkIdType k = 0; k < 128 * 64; ++k)
+  {
+    image->GetPointData()->GetScalars()->SetComponent(
+      k, 0, first->GetPointData()->GetScalars()->GetComponent(k, 0));
+    image->GetPointData()->GetScalars()->SetComponent(
+      k, 1, second->GetPointData()->GetScalars()->GetComponent(k, 0));
+  }
+  auto mesh = MakeMesh(s, U, V, false);
+  // One seam duplicate 1e-4 off its twin: merged or not by SeamTolerance.
+  vtkDataArray* pts = mesh->GetPoints()->GetData();
+  pts->SetComponent(5 * (U + 1) + U, 2, pts->GetComponent(5 * (U + 1) + U, 2) + 1e-4);
+  for (int mode : AllModes)
+  {
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, image);
+    f->SetNormalMode(mode);
+    f->SetMidlevel(0.5);
+    f->SetScale(0.2);
+    for (int other : AllModes)
+    {
+      if (other != mode)
+      {
+        ExpectFreshAfter(f, "NormalMode", [&]() { f->SetNormalMode(other); });
+      }
+    }
+    ExpectFreshAfter(f, "NormalMode back", [&]() { f->SetNormalMode(mode); });
+    ExpectFreshAfter(f, "Interpolation", [&]() { f->SetInterpolationToCubic(); });
+    ExpectFreshAfter(f, "Wrap", [&]() { f->SetWrapToClampToEdge(); });
+    ExpectFreshAfter(f, "Component", [&]() { f->SetComponent(1); });
+    ExpectFreshAfter(f, "SeamTolerance", [&]() { f->SetSeamTolerance(1e-3); });
+    ExpectFreshAfter(f, "MergeSeams off", [&]() { f->MergeSeamsOff(); });
+    ExpectFreshAfter(f, "MergeSeams on", [&]() { f->MergeSeamsOn(); });
+    ExpectFreshAfter(f, "SeamTolerance back", [&]() { f->SetSeamTolerance(1e-6); });
+  }
+}
+
+// Pieces: each piece is a new input; the kept data must not leak from one piece to the next.
+TEST(DisplacementMapFilter, ReExecutionAfterPieceChange)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(40);
+  source->SetPhiResolution(20);
+  vtkNew<SphereTCoords> tcoords;
+  tcoords->SetInputConnection(source->GetOutputPort());
+  auto image = MakeHeightImage(Sphere().Height, 64, 32);
+  for (int mode : AllModes)
+  {
+    vtkNew<vtkDisplacementMapFilter> f;
+    f->SetInputConnection(0, tcoords->GetOutputPort());
+    f->SetInputData(1, image);
+    f->SetNormalMode(mode);
+    f->SetScale(0.05);
+    f->SetMidlevel(0.5);
+    f->UpdatePiece(0, 2, 0);
+    auto first = vtkSmartPointer<vtkPolyData>::New();
+    first->DeepCopy(f->GetOutput());
+    f->UpdatePiece(1, 2, 0);
+    auto piece = vtkSmartPointer<vtkPolyData>::New();
+    piece->DeepCopy(tcoords->GetOutput());
+    auto fresh = Displace(piece, image, mode, 0.05, 0.5);
+    ASSERT_EQ(first->GetNumberOfPoints(), piece->GetNumberOfPoints());
+    EXPECT_TRUE(SameOutput(f->GetOutput(), fresh)) << "mode " << mode;
+    EXPECT_FALSE(SameOutput(first, fresh)) << "mode " << mode;
+  }
+}
+
+// The mesh data kept between executions shows in PrintSelf, and ReleaseDataFlag (the filter's or
+// the global one) gives it back (also when the next execution returns early, as Scale 0 does).
+TEST(DisplacementMapFilter, KeptDataIsPrintedAndReleased)
+{
+  const Surface s = Torus();
+  auto mesh = MakeMesh(s, 48, 24, false);
+  vtkNew<vtkDisplacementMapFilter> f;
+  f->SetInputData(0, mesh);
+  f->SetInputData(1, MakeHeightImage(s.Height, 64, 32));
+  f->SetMidlevel(0.5);
+  auto kept = [&]()
+  {
+    std::ostringstream os;
+    f->Print(os);
+    const std::string key = "Mesh data kept between executions: ";
+    const size_t at = os.str().find(key);
+    EXPECT_NE(at, std::string::npos);
+    return at == std::string::npos ? -1.0 : std::stod(os.str().substr(at + key.size()));
+  };
+  EXPECT_EQ(kept(), 0.0);
+  f->Update();
+  // At least the unit normals and the fits (P_s, P_t, n_s, n_t) of Exact: 15 doubles a point.
+  EXPECT_GE(kept(), 15.0 * sizeof(double) * mesh->GetNumberOfPoints());
+  f->SetReleaseDataFlag(true);
+  f->SetScale(0.0);
+  f->Update();
+  EXPECT_EQ(kept(), 0.0);
+  f->SetScale(0.1);
+  f->Update();
+  EXPECT_EQ(kept(), 0.0);
+  // The global flag asks the same of every algorithm.
+  f->SetReleaseDataFlag(false);
+  f->SetScale(0.2);
+  f->Update();
+  EXPECT_GT(kept(), 0.0);
+  vtkDataObject::SetGlobalReleaseDataFlag(1);
+  f->SetScale(0.3);
+  f->Update();
+  vtkDataObject::SetGlobalReleaseDataFlag(0);
+  EXPECT_EQ(kept(), 0.0);
+}
+
 // Scale 0 changes nothing, to the bit (points in every mode; normals and tangents in the
 // modes that derive them from the height map).
 TEST(DisplacementMapFilter, ScaleZeroIsIdentity)
@@ -832,6 +1156,13 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
   auto noNormals = vtkSmartPointer<vtkPolyData>::New();
   noNormals->DeepCopy(good);
   noNormals->GetPointData()->SetNormals(nullptr);
+  // Arrays shorter than the points (read out of bounds before they were checked).
+  auto shortNormals = vtkSmartPointer<vtkPolyData>::New();
+  shortNormals->DeepCopy(good);
+  shortNormals->GetPointData()->GetNormals()->SetNumberOfTuples(3);
+  auto shortTCoords = vtkSmartPointer<vtkPolyData>::New();
+  shortTCoords->DeepCopy(good);
+  shortTCoords->GetPointData()->GetTCoords()->SetNumberOfTuples(3);
   vtkNew<vtkImageData> empty;
   vtkNew<vtkImageData> volume;
   volume->SetDimensions(4, 4, 2);
@@ -851,6 +1182,18 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
       [&](vtkDisplacementMapFilter* f)
       {
         f->SetInputData(0, noNormals);
+        f->SetInputData(1, image);
+      } },
+    { "short normals", "Normals has 3 tuples for 25 points",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, shortNormals);
+        f->SetInputData(1, image);
+      } },
+    { "short tcoords", "TCoords has 3 tuples for 25 points",
+      [&](vtkDisplacementMapFilter* f)
+      {
+        f->SetInputData(0, shortTCoords);
         f->SetInputData(1, image);
       } },
     { "empty image", "empty",
