@@ -1,5 +1,6 @@
 #include "vtkMikkTSpaceTangents.h"
 
+#include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMemory.h"
 #include "vtkSurfaceDetailVectorize.h"
@@ -2565,6 +2566,13 @@ int vtkMikkTSpaceTangents::RequestData(
   if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro("The input has no polygons or triangle strips; tangents need a surface.");
+    return 0;
+  }
+  if (!vtkSurfaceDetailCells::PointIdsInRange(input->GetPolys(), nPts) ||
+    !vtkSurfaceDetailCells::PointIdsInRange(input->GetStrips(), nPts))
+  {
+    vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
+      << nPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
     return 0;
   }
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();

@@ -739,6 +739,45 @@ TEST(vtkMikkTSpaceTangents, ErrorWithoutPolygons)
   EXPECT_EQ(run.Output()->GetNumberOfPoints(), 0);
 }
 
+// A polygon naming a point the input does not have (past the end, or negative) would
+// make every pass read outside the point arrays.
+TEST(vtkMikkTSpaceTangents, ErrorWithPointIdsOutOfRange)
+{
+  for (const bool wide : { true, false })
+  {
+    for (const vtkIdType bad : { vtkIdType(25), vtkIdType(-1), vtkIdType(1) << 40 })
+    {
+      if (!wide && bad > VTK_TYPE_INT32_MAX)
+      {
+        continue; // 32-bit connectivity cannot hold it
+      }
+      auto plane = MakePlane(4);
+      vtkNew<vtkCellArray> polys;
+      polys->DeepCopy(plane->GetPolys());
+      if (wide)
+      {
+        polys->ConvertTo64BitStorage();
+      }
+      else
+      {
+        polys->ConvertTo32BitStorage();
+      }
+      vtkDataArray* conn = polys->GetConnectivityArray();
+      conn->SetComponent(conn->GetNumberOfTuples() - 1, 0, static_cast<double>(bad));
+      plane->SetPolys(polys);
+      FilterRun run(plane);
+      EXPECT_GT(run.Errors->Count, 0) << bad << (wide ? " in 64-bit" : " in 32-bit");
+      EXPECT_EQ(run.Output()->GetNumberOfPoints(), 0) << bad;
+      EXPECT_EQ(plane->GetNumberOfPoints(), 25);
+    }
+  }
+  // The largest valid id passes: the check is not off by one.
+  auto plane = MakePlane(4);
+  FilterRun run(plane);
+  EXPECT_EQ(run.Errors->Count, 0);
+  EXPECT_EQ(run.Output()->GetNumberOfPoints(), 25);
+}
+
 TEST(vtkMikkTSpaceTangents, ErrorWithImageDataInput)
 {
   vtkNew<vtkImageData> image;
