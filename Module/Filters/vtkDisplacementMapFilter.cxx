@@ -15,6 +15,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMemory.h"
 #include "vtkSurfaceDetailVectorize.h"
@@ -1522,6 +1523,11 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> Fits;
   bool HaveFits = false;
 
+  // The polygons' and strips' point ids were found in range: from them and the point count.
+  Key IdsKey;
+  vtkTimeStamp IdsTime;
+  bool IdsInRange = false;
+
   // The memory held, in bytes.
   size_t Bytes() const
   {
@@ -1677,6 +1683,35 @@ int vtkDisplacementMapFilter::RequestData(
                                                                 << " needs polygons. Run "
                                                                    "vtkTriangleFilter first.");
     return 0;
+  }
+
+  {
+    // Every pass below reads points through the cells: an id outside the points must stop
+    // the filter first. Checked once per change of the cells or of the point count.
+    MeshCache& cache = *this->Cache;
+    vtkCellArray* polys = input->GetPolys();
+    vtkCellArray* strips = input->GetStrips();
+    MeshCache::Key idsKey;
+    idsKey.Objects = { polys, polys->GetConnectivityArray(), strips,
+      strips->GetConnectivityArray() };
+    idsKey.NumPoints = numPts;
+    const vtkMTimeType idsChanged = std::max(
+      { input->vtkObject::GetMTime(), polys->GetMTime(), polys->GetConnectivityArray()->GetMTime(),
+        strips->GetMTime(), strips->GetConnectivityArray()->GetMTime() });
+    if (!cache.IdsInRange || !MeshCache::Fresh(cache.IdsKey, idsKey, idsChanged, cache.IdsTime))
+    {
+      cache.IdsInRange = false;
+      if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
+        !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
+      {
+        vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
+          << numPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+        return 0;
+      }
+      cache.IdsKey = idsKey;
+      cache.IdsTime.Modified();
+      cache.IdsInRange = true;
+    }
   }
 
   if (this->Scale == 0.0 && this->NormalMode != Mesh)

@@ -1259,6 +1259,51 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
   EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
 }
 
+// A polygon naming a point the input does not have (past the end, or negative) made the
+// passes read and BuildLinks write outside the point arrays. In every mode, also after a
+// good execution whose kept mesh data the bad ids must not slip past.
+TEST(DisplacementMapFilter, PointIdsOutOfRangeAreAnError)
+{
+  const Surface s = Rectangle();
+  auto image = RandomImage(4, 4, 1);
+  for (const int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
+         vtkDisplacementMapFilter::Mesh, vtkDisplacementMapFilter::None })
+  {
+    for (const vtkIdType bad : { vtkIdType(25), vtkIdType(-1), vtkIdType(1) << 40 })
+    {
+      SCOPED_TRACE(std::to_string(mode) + " " + std::to_string(bad));
+      auto mesh = MakeMesh(s, 4, 4, true);
+      mesh->GetPolys()->ConvertTo64BitStorage();
+      vtkDataArray* conn = mesh->GetPolys()->GetConnectivityArray();
+      const vtkIdType last = conn->GetNumberOfTuples() - 1;
+      const double good = conn->GetComponent(last, 0);
+      vtkNew<vtkDisplacementMapFilter> f;
+      f->SetNormalMode(mode);
+      f->SetInputData(0, mesh);
+      f->SetInputData(1, image);
+      auto obs = Watch(f);
+      f->Update();
+      ASSERT_EQ(obs->Errors, 0);
+      ASSERT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
+
+      conn->SetComponent(last, 0, static_cast<double>(bad));
+      mesh->GetPolys()->Modified();
+      f->Update();
+      const int errors = obs->Errors;
+      EXPECT_GE(errors, 1);
+      EXPECT_NE(obs->Message.find("point id outside [0, 25)"), std::string::npos) << obs->Message;
+      EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_EQ(mesh->GetNumberOfPoints(), 25);
+
+      conn->SetComponent(last, 0, good);
+      mesh->GetPolys()->Modified();
+      f->Update();
+      EXPECT_EQ(obs->Errors, errors);
+      EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
+    }
+  }
+}
+
 // Other arrays pass through; None keeps normals; PrintSelf names every setting.
 TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
 {
