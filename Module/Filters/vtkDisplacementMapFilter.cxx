@@ -1857,8 +1857,6 @@ int vtkDisplacementMapFilter::RequestData(
     static const std::vector<std::pair<vtkIdType, vtkIdType>> noGroups;
     std::vector<std::pair<vtkIdType, vtkIdType>>& groups = cache.Groups;
     const bool findsGroups = this->MergeSeams && !haveGroups;
-    // (The input's bounds are computed here, not in a thread beside pass 1.)
-    const double seamTolerance = findsGroups ? this->SeamTolerance * input->GetLength() : 0.0;
     auto findGroups = [&]()
     {
       if (!findsGroups)
@@ -1870,6 +1868,8 @@ int vtkDisplacementMapFilter::RequestData(
       const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
+        // The input's bounds here, beside pass 1, which reads no bounds.
+        const double seamTolerance = this->SeamTolerance * input->GetLength();
         const std::vector<vtkIdType> rep = CoincidentGroups(pts, candidates, seamTolerance);
         std::vector<unsigned char> isRep(candidates.size(), 0);
         for (size_t k = 0; k < candidates.size(); ++k)
