@@ -1842,8 +1842,11 @@ int vtkDisplacementMapFilter::RequestData(
       cache.HaveLinks && MeshCache::Fresh(cache.LinksKey, linksKey, linksChanged, cache.LinksTime);
     const bool haveGroups = cache.HaveGroups && cache.GroupsTolerance == this->SeamTolerance &&
       MeshCache::Fresh(cache.GroupsKey, groupsKey, groupsChanged, cache.GroupsTime);
-    // Mesh normals need the links only after pass 1: they are built beside it.
-    const bool linksBeside = this->NormalMode == Mesh && !haveLinks;
+    // The links are built beside the seam sweep: Mesh normals need them only after pass 1 (built
+    // beside it), the fits of pass 1 as soon as it starts (built by the thread that then runs it,
+    // while another thread sweeps the seams).
+    const bool linksBeside = needLinks && !haveLinks;
+    const bool linksFirst = linksBeside && this->NormalMode != Mesh;
     auto buildLinks = [&]()
     {
       cache.HaveLinks = false;
@@ -1856,11 +1859,7 @@ int vtkDisplacementMapFilter::RequestData(
     {
       mesh.Build(polys);
       ctx.Polys = &mesh;
-      if (needLinks && !haveLinks && !linksBeside)
-      {
-        buildLinks();
-      }
-      if (needLinks)
+      if (needLinks && !linksBeside)
       {
         mesh.UseLinks(cache.Links);
       }
@@ -1930,8 +1929,6 @@ int vtkDisplacementMapFilter::RequestData(
     static const std::vector<std::pair<vtkIdType, vtkIdType>> noGroups;
     std::vector<std::pair<vtkIdType, vtkIdType>>& groups = cache.Groups;
     const bool findsGroups = this->MergeSeams && !haveGroups;
-    // (The input's bounds are computed here, not in a thread beside pass 1.)
-    const double seamTolerance = findsGroups ? this->SeamTolerance * input->GetLength() : 0.0;
     auto findGroups = [&]()
     {
       if (!findsGroups)
@@ -1943,6 +1940,8 @@ int vtkDisplacementMapFilter::RequestData(
       const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
       if (candidates.size() > 1)
       {
+        // The input's bounds here, beside pass 1, which reads no bounds.
+        const double seamTolerance = this->SeamTolerance * input->GetLength();
         const std::vector<vtkIdType> rep = CoincidentGroups(pts, candidates, seamTolerance);
         std::vector<unsigned char> isRep(candidates.size(), 0);
         for (size_t k = 0; k < candidates.size(); ++k)
@@ -2005,8 +2004,9 @@ int vtkDisplacementMapFilter::RequestData(
       {
         constexpr int interp = decltype(kind)::value;
         DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
-        // Pass 1 (threaded), the seam groups and Mesh's links (serial) read only the input and
-        // write apart: they run side by side, the serial ones on whichever threads pass 1 leaves.
+        // Pass 1 (threaded), the seam groups and the links (serial) read only the input and write
+        // apart: they run side by side, the serial ones on whichever threads pass 1 leaves (the
+        // links that pass 1 needs first, on the thread that then starts pass 1).
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
           {
@@ -2014,19 +2014,24 @@ int vtkDisplacementMapFilter::RequestData(
             {
               if (task == 0)
               {
+                if (linksFirst)
+                {
+                  buildLinks();
+                  mesh.UseLinks(cache.Links);
+                }
                 vtkSMPTools::For(0, numPts, Grain, worker);
               }
               else if (task == 1)
               {
                 findGroups();
               }
-              else if (linksBeside)
+              else if (linksBeside && !linksFirst)
               {
                 buildLinks();
               }
             }
           });
-        if (this->NormalMode == Mesh)
+        if (needLinks)
         {
           mesh.UseLinks(cache.Links);
         }
