@@ -732,6 +732,22 @@ inline bool IsFinite(double x)
   return std::abs(x) <= std::numeric_limits<double>::max();
 }
 
+// FastNormalize and its check for one lane of a block, free of branches so that block loops
+// vectorise (bitwise & rather than a short circuit, which GCC splits the loop on): x, y, z
+// scaled to unit length where their length is positive and finite, else left as they are;
+// true where the result is usable (a non-zero length and a finite sum), as FastNormalize's
+// callers test.
+VTK_ALWAYS_INLINE bool UnitLane(double& x, double& y, double& z)
+{
+  const double len = std::sqrt(x * x + y * y + z * z);
+  const double inv = 1.0 / len;
+  const bool scale = (len > 0.0) & IsFinite(len);
+  x = scale ? x * inv : x;
+  y = scale ? y * inv : y;
+  z = scale ? z * inv : z;
+  return (len != 0.0) & IsFinite(x + y + z);
+}
+
 // The value stored in an output array of R: for float, beyond float's range the largest float.
 template <typename R>
 inline R ToReal(double v)
@@ -788,14 +804,10 @@ struct BlockOps
     Gather<3>(this->C.Normals->P + 3 * first, count, n);
     for (int k = 0; k < count; ++k)
     {
-      const double x = n[0][k], y = n[1][k], z = n[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      // Bitwise & and no re-read of what the loop stored: GCC otherwise splits the loop on
-      // the short circuit and re-reads masked stores (a store-forwarding stall per block).
-      const bool scale = (len > 0.0) & IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool keep = (len != 0.0) & IsFinite(sx + sy + sz);
+      // No re-read of what the loop stored: GCC would re-read masked stores (a
+      // store-forwarding stall per block).
+      double sx = n[0][k], sy = n[1][k], sz = n[2][k];
+      const bool keep = UnitLane(sx, sy, sz);
       const double ux = keep ? sx : 0.0, uy = keep ? sy : 0.0;
       n[0][k] = ux;
       n[1][k] = uy;
@@ -812,15 +824,11 @@ struct BlockOps
   {
     for (int k = 0; k < count; ++k)
     {
-      const double x = m[0][k], y = m[1][k], z = m[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = (len > 0.0) & IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      const bool bad = (len == 0.0) | !IsFinite(sx + sy + sz);
-      m[0][k] = bad ? fallback[0][k] : sx;
-      m[1][k] = bad ? fallback[1][k] : sy;
-      m[2][k] = bad ? fallback[2][k] : sz;
+      double sx = m[0][k], sy = m[1][k], sz = m[2][k];
+      const bool keep = UnitLane(sx, sy, sz);
+      m[0][k] = keep ? sx : fallback[0][k];
+      m[1][k] = keep ? sy : fallback[1][k];
+      m[2][k] = keep ? sz : fallback[2][k];
     }
     // Unit vectors: static_cast as WriteNormal, no range to clamp.
     R* out = this->C.OutNormals->P + 3 * first;
