@@ -1127,64 +1127,54 @@ struct MeshPolygonNormalWorker
   {
     const PolyLinks& mesh = *this->C.Polys;
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
-    double moved[3] = { 0.0, 0.0, 0.0 }, orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0, 0, 0 };
-    double m0[3], p0[3];
-    this->Moved.Get3(mesh.Conn[b], m0);
+    // The displaced polygon's normal, area-weighted: a fan of cross products from corner 0.
+    double moved[3] = { 0.0, 0.0, 0.0 };
+    this->FanSum(this->Moved, b, e, moved);
+    double sign = 1.0;
     if (SignKnown)
     {
-      for (vtkIdType k = b + 1; k + 1 < e; ++k)
-      {
-        double m1[3], m2[3], x[3];
-        this->Moved.Get3(mesh.Conn[k], m1);
-        this->Moved.Get3(mesh.Conn[k + 1], m2);
-        const double a1[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
-        const double a2[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
-        Cross(a1, a2, x);
-        moved[0] += x[0];
-        moved[1] += x[1];
-        moved[2] += x[2];
-      }
-      const double sign = this->Signs[cell] < 0 ? -1.0 : 1.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        out[k] = sign * moved[k];
-      }
-      return;
+      sign = this->Signs[cell] < 0 ? -1.0 : 1.0;
     }
-    this->C.Points->Get3(mesh.Conn[b], p0);
-    for (vtkIdType k = b; k < e; ++k)
+    else
     {
-      double nk[3];
-      this->C.Normals->Get3(mesh.Conn[k], nk);
-      nsum[0] += nk[0];
-      nsum[1] += nk[1];
-      nsum[2] += nk[2];
+      // The orientation: the input polygon's normal against its points' input normals.
+      double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
+      this->FanSum(*this->C.Points, b, e, orig);
+      for (vtkIdType k = b; k < e; ++k)
+      {
+        double nk[3];
+        this->C.Normals->Get3(mesh.Conn[k], nk);
+        nsum[0] += nk[0];
+        nsum[1] += nk[1];
+        nsum[2] += nk[2];
+      }
+      sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+      this->Signs[cell] = sign < 0.0 ? -1 : 1;
     }
-    for (vtkIdType k = b + 1; k + 1 < e; ++k)
-    {
-      double m1[3], m2[3], p1[3], p2[3], x[3];
-      this->Moved.Get3(mesh.Conn[k], m1);
-      this->Moved.Get3(mesh.Conn[k + 1], m2);
-      const double a1[3] = { m1[0] - m0[0], m1[1] - m0[1], m1[2] - m0[2] };
-      const double a2[3] = { m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2] };
-      Cross(a1, a2, x);
-      moved[0] += x[0];
-      moved[1] += x[1];
-      moved[2] += x[2];
-      this->C.Points->Get3(mesh.Conn[k], p1);
-      this->C.Points->Get3(mesh.Conn[k + 1], p2);
-      const double c1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-      const double c2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-      Cross(c1, c2, x);
-      orig[0] += x[0];
-      orig[1] += x[1];
-      orig[2] += x[2];
-    }
-    const double sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
-    this->Signs[cell] = sign < 0.0 ? -1 : 1;
     for (int k = 0; k < 3; ++k)
     {
       out[k] = sign * moved[k];
+    }
+  }
+
+  // Adds the cross products of the fan from corner b of the polygon's corners [b, e) to sum.
+  VTK_ALWAYS_INLINE void FanSum(
+    const ArrayReader<R>& pts, vtkIdType b, vtkIdType e, double sum[3]) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    double p0[3];
+    pts.Get3(mesh.Conn[b], p0);
+    for (vtkIdType k = b + 1; k + 1 < e; ++k)
+    {
+      double p1[3], p2[3], x[3];
+      pts.Get3(mesh.Conn[k], p1);
+      pts.Get3(mesh.Conn[k + 1], p2);
+      const double a1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+      const double a2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+      Cross(a1, a2, x);
+      sum[0] += x[0];
+      sum[1] += x[1];
+      sum[2] += x[2];
     }
   }
 
