@@ -1171,49 +1171,22 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
   ints->SetDimensions(4, 4, 1);
   ints->AllocateScalars(VTK_INT, 1);
   const unsigned long before = good->GetMTime();
+  auto Inputs = [](vtkDataObject* surface, vtkDataObject* map)
+  {
+    return [=](vtkDisplacementMapFilter* f)
+    {
+      f->SetInputData(0, surface);
+      f->SetInputData(1, map);
+    };
+  };
   std::vector<Case> cases = {
-    { "no tcoords", "texture coordinates",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, noTCoords);
-        f->SetInputData(1, image);
-      } },
-    { "no normals", "normals",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, noNormals);
-        f->SetInputData(1, image);
-      } },
-    { "short normals", "Normals has 3 tuples for 25 points",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, shortNormals);
-        f->SetInputData(1, image);
-      } },
-    { "short tcoords", "TCoords has 3 tuples for 25 points",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, shortTCoords);
-        f->SetInputData(1, image);
-      } },
-    { "empty image", "empty",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, good);
-        f->SetInputData(1, empty);
-      } },
-    { "volume", "2-D image",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, good);
-        f->SetInputData(1, volume);
-      } },
-    { "int scalars", "unsigned char",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, good);
-        f->SetInputData(1, ints);
-      } },
+    { "no tcoords", "texture coordinates", Inputs(noTCoords, image) },
+    { "no normals", "normals", Inputs(noNormals, image) },
+    { "short normals", "Normals has 3 tuples for 25 points", Inputs(shortNormals, image) },
+    { "short tcoords", "TCoords has 3 tuples for 25 points", Inputs(shortTCoords, image) },
+    { "empty image", "empty", Inputs(good, empty) },
+    { "volume", "2-D image", Inputs(good, volume) },
+    { "int scalars", "unsigned char", Inputs(good, ints) },
     { "component", "Component 3",
       [&](vtkDisplacementMapFilter* f)
       {
@@ -1222,18 +1195,8 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
         f->SetComponent(3);
       } },
     { "no height map", "port 1", [&](vtkDisplacementMapFilter* f) { f->SetInputData(0, good); } },
-    { "polydata on port 1", "vtkImageData",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, good);
-        f->SetInputData(1, good);
-      } },
-    { "image on port 0", "vtkPolyData",
-      [&](vtkDisplacementMapFilter* f)
-      {
-        f->SetInputData(0, image);
-        f->SetInputData(1, image);
-      } },
+    { "polydata on port 1", "vtkImageData", Inputs(good, good) },
+    { "image on port 0", "vtkPolyData", Inputs(image, image) },
   };
   for (const Case& c : cases)
   {
