@@ -47,6 +47,18 @@ inline std::array<double, 3> CrossD(const std::array<double, 3>& a, const std::a
   return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
 }
 
+/// A surface of the given points and polygons, with point normals and texture coordinates.
+inline vtkSmartPointer<vtkPolyData> MakeSurface(
+  vtkPoints* points, vtkCellArray* polys, vtkDataArray* normals, vtkDataArray* tcoords)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->SetTCoords(tcoords);
+  return pd;
+}
+
 /**
  * A (nu+1) x (nv+1) grid of points from @a f(u, v) on [0,1]^2, two triangles per cell,
  * counter-clockwise in (u, v). Points on a periodic seam are separate points (a texture
@@ -92,12 +104,7 @@ inline vtkSmartPointer<vtkPolyData> MakeGrid(
       }
     }
   }
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->SetPoints(points);
-  pd->SetPolys(polys);
-  pd->GetPointData()->SetNormals(normals);
-  pd->GetPointData()->SetTCoords(tcoords);
-  return pd;
+  return MakeSurface(points, polys, normals, tcoords);
 }
 
 /// A flat square with skewed, non-uniform texture coordinates.
@@ -180,12 +187,7 @@ inline vtkSmartPointer<vtkPolyData> MakeUVSphere(int nu, int nv)
       northPole };
     polys->InsertNextCell(3, t);
   }
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->SetPoints(points);
-  pd->SetPolys(polys);
-  pd->GetPointData()->SetNormals(normals);
-  pd->GetPointData()->SetTCoords(tcoords);
-  return pd;
+  return MakeSurface(points, polys, normals, tcoords);
 }
 
 /// Torus (ring radius 1, tube 0.35), seams in both directions, texture repeated twice in u.

@@ -348,11 +348,7 @@ void ExpectAgreementOnRandomSoup(int nPoints, int nTriangles, const std::string&
     }
     polys->InsertNextCell(3, ids);
   }
-  vtkNew<vtkPolyData> soup;
-  soup->SetPoints(points);
-  soup->SetPolys(polys);
-  soup->GetPointData()->SetNormals(normals);
-  soup->GetPointData()->SetTCoords(tcoords);
+  auto soup = MakeSurface(points, polys, normals, tcoords);
   ExpectAgreement(soup, tag);
 }
 
@@ -396,11 +392,7 @@ TEST(MikkTSpaceCompatibility, LargeFan)
     const vtkIdType t[3] = { 0, 1 + i, 1 + (i + 1) % n };
     polys->InsertNextCell(3, t);
   }
-  vtkNew<vtkPolyData> disc;
-  disc->SetPoints(points);
-  disc->SetPolys(polys);
-  disc->GetPointData()->SetNormals(normals);
-  disc->GetPointData()->SetTCoords(tcoords);
+  auto disc = MakeSurface(points, polys, normals, tcoords);
   ExpectAgreement(disc, "largefan");
 }
 

@@ -433,11 +433,7 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverTinyDerivativesAndEdges)
         polys->InsertNextCell(3, t2);
       }
     }
-    vtkNew<vtkPolyData> grid;
-    grid->SetPoints(points);
-    grid->SetPolys(polys);
-    grid->GetPointData()->SetNormals(normals);
-    grid->GetPointData()->SetTCoords(tcoords);
+    auto grid = MakeSurface(points, polys, normals, tcoords);
     ExpectFastPathIsGeneralPath(
       grid, precision == VTK_FLOAT ? "tiny grid, float" : "tiny grid, double");
   }
@@ -467,11 +463,7 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverTinyDerivativesAndEdges)
     const vtkIdType t1[3] = { 0, 1, 2 }, t2[3] = { 0, 2, 3 };
     polys->InsertNextCell(3, t1);
     polys->InsertNextCell(3, t2);
-    vtkNew<vtkPolyData> fan;
-    fan->SetPoints(points);
-    fan->SetPolys(polys);
-    fan->GetPointData()->SetNormals(normals);
-    fan->GetPointData()->SetTCoords(tcoords);
+    auto fan = MakeSurface(points, polys, normals, tcoords);
     ExpectFastPathIsGeneralPath(fan, "edge along the normal");
   }
 }
@@ -505,12 +497,7 @@ vtkSmartPointer<vtkPolyData> FansAroundOrigin(
   {
     polys->InsertNextCell(3, t.data());
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  mesh->GetPointData()->SetNormals(normals);
-  mesh->GetPointData()->SetTCoords(tcoords);
-  return mesh;
+  return MakeSurface(points, polys, normals, tcoords);
 }
 
 // The fast path takes a vertex only if its triangles make one run (one closed fan or one
@@ -939,11 +926,7 @@ TEST(vtkMikkTSpaceTangents, StressHugeFanAndEdge)
     const vtkIdType page[3] = { i % 2 ? end : centre, i % 2 ? centre : end, ring[i] };
     polys->InsertNextCell(3, page);
   }
-  vtkNew<vtkPolyData> pd;
-  pd->SetPoints(points);
-  pd->SetPolys(polys);
-  pd->GetPointData()->SetNormals(normals);
-  pd->GetPointData()->SetTCoords(tcoords);
+  auto pd = MakeSurface(points, polys, normals, tcoords);
   FilterRun run(pd);
   EXPECT_EQ(run.Errors->Count, 0);
   ExpectValidFrames(run.Output());
@@ -984,11 +967,7 @@ TEST(vtkMikkTSpaceTangents, StressRandomNonManifoldSoup)
     }
     polys->InsertNextCell(n, ids);
   }
-  vtkNew<vtkPolyData> soup;
-  soup->SetPoints(points);
-  soup->SetPolys(polys);
-  soup->GetPointData()->SetNormals(normals);
-  soup->GetPointData()->SetTCoords(tcoords);
+  auto soup = MakeSurface(points, polys, normals, tcoords);
   FilterRun run(soup);
   EXPECT_EQ(run.Errors->Count, 0);
   ExpectValidFrames(run.Output());
