@@ -142,9 +142,15 @@ void BM_DisplacementMapFilter(benchmark::State& state)
     else
     {
       // A new mesh each time, as when the source upstream re-executes (same values, so that
-      // the errors stay comparable): nothing kept from the previous execution is reused.
+      // the errors stay comparable): points, polygons and every point-data array are new, so
+      // nothing kept from the previous execution is reused.
       c.Mesh->GetPoints()->Modified();
       c.Mesh->GetPolys()->Modified();
+      vtkPointData* pd = c.Mesh->GetPointData();
+      for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+      {
+        pd->GetAbstractArray(a)->Modified();
+      }
     }
     filter->Update();
   }
