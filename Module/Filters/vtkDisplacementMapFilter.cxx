@@ -1002,41 +1002,43 @@ struct DisplaceWorker : BlockOps<R>
     {
       return;
     }
-    for (int k = 0; k < count; ++k)
+    // The fits go to the kept buffer, and come back from it once the whole block is fitted:
+    // read back at once, values just stored one by one stall a wider load (no store forwarding).
+    const bool wantP = !c.DPdu;
+    const int stride = c.FitStride;
+    if (!c.FitsKnown)
     {
-      const vtkIdType i = first + k;
-      double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
-      double Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-      double* kept = c.Fits ? c.Fits + static_cast<vtkIdType>(c.FitStride) * i : nullptr;
-      if (!c.FitsKnown)
+      for (int k = 0; k < count; ++k)
       {
-        FitDerivatives(
-          c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+        const vtkIdType i = first + k;
+        double* kept = c.Fits + static_cast<vtkIdType>(stride) * i;
+        double* fittedN = wantP ? kept + 6 : kept;
+        FitDerivatives(c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), wantP, exact, kept,
+          kept + 3, fittedN, fittedN + 3);
       }
-      if (kept)
+    }
+    const double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    if (wantP)
+    {
+      for (int k = 0; k < count; ++k)
       {
-        double* fitted[4] = { Ps, Pt, Ns, Nt };
-        for (int v = c.DPdu ? 2 : 0; v < (exact ? 4 : 2); ++v, kept += 3)
+        for (int j = 0; j < 3; ++j)
         {
-          for (int j = 0; j < 3; ++j)
-          {
-            if (c.FitsKnown)
-            {
-              fitted[v][j] = kept[j];
-            }
-            else
-            {
-              kept[j] = fitted[v][j];
-            }
-          }
+          ps[j][k] = kept[stride * k + j];
+          pt[j][k] = kept[stride * k + 3 + j];
         }
       }
-      for (int j = 0; j < 3; ++j)
+      kept += 6;
+    }
+    if (exact)
+    {
+      for (int k = 0; k < count; ++k)
       {
-        ps[j][k] = Ps[j];
-        pt[j][k] = Pt[j];
-        ns[j][k] = Ns[j];
-        nt[j][k] = Nt[j];
+        for (int j = 0; j < 3; ++j)
+        {
+          ns[j][k] = kept[stride * k + j];
+          nt[j][k] = kept[stride * k + 3 + j];
+        }
       }
     }
   }
