@@ -454,45 +454,6 @@ struct PolyLinks
   }
 };
 
-// Per-point least-squares fit of the derivatives of a vector field f with respect to
-// (s,t) over the point's polygons: minimise sum |f_j - f_i - fs ds - ft dt|^2.
-struct Fit
-{
-  double M[3] = { 0.0, 0.0, 0.0 }; // sum ds^2, ds dt, dt^2
-  double Bs[3] = { 0.0, 0.0, 0.0 }, Bt[3] = { 0.0, 0.0, 0.0 };
-
-  void Add(double w, double ds, double dt, const double df[3])
-  {
-    this->M[0] += w * ds * ds;
-    this->M[1] += w * ds * dt;
-    this->M[2] += w * dt * dt;
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Bs[k] += w * ds * df[k];
-      this->Bt[k] += w * dt * df[k];
-    }
-  }
-
-  // False (and zero derivatives) when the texture coordinates around the point do not
-  // span two directions.
-  bool Solve(double fs[3], double ft[3]) const
-  {
-    const double det = this->M[0] * this->M[2] - this->M[1] * this->M[1];
-    const double tr = this->M[0] + this->M[2];
-    if (!(det > 1e-12 * tr * tr))
-    {
-      fs[0] = fs[1] = fs[2] = ft[0] = ft[1] = ft[2] = 0.0;
-      return false;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      fs[k] = (this->M[2] * this->Bs[k] - this->M[1] * this->Bt[k]) / det;
-      ft[k] = (this->M[0] * this->Bt[k] - this->M[1] * this->Bs[k]) / det;
-    }
-    return true;
-  }
-};
-
 // NaN becomes 0 and infinity the largest double.
 inline double Finite(double x)
 {
@@ -629,89 +590,93 @@ VTK_ALWAYS_INLINE void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, d
   }
 }
 
-// Least-squares p_s, p_t (when wanted) and n_s, n_t (when wanted) over the point's
-// neighbours in its polygons. A neighbour at the same place with other texture coordinates means
-// that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
-// the caller keeps the normal.
-template <typename R>
-VTK_ALWAYS_INLINE void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t,
-  bool wantP, bool wantN, double Ps[3], double Pt[3], double Ns[3], double Nt[3])
+// One neighbour's terms in the sums of a fit: @a g is (f_j, s_j), @a own (f_i, s_i), so that the
+// difference is (df, ds) and four lanes give sum ds df and, last, sum ds^2 (sum dt df and sum dt ds
+// in @a bt): loops over four doubles that vectorise.
+VTK_ALWAYS_INLINE void AddNeighbour(
+  const double g[4], const double own[4], double dt, double bs[4], double bt[4])
+{
+  double f[4];
+  for (int q = 0; q < 4; ++q)
+  {
+    f[q] = g[q] - own[q];
+  }
+  for (int q = 0; q < 4; ++q)
+  {
+    bs[q] += f[3] * f[q];
+    bt[q] += dt * f[q];
+  }
+}
+
+// The sums of the least-squares fit of the derivatives of a vector field f in (s,t) at point @a i,
+// which minimises sum |f_j - f_i - f_s ds - f_t dt|^2 over the point's neighbours j in its
+// polygons: @a m = (sum ds^2, ds dt, dt^2), and per field (P when WantP, the unit normal when
+// WantN) sum ds df and sum dt df. A neighbour counts once per polygon it shares with the point
+// (every occurrence is added as it comes: no sorting or merging). @a near and @a far are the least
+// and largest squared distances to a neighbour (WantP).
+template <bool WantP, bool WantN, typename R>
+VTK_ALWAYS_INLINE void FitSums(const Context<R>& c, vtkIdType i, double m[3], double bp[6],
+  double bn[6], double& near, double& far)
 {
   const PolyLinks& mesh = *c.Polys;
-  // The neighbours over the point's polygons, sorted so that each is read once.
-  constexpr int maxNeighbours = 64;
-  vtkIdType neighbours[maxNeighbours];
-  int count = 0;
+  const R* tc = c.TCoords->P;
+  const vtkIdType tnc = c.TCoords->NC;
+  const R* points = c.Points->P;
+  const double* normals = c.UnitNormals;
+  const double s = tc[tnc * i], t = tc[tnc * i + 1];
+  double ownP[4] = { 0.0, 0.0, 0.0, s }, ownN[4] = { 0.0, 0.0, 0.0, s };
+  for (int q = 0; q < 3; ++q)
+  {
+    ownP[q] = WantP ? points[3 * i + q] : 0.0;
+    ownN[q] = WantN ? normals[3 * i + q] : 0.0;
+  }
+  double bsP[4] = { 0.0, 0.0, 0.0, 0.0 }, btP[4] = { 0.0, 0.0, 0.0, 0.0 };
+  double bsN[4] = { 0.0, 0.0, 0.0, 0.0 }, btN[4] = { 0.0, 0.0, 0.0, 0.0 };
+  double dt2 = 0.0;
+  double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
   for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
   {
     const vtkIdType cell = mesh.Links[l];
-    for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1] && count < maxNeighbours; ++k)
+    for (vtkIdType corner = mesh.Offsets[cell]; corner < mesh.Offsets[cell + 1]; ++corner)
     {
-      if (mesh.Conn[k] != i)
+      const vtkIdType j = mesh.Conn[corner];
+      if (j == i)
       {
-        neighbours[count++] = mesh.Conn[k];
+        continue;
+      }
+      const double sj = tc[tnc * j], dt = tc[tnc * j + 1] - t;
+      dt2 += dt * dt;
+      if (WantP)
+      {
+        const double g[4] = { static_cast<double>(points[3 * j]),
+          static_cast<double>(points[3 * j + 1]), static_cast<double>(points[3 * j + 2]), sj };
+        AddNeighbour(g, ownP, dt, bsP, btP);
+        const double v[3] = { g[0] - ownP[0], g[1] - ownP[1], g[2] - ownP[2] };
+        const double d2 = Dot(v, v);
+        minD2 = std::min(minD2, d2);
+        maxD2 = std::max(maxD2, d2);
+      }
+      if (WantN)
+      {
+        const double g[4] = { normals[3 * j], normals[3 * j + 1], normals[3 * j + 2], sj };
+        AddNeighbour(g, ownN, dt, bsN, btN);
       }
     }
   }
-  // Insertion sort: a dozen entries, mostly in order already.
-  for (int a = 1; a < count; ++a)
+  const double* bs = WantN ? bsN : bsP;
+  const double* bt = WantN ? btN : btP;
+  m[0] = bs[3];
+  m[1] = bt[3];
+  m[2] = dt2;
+  for (int q = 0; q < 3; ++q)
   {
-    const vtkIdType x = neighbours[a];
-    int b = a;
-    for (; b > 0 && neighbours[b - 1] > x; --b)
-    {
-      neighbours[b] = neighbours[b - 1];
-    }
-    neighbours[b] = x;
+    bp[q] = bsP[q];
+    bp[3 + q] = btP[q];
+    bn[q] = bsN[q];
+    bn[3 + q] = btN[q];
   }
-
-  double pi[3], ni[3] = { 0.0, 0.0, 0.0 };
-  c.Points->Get3(i, pi);
-  if (wantN)
-  {
-    std::copy_n(c.UnitNormals + 3 * i, 3, ni);
-  }
-  Fit fp, fn;
-  double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
-  for (int k = 0; k < count;)
-  {
-    // A neighbour weighs as many times as it has polygons in common with the point.
-    const vtkIdType j = neighbours[k];
-    int w = 0;
-    for (; k < count && neighbours[k] == j; ++k)
-    {
-      ++w;
-    }
-    const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
-    double v[3];
-    if (wantP)
-    {
-      c.Points->Get3(j, v);
-      v[0] -= pi[0];
-      v[1] -= pi[1];
-      v[2] -= pi[2];
-      fp.Add(w, ds, dt, v);
-      const double d2 = Dot(v, v);
-      minD2 = std::min(minD2, d2);
-      maxD2 = std::max(maxD2, d2);
-    }
-    if (wantN)
-    {
-      std::copy_n(c.UnitNormals + 3 * j, 3, v);
-      v[0] -= ni[0];
-      v[1] -= ni[1];
-      v[2] -= ni[2];
-      fn.Add(w, ds, dt, v);
-    }
-  }
-  if (wantN)
-  {
-    fn.Solve(Ns, Nt);
-  }
-  if (wantP && (!fp.Solve(Ps, Pt) || minD2 <= 1e-16 * maxD2))
-  {
-    Ps[0] = Ps[1] = Ps[2] = Pt[0] = Pt[1] = Pt[2] = 0.0;
-  }
+  near = minD2;
+  far = maxD2;
 }
 
 // The displacement d at point @a i, with the height h and its derivatives in (s,t); one
@@ -1002,22 +967,25 @@ struct DisplaceWorker : BlockOps<R>
     {
       return;
     }
-    // The fits go to the kept buffer, and come back from it once the whole block is fitted:
-    // read back at once, values just stored one by one stall a wider load (no store forwarding).
     const bool wantP = !c.DPdu;
     const int stride = c.FitStride;
+    const double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
     if (!c.FitsKnown)
     {
-      for (int k = 0; k < count; ++k)
+      if (wantP && exact)
       {
-        const vtkIdType i = first + k;
-        double* kept = c.Fits + static_cast<vtkIdType>(stride) * i;
-        double* fittedN = wantP ? kept + 6 : kept;
-        FitDerivatives(c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), wantP, exact, kept,
-          kept + 3, fittedN, fittedN + 3);
+        this->template Fit<true, true>(first, count, ps, pt, ns, nt);
       }
+      else if (wantP)
+      {
+        this->template Fit<true, false>(first, count, ps, pt, ns, nt);
+      }
+      else
+      {
+        this->template Fit<false, true>(first, count, ps, pt, ns, nt);
+      }
+      return;
     }
-    const double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
     if (wantP)
     {
       for (int k = 0; k < count; ++k)
@@ -1038,6 +1006,83 @@ struct DisplaceWorker : BlockOps<R>
         {
           ns[j][k] = kept[stride * k + j];
           nt[j][k] = kept[stride * k + 3 + j];
+        }
+      }
+    }
+  }
+
+  // The fitted P_s, P_t (WantP) and n_s, n_t (WantN) of the block, also written to the kept
+  // buffer: the sums point by point (gathers over the neighbours), the solutions in a loop over
+  // the block that vectorises. Where the texture coordinates around a point do not span two
+  // directions, or (P) a neighbour sits at the point with other texture coordinates (a pole:
+  // p(s,t) is singular there), the derivatives are 0 and the normal falls back on the input's.
+  template <bool WantP, bool WantN>
+  VTK_ALWAYS_INLINE void Fit(
+    vtkIdType first, int count, Lanes ps[3], Lanes pt[3], Lanes ns[3], Lanes nt[3]) const
+  {
+    const Context<R>& c = this->C;
+    alignas(64) Lanes m[3], bp[6], bn[6], near, far;
+    for (int k = 0; k < count; ++k)
+    {
+      double mk[3], bpk[6], bnk[6];
+      FitSums<WantP, WantN>(c, first + k, mk, bpk, bnk, near[k], far[k]);
+      for (int q = 0; q < 3; ++q)
+      {
+        m[q][k] = mk[q];
+      }
+      for (int q = 0; q < 6; ++q)
+      {
+        bp[q][k] = bpk[q];
+        bn[q][k] = bnk[q];
+      }
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double det = m[0][k] * m[2][k] - m[1][k] * m[1][k];
+      const double tr = m[0][k] + m[2][k];
+      const bool spans = det > 1e-12 * tr * tr;
+      const double divisor = spans ? det : 1.0;
+      const bool distinct = spans & !(near[k] <= 1e-16 * far[k]);
+      for (int q = 0; q < 3; ++q)
+      {
+        if (WantP)
+        {
+          const double fs = (m[2][k] * bp[q][k] - m[1][k] * bp[3 + q][k]) / divisor;
+          const double ft = (m[0][k] * bp[3 + q][k] - m[1][k] * bp[q][k]) / divisor;
+          ps[q][k] = distinct ? fs : 0.0;
+          pt[q][k] = distinct ? ft : 0.0;
+        }
+        if (WantN)
+        {
+          const double fs = (m[2][k] * bn[q][k] - m[1][k] * bn[3 + q][k]) / divisor;
+          const double ft = (m[0][k] * bn[3 + q][k] - m[1][k] * bn[q][k]) / divisor;
+          ns[q][k] = spans ? fs : 0.0;
+          nt[q][k] = spans ? ft : 0.0;
+        }
+      }
+    }
+    const int stride = c.FitStride;
+    double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    if (WantP)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          kept[stride * k + q] = ps[q][k];
+          kept[stride * k + 3 + q] = pt[q][k];
+        }
+      }
+      kept += 6;
+    }
+    if (WantN)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          kept[stride * k + q] = ns[q][k];
+          kept[stride * k + 3 + q] = nt[q][k];
         }
       }
     }
