@@ -505,8 +505,9 @@ struct Context
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
-  // Exact mode: the input normals normalised once (each is a neighbour of a dozen fits).
-  const double* UnitNormals = nullptr;
+  // Exact mode: per point the unit input normal and the texture coordinate s, four doubles that
+  // the fits read as one vector (each point is a neighbour in a dozen fits).
+  const double* FitNormals = nullptr;
   // The fitted derivatives, which depend on the input alone: per point FitStride values, P_s and
   // P_t when fitted (no dPdu/dPdv), then n_s and n_t (Exact). Written by pass 1, or (FitsKnown)
   // read instead of fitting again.
@@ -590,49 +591,79 @@ VTK_ALWAYS_INLINE void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, d
   }
 }
 
-// One neighbour's terms in the sums of a fit: @a g is (f_j, s_j), @a own (f_i, s_i), so that the
-// difference is (df, ds) and four lanes give sum ds df and, last, sum ds^2 (sum dt df and sum dt ds
-// in @a bt): loops over four doubles that vectorise.
-VTK_ALWAYS_INLINE void AddNeighbour(
-  const double g[4], const double own[4], double dt, double bs[4], double bt[4])
+#if defined(__GNUC__)
+// Four doubles, one AVX register in the AVX2 build (two SSE2 ones in the baseline build). Each
+// operation is four lane-wise IEEE ones, so the bits are those of the scalar operations.
+using Double4 = double __attribute__((vector_size(4 * sizeof(double))));
+#else
+struct Double4
 {
-  double f[4];
-  for (int q = 0; q < 4; ++q)
+  double V[4];
+  double operator[](int q) const { return this->V[q]; }
+  Double4& operator+=(const Double4& a)
   {
-    f[q] = g[q] - own[q];
+    for (int q = 0; q < 4; ++q)
+    {
+      this->V[q] += a.V[q];
+    }
+    return *this;
   }
-  for (int q = 0; q < 4; ++q)
+  Double4& operator-=(const Double4& a)
   {
-    bs[q] += f[3] * f[q];
-    bt[q] += dt * f[q];
+    for (int q = 0; q < 4; ++q)
+    {
+      this->V[q] -= a.V[q];
+    }
+    return *this;
   }
+};
+inline Double4 operator*(double x, const Double4& a)
+{
+  return { { x * a.V[0], x * a.V[1], x * a.V[2], x * a.V[3] } };
+}
+#endif
+
+// One neighbour's terms in the sums of a fit: @a g is (f_j, s_j) and @a own (f_i, s_i), so that
+// @a f = (df, ds) and its four lanes add ds df and, last, ds^2 to @a bs, dt df and dt ds to @a bt.
+VTK_ALWAYS_INLINE void AddNeighbour(
+  const double g[4], const Double4& own, double dt, Double4& bs, Double4& bt, Double4& f)
+{
+  std::memcpy(&f, g, sizeof(f));
+  f -= own;
+  bs += f[3] * f;
+  bt += dt * f;
 }
 
 // The sums of the least-squares fit of the derivatives of a vector field f in (s,t) at point @a i,
 // which minimises sum |f_j - f_i - f_s ds - f_t dt|^2 over the point's neighbours j in its
-// polygons: @a m = (sum ds^2, ds dt, dt^2), and per field (P when WantP, the unit normal when
-// WantN) sum ds df and sum dt df. A neighbour counts once per polygon it shares with the point
-// (every occurrence is added as it comes: no sorting or merging). @a near and @a far are the least
-// and largest squared distances to a neighbour (WantP).
+// polygons: per field (@a p for P when WantP, @a n for the unit normal when WantN) sum ds df,
+// sum ds^2, sum dt df, sum dt ds (AddNeighbour's lanes), and @a dt2 = sum dt^2. A neighbour counts
+// once per polygon it shares with the point (every occurrence is added as it comes: no sorting or
+// merging). @a near and @a far are the least and largest squared distances to a neighbour (WantP).
 template <bool WantP, bool WantN, typename R>
-VTK_ALWAYS_INLINE void FitSums(const Context<R>& c, vtkIdType i, double m[3], double bp[6],
-  double bn[6], double& near, double& far)
+VTK_ALWAYS_INLINE void FitSums(const Context<R>& c, vtkIdType i, double p[8], double n[8],
+  double& dt2, double& near, double& far)
 {
   const PolyLinks& mesh = *c.Polys;
   const R* tc = c.TCoords->P;
   const vtkIdType tnc = c.TCoords->NC;
   const R* points = c.Points->P;
-  const double* normals = c.UnitNormals;
-  const double s = tc[tnc * i], t = tc[tnc * i + 1];
-  double ownP[4] = { 0.0, 0.0, 0.0, s }, ownN[4] = { 0.0, 0.0, 0.0, s };
-  for (int q = 0; q < 3; ++q)
+  const double* normals = c.FitNormals;
+  const double t = tc[tnc * i + 1];
+  Double4 ownP = {}, ownN = {};
+  if (WantP)
   {
-    ownP[q] = WantP ? points[3 * i + q] : 0.0;
-    ownN[q] = WantN ? normals[3 * i + q] : 0.0;
+    const double own[4] = { static_cast<double>(points[3 * i]),
+      static_cast<double>(points[3 * i + 1]), static_cast<double>(points[3 * i + 2]),
+      static_cast<double>(tc[tnc * i]) };
+    std::memcpy(&ownP, own, sizeof(ownP));
   }
-  double bsP[4] = { 0.0, 0.0, 0.0, 0.0 }, btP[4] = { 0.0, 0.0, 0.0, 0.0 };
-  double bsN[4] = { 0.0, 0.0, 0.0, 0.0 }, btN[4] = { 0.0, 0.0, 0.0, 0.0 };
-  double dt2 = 0.0;
+  if (WantN)
+  {
+    std::memcpy(&ownN, normals + 4 * i, sizeof(ownN));
+  }
+  Double4 bsP = {}, btP = {}, bsN = {}, btN = {};
+  double sumDt2 = 0.0;
   double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
   for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
   {
@@ -644,37 +675,30 @@ VTK_ALWAYS_INLINE void FitSums(const Context<R>& c, vtkIdType i, double m[3], do
       {
         continue;
       }
-      const double sj = tc[tnc * j], dt = tc[tnc * j + 1] - t;
-      dt2 += dt * dt;
+      const double dt = tc[tnc * j + 1] - t;
+      sumDt2 += dt * dt;
+      Double4 f;
       if (WantP)
       {
         const double g[4] = { static_cast<double>(points[3 * j]),
-          static_cast<double>(points[3 * j + 1]), static_cast<double>(points[3 * j + 2]), sj };
-        AddNeighbour(g, ownP, dt, bsP, btP);
-        const double v[3] = { g[0] - ownP[0], g[1] - ownP[1], g[2] - ownP[2] };
-        const double d2 = Dot(v, v);
+          static_cast<double>(points[3 * j + 1]), static_cast<double>(points[3 * j + 2]),
+          static_cast<double>(tc[tnc * j]) };
+        AddNeighbour(g, ownP, dt, bsP, btP, f);
+        const double d2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
         minD2 = std::min(minD2, d2);
         maxD2 = std::max(maxD2, d2);
       }
       if (WantN)
       {
-        const double g[4] = { normals[3 * j], normals[3 * j + 1], normals[3 * j + 2], sj };
-        AddNeighbour(g, ownN, dt, bsN, btN);
+        AddNeighbour(normals + 4 * j, ownN, dt, bsN, btN, f);
       }
     }
   }
-  const double* bs = WantN ? bsN : bsP;
-  const double* bt = WantN ? btN : btP;
-  m[0] = bs[3];
-  m[1] = bt[3];
-  m[2] = dt2;
-  for (int q = 0; q < 3; ++q)
-  {
-    bp[q] = bsP[q];
-    bp[3 + q] = btP[q];
-    bn[q] = bsN[q];
-    bn[3 + q] = btN[q];
-  }
+  std::memcpy(p, &bsP, sizeof(bsP));
+  std::memcpy(p + 4, &btP, sizeof(btP));
+  std::memcpy(n, &bsN, sizeof(bsN));
+  std::memcpy(n + 4, &btN, sizeof(btN));
+  dt2 = sumDt2;
   near = minD2;
   far = maxD2;
 }
@@ -1024,16 +1048,17 @@ struct DisplaceWorker : BlockOps<R>
     alignas(64) Lanes m[3], bp[6], bn[6], near, far;
     for (int k = 0; k < count; ++k)
     {
-      double mk[3], bpk[6], bnk[6];
-      FitSums<WantP, WantN>(c, first + k, mk, bpk, bnk, near[k], far[k]);
+      double pk[8], nk[8];
+      FitSums<WantP, WantN>(c, first + k, pk, nk, m[2][k], near[k], far[k]);
+      const double* mk = WantN ? nk : pk;
+      m[0][k] = mk[3];
+      m[1][k] = mk[7];
       for (int q = 0; q < 3; ++q)
       {
-        m[q][k] = mk[q];
-      }
-      for (int q = 0; q < 6; ++q)
-      {
-        bp[q][k] = bpk[q];
-        bn[q][k] = bnk[q];
+        bp[q][k] = pk[q];
+        bp[3 + q][k] = pk[4 + q];
+        bn[q][k] = nk[q];
+        bn[3 + q][k] = nk[4 + q];
       }
     }
     for (int k = 0; k < count; ++k)
@@ -1548,11 +1573,12 @@ struct vtkDisplacementMapFilter::MeshCache
   std::vector<std::pair<vtkIdType, vtkIdType>> Groups;
   bool HaveGroups = false;
 
-  // Exact's unit input normals: from the normals array.
+  // Exact's unit input normals, each with its texture coordinate s (Context::FitNormals): from
+  // the normals and the texture coordinates.
   Key NormalsKey;
   vtkTimeStamp NormalsTime;
-  Buffer<double> UnitNormals;
-  bool HaveUnitNormals = false;
+  Buffer<double> FitNormals;
+  bool HaveFitNormals = false;
 
   // Mesh's polygon orientations: from the polygons, the points and the normals.
   Key SignsKey;
@@ -1578,7 +1604,7 @@ struct vtkDisplacementMapFilter::MeshCache
   {
     return sizeof(vtkIdType) * (this->Links.Offsets.size() + this->Links.Links.size()) +
       sizeof(this->Groups[0]) * this->Groups.capacity() +
-      sizeof(double) * (this->UnitNormals.size() + this->Fits.size()) + this->Signs.size();
+      sizeof(double) * (this->FitNormals.size() + this->Fits.size()) + this->Signs.size();
   }
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
@@ -1911,37 +1937,34 @@ int vtkDisplacementMapFilter::RequestData(
     }
     if (this->NormalMode == Exact)
     {
-      Buffer<double>& unitNormals = cache.UnitNormals;
+      Buffer<double>& fitNormals = cache.FitNormals;
       MeshCache::Key normalsKey;
       normalsKey.Objects[0] = normals;
+      normalsKey.Objects[1] = tcoords;
       normalsKey.NumPoints = numPts;
-      if (cache.HaveUnitNormals &&
-        MeshCache::Fresh(cache.NormalsKey, normalsKey,
-          std::max(pointDataChanged, normals->GetMTime()), cache.NormalsTime))
+      if (!cache.HaveFitNormals ||
+        !MeshCache::Fresh(cache.NormalsKey, normalsKey,
+          std::max({ pointDataChanged, normals->GetMTime(), tcoords->GetMTime() }),
+          cache.NormalsTime))
       {
-        ctx.UnitNormals = unitNormals.data();
-      }
-    }
-    if (this->NormalMode == Exact && !ctx.UnitNormals)
-    {
-      Buffer<double>& unitNormals = cache.UnitNormals;
-      cache.HaveUnitNormals = false;
-      unitNormals.Resize(3 * static_cast<size_t>(numPts));
-      vtkSMPTools::For(0, numPts, Grain,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType i = begin; i < end; ++i)
+        cache.HaveFitNormals = false;
+        fitNormals.Resize(4 * static_cast<size_t>(numPts));
+        vtkSMPTools::For(0, numPts, Grain,
+          [&](vtkIdType begin, vtkIdType end)
           {
-            double* n = unitNormals.data() + 3 * i;
-            nrm.Get3(i, n);
-            FastNormalize(n);
-          }
-        });
-      ctx.UnitNormals = unitNormals.data();
-      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
-      cache.NormalsKey.NumPoints = numPts;
-      cache.NormalsTime.Modified();
-      cache.HaveUnitNormals = true;
+            for (vtkIdType i = begin; i < end; ++i)
+            {
+              double* n = fitNormals.data() + 4 * i;
+              nrm.Get3(i, n);
+              FastNormalize(n);
+              n[3] = tc.Get(i, 0);
+            }
+          });
+        cache.NormalsKey = normalsKey;
+        cache.NormalsTime.Modified();
+        cache.HaveFitNormals = true;
+      }
+      ctx.FitNormals = fitNormals.data();
     }
     if (useDerivs)
     {
