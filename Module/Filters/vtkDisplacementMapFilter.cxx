@@ -454,45 +454,6 @@ struct PolyLinks
   }
 };
 
-// Per-point least-squares fit of the derivatives of a vector field f with respect to
-// (s,t) over the point's polygons: minimise sum |f_j - f_i - fs ds - ft dt|^2.
-struct Fit
-{
-  double M[3] = { 0.0, 0.0, 0.0 }; // sum ds^2, ds dt, dt^2
-  double Bs[3] = { 0.0, 0.0, 0.0 }, Bt[3] = { 0.0, 0.0, 0.0 };
-
-  void Add(double w, double ds, double dt, const double df[3])
-  {
-    this->M[0] += w * ds * ds;
-    this->M[1] += w * ds * dt;
-    this->M[2] += w * dt * dt;
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Bs[k] += w * ds * df[k];
-      this->Bt[k] += w * dt * df[k];
-    }
-  }
-
-  // False (and zero derivatives) when the texture coordinates around the point do not
-  // span two directions.
-  bool Solve(double fs[3], double ft[3]) const
-  {
-    const double det = this->M[0] * this->M[2] - this->M[1] * this->M[1];
-    const double tr = this->M[0] + this->M[2];
-    if (!(det > 1e-12 * tr * tr))
-    {
-      fs[0] = fs[1] = fs[2] = ft[0] = ft[1] = ft[2] = 0.0;
-      return false;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      fs[k] = (this->M[2] * this->Bs[k] - this->M[1] * this->Bt[k]) / det;
-      ft[k] = (this->M[0] * this->Bt[k] - this->M[1] * this->Bs[k]) / det;
-    }
-    return true;
-  }
-};
-
 // NaN becomes 0 and infinity the largest double.
 inline double Finite(double x)
 {
@@ -544,8 +505,9 @@ struct Context
   ArrayWriter<R>* OutPoints = nullptr;
   ArrayWriter<R>* OutNormals = nullptr;  // null in None mode
   ArrayWriter<R>* OutTangents = nullptr; // null without input tangents or in None mode
-  // Exact mode: the input normals normalised once (each is a neighbour of a dozen fits).
-  const double* UnitNormals = nullptr;
+  // Exact mode: per point the unit input normal and the texture coordinate s, four doubles that
+  // the fits read as one vector (each point is a neighbour in a dozen fits).
+  const double* FitNormals = nullptr;
   // The fitted derivatives, which depend on the input alone: per point FitStride values, P_s and
   // P_t when fitted (no dPdu/dPdv), then n_s and n_t (Exact). Written by pass 1, or (FitsKnown)
   // read instead of fitting again.
@@ -629,89 +591,116 @@ VTK_ALWAYS_INLINE void WriteNormalAndTangent(const Context<R>& c, vtkIdType i, d
   }
 }
 
-// Least-squares p_s, p_t (when wanted) and n_s, n_t (when wanted) over the point's
-// neighbours in its polygons. A neighbour at the same place with other texture coordinates means
-// that p(s,t) is singular here (a pole): no derivative describes it, p_s = p_t = 0 is returned and
-// the caller keeps the normal.
-template <typename R>
-VTK_ALWAYS_INLINE void FitDerivatives(const Context<R>& c, vtkIdType i, double s, double t,
-  bool wantP, bool wantN, double Ps[3], double Pt[3], double Ns[3], double Nt[3])
+#if defined(__GNUC__)
+// Four doubles, one AVX register in the AVX2 build (two SSE2 ones in the baseline build). Each
+// operation is four lane-wise IEEE ones, so the bits are those of the scalar operations.
+using Double4 = double __attribute__((vector_size(4 * sizeof(double))));
+#else
+struct Double4
+{
+  double V[4];
+  double operator[](int q) const { return this->V[q]; }
+  Double4& operator+=(const Double4& a)
+  {
+    for (int q = 0; q < 4; ++q)
+    {
+      this->V[q] += a.V[q];
+    }
+    return *this;
+  }
+  Double4& operator-=(const Double4& a)
+  {
+    for (int q = 0; q < 4; ++q)
+    {
+      this->V[q] -= a.V[q];
+    }
+    return *this;
+  }
+};
+inline Double4 operator*(double x, const Double4& a)
+{
+  return { { x * a.V[0], x * a.V[1], x * a.V[2], x * a.V[3] } };
+}
+#endif
+
+// One neighbour's terms in the sums of a fit: @a g is (f_j, s_j) and @a own (f_i, s_i), so that
+// @a f = (df, ds) and its four lanes add ds df and, last, ds^2 to @a bs, dt df and dt ds to @a bt.
+VTK_ALWAYS_INLINE void AddNeighbour(
+  const double g[4], const Double4& own, double dt, Double4& bs, Double4& bt, Double4& f)
+{
+  std::memcpy(&f, g, sizeof(f));
+  f -= own;
+  bs += f[3] * f;
+  bt += dt * f;
+}
+
+// The sums of the least-squares fit of the derivatives of a vector field f in (s,t) at point @a i,
+// which minimises sum |f_j - f_i - f_s ds - f_t dt|^2 over the point's neighbours j in its
+// polygons: per field (@a p for P when WantP, @a n for the unit normal when WantN) sum ds df,
+// sum ds^2, sum dt df, sum dt ds (AddNeighbour's lanes), and @a dt2 = sum dt^2. A neighbour counts
+// once per polygon it shares with the point (every occurrence is added as it comes: no sorting or
+// merging). @a near and @a far are the least and largest squared distances to a neighbour (WantP).
+template <bool WantP, bool WantN, typename R>
+VTK_ALWAYS_INLINE void FitSums(const Context<R>& c, vtkIdType i, double p[8], double n[8],
+  double& dt2, double& near, double& far)
 {
   const PolyLinks& mesh = *c.Polys;
-  // The neighbours over the point's polygons, sorted so that each is read once.
-  constexpr int maxNeighbours = 64;
-  vtkIdType neighbours[maxNeighbours];
-  int count = 0;
+  const R* tc = c.TCoords->P;
+  const vtkIdType tnc = c.TCoords->NC;
+  const R* points = c.Points->P;
+  const double* normals = c.FitNormals;
+  const double t = tc[tnc * i + 1];
+  Double4 ownP = {}, ownN = {};
+  if (WantP)
+  {
+    const double own[4] = { static_cast<double>(points[3 * i]),
+      static_cast<double>(points[3 * i + 1]), static_cast<double>(points[3 * i + 2]),
+      static_cast<double>(tc[tnc * i]) };
+    std::memcpy(&ownP, own, sizeof(ownP));
+  }
+  if (WantN)
+  {
+    std::memcpy(&ownN, normals + 4 * i, sizeof(ownN));
+  }
+  Double4 bsP = {}, btP = {}, bsN = {}, btN = {};
+  double sumDt2 = 0.0;
+  double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
   for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
   {
     const vtkIdType cell = mesh.Links[l];
-    for (vtkIdType k = mesh.Offsets[cell]; k < mesh.Offsets[cell + 1] && count < maxNeighbours; ++k)
+    for (vtkIdType corner = mesh.Offsets[cell]; corner < mesh.Offsets[cell + 1]; ++corner)
     {
-      if (mesh.Conn[k] != i)
+      const vtkIdType j = mesh.Conn[corner];
+      if (j == i)
       {
-        neighbours[count++] = mesh.Conn[k];
+        continue;
+      }
+      const double dt = tc[tnc * j + 1] - t;
+      sumDt2 += dt * dt;
+      Double4 f;
+      if (WantP)
+      {
+        const double g[4] = { static_cast<double>(points[3 * j]),
+          static_cast<double>(points[3 * j + 1]), static_cast<double>(points[3 * j + 2]),
+          static_cast<double>(tc[tnc * j]) };
+        AddNeighbour(g, ownP, dt, bsP, btP, f);
+        const double d2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+        minD2 = std::min(minD2, d2);
+        maxD2 = std::max(maxD2, d2);
+      }
+      if (WantN)
+      {
+        AddNeighbour(normals + 4 * j, ownN, dt, bsN, btN, f);
       }
     }
   }
-  // Insertion sort: a dozen entries, mostly in order already.
-  for (int a = 1; a < count; ++a)
-  {
-    const vtkIdType x = neighbours[a];
-    int b = a;
-    for (; b > 0 && neighbours[b - 1] > x; --b)
-    {
-      neighbours[b] = neighbours[b - 1];
-    }
-    neighbours[b] = x;
-  }
-
-  double pi[3], ni[3] = { 0.0, 0.0, 0.0 };
-  c.Points->Get3(i, pi);
-  if (wantN)
-  {
-    std::copy_n(c.UnitNormals + 3 * i, 3, ni);
-  }
-  Fit fp, fn;
-  double minD2 = std::numeric_limits<double>::max(), maxD2 = 0.0;
-  for (int k = 0; k < count;)
-  {
-    // A neighbour weighs as many times as it has polygons in common with the point.
-    const vtkIdType j = neighbours[k];
-    int w = 0;
-    for (; k < count && neighbours[k] == j; ++k)
-    {
-      ++w;
-    }
-    const double ds = c.TCoords->Get(j, 0) - s, dt = c.TCoords->Get(j, 1) - t;
-    double v[3];
-    if (wantP)
-    {
-      c.Points->Get3(j, v);
-      v[0] -= pi[0];
-      v[1] -= pi[1];
-      v[2] -= pi[2];
-      fp.Add(w, ds, dt, v);
-      const double d2 = Dot(v, v);
-      minD2 = std::min(minD2, d2);
-      maxD2 = std::max(maxD2, d2);
-    }
-    if (wantN)
-    {
-      std::copy_n(c.UnitNormals + 3 * j, 3, v);
-      v[0] -= ni[0];
-      v[1] -= ni[1];
-      v[2] -= ni[2];
-      fn.Add(w, ds, dt, v);
-    }
-  }
-  if (wantN)
-  {
-    fn.Solve(Ns, Nt);
-  }
-  if (wantP && (!fp.Solve(Ps, Pt) || minD2 <= 1e-16 * maxD2))
-  {
-    Ps[0] = Ps[1] = Ps[2] = Pt[0] = Pt[1] = Pt[2] = 0.0;
-  }
+  std::memcpy(p, &bsP, sizeof(bsP));
+  std::memcpy(p + 4, &btP, sizeof(btP));
+  std::memcpy(n, &bsN, sizeof(bsN));
+  std::memcpy(n + 4, &btN, sizeof(btN));
+  dt2 = sumDt2;
+  near = minD2;
+  far = maxD2;
 }
 
 // The displacement d at point @a i, with the height h and its derivatives in (s,t); one
@@ -1002,41 +991,124 @@ struct DisplaceWorker : BlockOps<R>
     {
       return;
     }
-    for (int k = 0; k < count; ++k)
+    const bool wantP = !c.DPdu;
+    const int stride = c.FitStride;
+    const double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    if (!c.FitsKnown)
     {
-      const vtkIdType i = first + k;
-      double Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
-      double Ns[3] = { 0.0, 0.0, 0.0 }, Nt[3] = { 0.0, 0.0, 0.0 };
-      double* kept = c.Fits ? c.Fits + static_cast<vtkIdType>(c.FitStride) * i : nullptr;
-      if (!c.FitsKnown)
+      if (wantP && exact)
       {
-        FitDerivatives(
-          c, i, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), !c.DPdu, exact, Ps, Pt, Ns, Nt);
+        this->template Fit<true, true>(first, count, ps, pt, ns, nt);
       }
-      if (kept)
+      else if (wantP)
       {
-        double* fitted[4] = { Ps, Pt, Ns, Nt };
-        for (int v = c.DPdu ? 2 : 0; v < (exact ? 4 : 2); ++v, kept += 3)
+        this->template Fit<true, false>(first, count, ps, pt, ns, nt);
+      }
+      else
+      {
+        this->template Fit<false, true>(first, count, ps, pt, ns, nt);
+      }
+      return;
+    }
+    if (wantP)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        for (int j = 0; j < 3; ++j)
         {
-          for (int j = 0; j < 3; ++j)
-          {
-            if (c.FitsKnown)
-            {
-              fitted[v][j] = kept[j];
-            }
-            else
-            {
-              kept[j] = fitted[v][j];
-            }
-          }
+          ps[j][k] = kept[stride * k + j];
+          pt[j][k] = kept[stride * k + 3 + j];
         }
       }
-      for (int j = 0; j < 3; ++j)
+      kept += 6;
+    }
+    if (exact)
+    {
+      for (int k = 0; k < count; ++k)
       {
-        ps[j][k] = Ps[j];
-        pt[j][k] = Pt[j];
-        ns[j][k] = Ns[j];
-        nt[j][k] = Nt[j];
+        for (int j = 0; j < 3; ++j)
+        {
+          ns[j][k] = kept[stride * k + j];
+          nt[j][k] = kept[stride * k + 3 + j];
+        }
+      }
+    }
+  }
+
+  // The fitted P_s, P_t (WantP) and n_s, n_t (WantN) of the block, also written to the kept
+  // buffer: the sums point by point (gathers over the neighbours), the solutions in a loop over
+  // the block that vectorises. Where the texture coordinates around a point do not span two
+  // directions, or (P) a neighbour sits at the point with other texture coordinates (a pole:
+  // p(s,t) is singular there), the derivatives are 0 and the normal falls back on the input's.
+  template <bool WantP, bool WantN>
+  VTK_ALWAYS_INLINE void Fit(
+    vtkIdType first, int count, Lanes ps[3], Lanes pt[3], Lanes ns[3], Lanes nt[3]) const
+  {
+    const Context<R>& c = this->C;
+    alignas(64) Lanes m[3], bp[6], bn[6], near, far;
+    for (int k = 0; k < count; ++k)
+    {
+      double pk[8], nk[8];
+      FitSums<WantP, WantN>(c, first + k, pk, nk, m[2][k], near[k], far[k]);
+      const double* mk = WantN ? nk : pk;
+      m[0][k] = mk[3];
+      m[1][k] = mk[7];
+      for (int q = 0; q < 3; ++q)
+      {
+        bp[q][k] = pk[q];
+        bp[3 + q][k] = pk[4 + q];
+        bn[q][k] = nk[q];
+        bn[3 + q][k] = nk[4 + q];
+      }
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double det = m[0][k] * m[2][k] - m[1][k] * m[1][k];
+      const double tr = m[0][k] + m[2][k];
+      const bool spans = det > 1e-12 * tr * tr;
+      const double divisor = spans ? det : 1.0;
+      const bool distinct = spans & !(near[k] <= 1e-16 * far[k]);
+      for (int q = 0; q < 3; ++q)
+      {
+        if (WantP)
+        {
+          const double fs = (m[2][k] * bp[q][k] - m[1][k] * bp[3 + q][k]) / divisor;
+          const double ft = (m[0][k] * bp[3 + q][k] - m[1][k] * bp[q][k]) / divisor;
+          ps[q][k] = distinct ? fs : 0.0;
+          pt[q][k] = distinct ? ft : 0.0;
+        }
+        if (WantN)
+        {
+          const double fs = (m[2][k] * bn[q][k] - m[1][k] * bn[3 + q][k]) / divisor;
+          const double ft = (m[0][k] * bn[3 + q][k] - m[1][k] * bn[q][k]) / divisor;
+          ns[q][k] = spans ? fs : 0.0;
+          nt[q][k] = spans ? ft : 0.0;
+        }
+      }
+    }
+    const int stride = c.FitStride;
+    double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    if (WantP)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          kept[stride * k + q] = ps[q][k];
+          kept[stride * k + 3 + q] = pt[q][k];
+        }
+      }
+      kept += 6;
+    }
+    if (WantN)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          kept[stride * k + q] = ns[q][k];
+          kept[stride * k + 3 + q] = nt[q][k];
+        }
       }
     }
   }
@@ -1501,11 +1573,12 @@ struct vtkDisplacementMapFilter::MeshCache
   std::vector<std::pair<vtkIdType, vtkIdType>> Groups;
   bool HaveGroups = false;
 
-  // Exact's unit input normals: from the normals array.
+  // Exact's unit input normals, each with its texture coordinate s (Context::FitNormals): from
+  // the normals and the texture coordinates.
   Key NormalsKey;
   vtkTimeStamp NormalsTime;
-  Buffer<double> UnitNormals;
-  bool HaveUnitNormals = false;
+  Buffer<double> FitNormals;
+  bool HaveFitNormals = false;
 
   // Mesh's polygon orientations: from the polygons, the points and the normals.
   Key SignsKey;
@@ -1531,7 +1604,7 @@ struct vtkDisplacementMapFilter::MeshCache
   {
     return sizeof(vtkIdType) * (this->Links.Offsets.size() + this->Links.Links.size()) +
       sizeof(this->Groups[0]) * this->Groups.capacity() +
-      sizeof(double) * (this->UnitNormals.size() + this->Fits.size()) + this->Signs.size();
+      sizeof(double) * (this->FitNormals.size() + this->Fits.size()) + this->Signs.size();
   }
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
@@ -1864,37 +1937,34 @@ int vtkDisplacementMapFilter::RequestData(
     }
     if (this->NormalMode == Exact)
     {
-      Buffer<double>& unitNormals = cache.UnitNormals;
+      Buffer<double>& fitNormals = cache.FitNormals;
       MeshCache::Key normalsKey;
       normalsKey.Objects[0] = normals;
+      normalsKey.Objects[1] = tcoords;
       normalsKey.NumPoints = numPts;
-      if (cache.HaveUnitNormals &&
-        MeshCache::Fresh(cache.NormalsKey, normalsKey,
-          std::max(pointDataChanged, normals->GetMTime()), cache.NormalsTime))
+      if (!cache.HaveFitNormals ||
+        !MeshCache::Fresh(cache.NormalsKey, normalsKey,
+          std::max({ pointDataChanged, normals->GetMTime(), tcoords->GetMTime() }),
+          cache.NormalsTime))
       {
-        ctx.UnitNormals = unitNormals.data();
-      }
-    }
-    if (this->NormalMode == Exact && !ctx.UnitNormals)
-    {
-      Buffer<double>& unitNormals = cache.UnitNormals;
-      cache.HaveUnitNormals = false;
-      unitNormals.Resize(3 * static_cast<size_t>(numPts));
-      vtkSMPTools::For(0, numPts, Grain,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType i = begin; i < end; ++i)
+        cache.HaveFitNormals = false;
+        fitNormals.Resize(4 * static_cast<size_t>(numPts));
+        vtkSMPTools::For(0, numPts, Grain,
+          [&](vtkIdType begin, vtkIdType end)
           {
-            double* n = unitNormals.data() + 3 * i;
-            nrm.Get3(i, n);
-            FastNormalize(n);
-          }
-        });
-      ctx.UnitNormals = unitNormals.data();
-      cache.NormalsKey.Objects = { normals, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
-      cache.NormalsKey.NumPoints = numPts;
-      cache.NormalsTime.Modified();
-      cache.HaveUnitNormals = true;
+            for (vtkIdType i = begin; i < end; ++i)
+            {
+              double* n = fitNormals.data() + 4 * i;
+              nrm.Get3(i, n);
+              FastNormalize(n);
+              n[3] = tc.Get(i, 0);
+            }
+          });
+        cache.NormalsKey = normalsKey;
+        cache.NormalsTime.Modified();
+        cache.HaveFitNormals = true;
+      }
+      ctx.FitNormals = fitNormals.data();
     }
     if (useDerivs)
     {

@@ -99,9 +99,10 @@
  * threads.
  *
  * Memory: what depends on the input surface alone (seam groups, point-to-polygon links, Exact's
- * unit normals and fitted derivatives, Mesh's polygon orientations; about 180 bytes a point
- * for Exact on triangles) is kept between executions, so that a new Scale or height map does
- * not rebuild it; PrintSelf gives its size. With ReleaseDataFlag on, nothing is kept.
+ * unit normals with their texture coordinate s and fitted derivatives, Mesh's polygon
+ * orientations; about 185 bytes a point for Exact on triangles) is kept between executions, so
+ * that a new Scale or height map does not rebuild it; PrintSelf gives its size. With
+ * ReleaseDataFlag on, nothing is kept.
  *
  * @sa vtkParametricSurfaceSource vtkHeightMapToNormalMap vtkWarpScalar vtkPolyDataNormals
  */
