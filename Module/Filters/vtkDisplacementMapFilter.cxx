@@ -1406,18 +1406,18 @@ std::vector<vtkIdType> CoincidentGroups(
 // The diagonal of the input's bounding box as vtkDataSet::GetLength() gives it (in VTK 9.1 the
 // bounds of all of a vtkPolyData's points), in one pass that the compiler vectorises: 24 lanes
 // (8 points) per step, each lane always the same coordinate. The extremes of the same values are
-// the same, so the length is GetLength()'s to the bit; non-finite coordinates are left to it.
+// the same, so the length is GetLength()'s to the bit; non-finite coordinates (x - x is then NaN,
+// else 0) are left to it.
 template <typename R>
 double DiagonalLength(const ArrayReader<R>& points, vtkIdType numPts, vtkDataSet* input)
 {
   constexpr int Lanes = 24;
   const R* v = points.P;
-  R lo[Lanes], hi[Lanes];
-  bool bad[Lanes];
+  R lo[Lanes], hi[Lanes], nonFinite[Lanes];
   for (int j = 0; j < Lanes; ++j)
   {
     lo[j] = hi[j] = v[j % 3];
-    bad[j] = false;
+    nonFinite[j] = 0;
   }
   const vtkIdType n = 3 * numPts;
   vtkIdType i = 0;
@@ -1426,17 +1426,17 @@ double DiagonalLength(const ArrayReader<R>& points, vtkIdType numPts, vtkDataSet
     for (int j = 0; j < Lanes; ++j)
     {
       const R x = v[i + j];
-      lo[j] = x < lo[j] ? x : lo[j];
-      hi[j] = x > hi[j] ? x : hi[j];
-      bad[j] |= !(std::abs(x) <= std::numeric_limits<R>::max());
+      lo[j] = std::min(lo[j], x);
+      hi[j] = std::max(hi[j], x);
+      nonFinite[j] += x - x;
     }
   }
   for (int j = 0; i < n; ++i, ++j)
   {
     const R x = v[i];
-    lo[j] = x < lo[j] ? x : lo[j];
-    hi[j] = x > hi[j] ? x : hi[j];
-    bad[j] |= !(std::abs(x) <= std::numeric_limits<R>::max());
+    lo[j] = std::min(lo[j], x);
+    hi[j] = std::max(hi[j], x);
+    nonFinite[j] += x - x;
   }
   double l = 0.0;
   for (int c = 0; c < 3; ++c)
@@ -1444,12 +1444,12 @@ double DiagonalLength(const ArrayReader<R>& points, vtkIdType numPts, vtkDataSet
     R a = lo[c], b = hi[c];
     for (int j = c; j < Lanes; j += 3)
     {
-      a = std::min(a, lo[j]);
-      b = std::max(b, hi[j]);
-      if (bad[j])
+      if (nonFinite[j] != 0)
       {
         return input->GetLength();
       }
+      a = std::min(a, lo[j]);
+      b = std::max(b, hi[j]);
     }
     const double diff = static_cast<double>(b) - static_cast<double>(a);
     l += diff * diff;
