@@ -1209,55 +1209,20 @@ struct MeshPolygonNormalWorker
   signed char* Signs;
   bool Known;
 
-  template <bool SignKnown>
-  VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
+  // Adds the cross products of the fan from the first of the @a n corners @a ids to @a sum; @a pts
+  // has 3 components (points, moved points).
+  static VTK_ALWAYS_INLINE void FanSum(
+    const R* pts, const vtkIdType* ids, vtkIdType n, double sum[3])
   {
-    const PolyLinks& mesh = *this->C.Polys;
-    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
-    // The displaced polygon's normal, area-weighted: a fan of cross products from corner 0.
-    double moved[3] = { 0.0, 0.0, 0.0 };
-    this->FanSum(this->Moved, b, e, moved);
-    double sign = 1.0;
-    if (SignKnown)
+    const R* q0 = pts + 3 * ids[0];
+    const double p0[3] = { q0[0], q0[1], q0[2] };
+    for (vtkIdType k = 1; k + 1 < n; ++k)
     {
-      sign = this->Signs[cell] < 0 ? -1.0 : 1.0;
-    }
-    else
-    {
-      // The orientation: the input polygon's normal against its points' input normals.
-      double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
-      this->FanSum(*this->C.Points, b, e, orig);
-      for (vtkIdType k = b; k < e; ++k)
-      {
-        double nk[3];
-        this->C.Normals->Get3(mesh.Conn[k], nk);
-        nsum[0] += nk[0];
-        nsum[1] += nk[1];
-        nsum[2] += nk[2];
-      }
-      sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
-      this->Signs[cell] = sign < 0.0 ? -1 : 1;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      out[k] = sign * moved[k];
-    }
-  }
-
-  // Adds the cross products of the fan from corner b of the polygon's corners [b, e) to sum.
-  VTK_ALWAYS_INLINE void FanSum(
-    const ArrayReader<R>& pts, vtkIdType b, vtkIdType e, double sum[3]) const
-  {
-    const PolyLinks& mesh = *this->C.Polys;
-    double p0[3];
-    pts.Get3(mesh.Conn[b], p0);
-    for (vtkIdType k = b + 1; k + 1 < e; ++k)
-    {
-      double p1[3], p2[3], x[3];
-      pts.Get3(mesh.Conn[k], p1);
-      pts.Get3(mesh.Conn[k + 1], p2);
-      const double a1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-      const double a2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+      const R* q1 = pts + 3 * ids[k];
+      const R* q2 = pts + 3 * ids[k + 1];
+      const double a1[3] = { q1[0] - p0[0], q1[1] - p0[1], q1[2] - p0[2] };
+      const double a2[3] = { q2[0] - p0[0], q2[1] - p0[1], q2[2] - p0[2] };
+      double x[3];
       Cross(a1, a2, x);
       sum[0] += x[0];
       sum[1] += x[1];
@@ -1275,15 +1240,57 @@ struct MeshPolygonNormalWorker
   {
     if (this->Known)
     {
-      for (vtkIdType cell = begin; cell < end; ++cell)
-      {
-        this->template PolygonNormal<true>(cell, this->CellNormals + 3 * cell);
-      }
-      return;
+      this->template Polygons<true>(begin, end);
     }
-    for (vtkIdType cell = begin; cell < end; ++cell)
+    else
     {
-      this->template PolygonNormal<false>(cell, this->CellNormals + 3 * cell);
+      this->template Polygons<false>(begin, end);
+    }
+  }
+
+  // The arrays as raw pointers held in registers through the loop (the input points, normals and
+  // moved points all have 3 components).
+  template <bool SignKnown>
+  VTK_ALWAYS_INLINE void Polygons(vtkIdType begin, vtkIdType end) const
+  {
+    const vtkIdType* offsets = this->C.Polys->Offsets;
+    const vtkIdType* conn = this->C.Polys->Conn;
+    const R* moved = this->Moved.P;
+    const R* points = this->C.Points->P;
+    const R* normals = this->C.Normals->P;
+    signed char* signs = this->Signs;
+    double* out = this->CellNormals + 3 * begin;
+    for (vtkIdType cell = begin; cell < end; ++cell, out += 3)
+    {
+      const vtkIdType* ids = conn + offsets[cell];
+      const vtkIdType n = offsets[cell + 1] - offsets[cell];
+      // The displaced polygon's normal, area-weighted: a fan of cross products from corner 0.
+      double m[3] = { 0.0, 0.0, 0.0 };
+      FanSum(moved, ids, n, m);
+      double sign;
+      if (SignKnown)
+      {
+        sign = signs[cell] < 0 ? -1.0 : 1.0;
+      }
+      else
+      {
+        // The orientation: the input polygon's normal against its points' input normals.
+        double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
+        FanSum(points, ids, n, orig);
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          const R* nk = normals + 3 * ids[k];
+          nsum[0] += nk[0];
+          nsum[1] += nk[1];
+          nsum[2] += nk[2];
+        }
+        sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+        signs[cell] = sign < 0.0 ? -1 : 1;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = sign * m[k];
+      }
     }
   }
 };
