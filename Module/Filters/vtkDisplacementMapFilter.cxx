@@ -425,119 +425,30 @@ struct PolyLinks
 
   void BuildLinks(vtkIdType numPts, LinkTable& table) const
   {
+    // Counts, then their running sums (the end of each point's list), then the polygons
+    // placed from the last one down: each list ends up in increasing order and the ends
+    // become the starts, with no cursor array.
     table.Offsets.Resize(numPts + 1);
-    const vtkIdType nConn = this->Offsets[this->NumCells];
-    table.Links.Resize(nConn);
     vtkIdType* offsets = table.Offsets.data();
+    std::fill_n(offsets, numPts + 1, 0);
+    const vtkIdType nConn = this->Offsets[this->NumCells];
+    for (vtkIdType k = 0; k < nConn; ++k)
+    {
+      ++offsets[this->Conn[k]];
+    }
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      offsets[i + 1] += offsets[i];
+    }
+    table.Links.Resize(nConn);
     vtkIdType* links = table.Links.data();
-    // Big meshes in one chunk of polygons per thread (positions held in 32 bits): the lists
-    // come out the same whatever the chunks, so the thread count does not change them.
-    const vtkIdType chunks = std::min<vtkIdType>(
-      { vtkSMPTools::GetEstimatedNumberOfThreads(), 16, this->NumCells / 65536 });
-    if (chunks < 2 || nConn > static_cast<vtkIdType>(std::numeric_limits<std::uint32_t>::max()))
+    for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
     {
-      // Counts, then their running sums (the end of each point's list), then the polygons
-      // placed from the last one down: each list ends up in increasing order and the ends
-      // become the starts, with no cursor array.
-      std::fill_n(offsets, numPts + 1, 0);
-      for (vtkIdType k = 0; k < nConn; ++k)
+      for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
       {
-        ++offsets[this->Conn[k]];
+        links[--offsets[this->Conn[k]]] = c;
       }
-      for (vtkIdType i = 0; i < numPts; ++i)
-      {
-        offsets[i + 1] += offsets[i];
-      }
-      for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
-      {
-        for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
-        {
-          links[--offsets[this->Conn[k]]] = c;
-        }
-      }
-      return;
     }
-    // Per chunk and point: the chunk's count of the point's corners, then where the chunk puts
-    // its next link of the point (after the point's links from earlier chunks, so that each list
-    // is in increasing polygon order).
-    Buffer<std::uint32_t> at(static_cast<size_t>(chunks * numPts));
-    auto firstCell = [&](vtkIdType k)
-    { return this->NumCells / chunks * k + std::min(k, this->NumCells % chunks); };
-    vtkSMPTools::For(0, chunks, 1,
-      [&](vtkIdType k0, vtkIdType k1)
-      {
-        for (vtkIdType k = k0; k < k1; ++k)
-        {
-          std::uint32_t* n = at.data() + k * numPts;
-          std::fill_n(n, numPts, 0);
-          const vtkIdType* end = this->Conn + this->Offsets[firstCell(k + 1)];
-          for (const vtkIdType* id = this->Conn + this->Offsets[firstCell(k)]; id < end; ++id)
-          {
-            ++n[*id];
-          }
-        }
-      });
-    // The running sums over the points, in blocks: each block's total, their running sums, then
-    // each block's own.
-    constexpr vtkIdType block = 65536;
-    const vtkIdType blocks = (numPts + block - 1) / block;
-    std::vector<vtkIdType> blockStart(blocks + 1, 0);
-    vtkSMPTools::For(0, blocks, 1,
-      [&](vtkIdType b0, vtkIdType b1)
-      {
-        for (vtkIdType b = b0; b < b1; ++b)
-        {
-          vtkIdType total = 0;
-          for (vtkIdType k = 0; k < chunks; ++k)
-          {
-            const std::uint32_t* n = at.data() + k * numPts;
-            for (vtkIdType i = b * block; i < std::min(numPts, (b + 1) * block); ++i)
-            {
-              total += n[i];
-            }
-          }
-          blockStart[b + 1] = total;
-        }
-      });
-    for (vtkIdType b = 0; b < blocks; ++b)
-    {
-      blockStart[b + 1] += blockStart[b];
-    }
-    vtkSMPTools::For(0, blocks, 1,
-      [&](vtkIdType b0, vtkIdType b1)
-      {
-        for (vtkIdType b = b0; b < b1; ++b)
-        {
-          vtkIdType run = blockStart[b];
-          for (vtkIdType i = b * block; i < std::min(numPts, (b + 1) * block); ++i)
-          {
-            offsets[i] = run;
-            for (vtkIdType k = 0; k < chunks; ++k)
-            {
-              std::uint32_t& n = at[k * numPts + i];
-              const std::uint32_t count = n;
-              n = static_cast<std::uint32_t>(run);
-              run += count;
-            }
-          }
-        }
-      });
-    offsets[numPts] = nConn;
-    vtkSMPTools::For(0, chunks, 1,
-      [&](vtkIdType k0, vtkIdType k1)
-      {
-        for (vtkIdType k = k0; k < k1; ++k)
-        {
-          std::uint32_t* next = at.data() + k * numPts;
-          for (vtkIdType c = firstCell(k); c < firstCell(k + 1); ++c)
-          {
-            for (vtkIdType j = this->Offsets[c]; j < this->Offsets[c + 1]; ++j)
-            {
-              links[next[this->Conn[j]]++] = c;
-            }
-          }
-        }
-      });
   }
 };
 
