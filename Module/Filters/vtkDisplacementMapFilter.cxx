@@ -2079,13 +2079,21 @@ int vtkDisplacementMapFilter::RequestData(
         DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
         // Pass 1 (threaded), the seam groups and the links (serial) read only the input and write
         // apart: they run side by side, the serial ones on whichever threads pass 1 leaves (the
-        // links that pass 1 needs first, on the thread that then starts pass 1).
+        // links that pass 1 needs first, on the thread that then starts pass 1). Links wanted only
+        // after pass 1 (Mesh) come first in the task list instead, so that the two serial tasks
+        // start at once on two threads and pass 1 fills the time they leave (last, the links
+        // would follow the seams on one thread while the other ran out of work).
+        const bool linksAside = linksBeside && !linksFirst;
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
           {
             for (vtkIdType task = task0; task < task1; ++task)
             {
-              if (task == 0)
+              if (task == 0 && linksAside)
+              {
+                buildLinks();
+              }
+              else if (task == 0)
               {
                 if (linksFirst)
                 {
@@ -2098,9 +2106,9 @@ int vtkDisplacementMapFilter::RequestData(
               {
                 findGroups();
               }
-              else if (linksBeside && !linksFirst)
+              else if (linksAside)
               {
-                buildLinks();
+                vtkSMPTools::For(0, numPts, Grain, worker);
               }
             }
           });
