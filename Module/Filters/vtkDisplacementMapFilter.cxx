@@ -1470,9 +1470,11 @@ double DiagonalLength(const ArrayReader<R>& points, vtkIdType numPts, vtkDataSet
 // least squares over up to 4096 edges spread over the polygons: each edge's (du, dv) solves
 // dP ~ dPdu du + dPdv dv, against its (ds, dt). Returns 1/r (so dP/ds = dPdu / r_s); exactly
 // 1 when the fit is within 0.1% of it (float positions and the O(h^2) error of the fit
-// would otherwise perturb the untransformed case) or cannot be made.
+// would otherwise perturb the untransformed case) or cannot be made. Edges with an id outside the
+// @a numPts points are left out (their check may come later, beside pass 1).
 template <typename R>
-void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double scale[2])
+void EstimateDerivativeScale(
+  const Context<R>& c, const PolyLinks& mesh, vtkIdType numPts, double scale[2])
 {
   scale[0] = scale[1] = 1.0;
   double su = 0.0, uu = 0.0, tv = 0.0, vv = 0.0;
@@ -1484,6 +1486,10 @@ void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double 
       continue;
     }
     const vtkIdType i = mesh.Conn[mesh.Offsets[cell]], j = mesh.Conn[mesh.Offsets[cell] + 1];
+    if (i < 0 || i >= numPts || j < 0 || j >= numPts)
+    {
+      continue;
+    }
     // The mean of the two ends' derivatives: exact for quadratic p, so the fit has no
     // first-order bias from the surface's curvature.
     double pi[3], pj[3], a[3], b[3], aj[3], bj[3];
@@ -1758,32 +1764,48 @@ int vtkDisplacementMapFilter::RequestData(
     return 0;
   }
 
+  // Every pass reads points through the cells: an id outside the points must stop the filter
+  // before a pass reads it. Checked once per change of the cells or of the point count: here, or
+  // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it before the seam
+  // search (the only other reader of the cells there).
+  vtkCellArray* polys = input->GetPolys();
+  vtkCellArray* strips = input->GetStrips();
+  MeshCache::Key idsKey;
+  idsKey.Objects = { polys, polys->GetConnectivityArray(), strips, strips->GetConnectivityArray() };
+  idsKey.NumPoints = numPts;
+  auto idsInRange = [&]()
   {
-    // Every pass below reads points through the cells: an id outside the points must stop
-    // the filter first. Checked once per change of the cells or of the point count.
     MeshCache& cache = *this->Cache;
-    vtkCellArray* polys = input->GetPolys();
-    vtkCellArray* strips = input->GetStrips();
-    MeshCache::Key idsKey;
-    idsKey.Objects = { polys, polys->GetConnectivityArray(), strips,
-      strips->GetConnectivityArray() };
-    idsKey.NumPoints = numPts;
+    if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
+      !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
+    {
+      return false;
+    }
+    cache.IdsKey = idsKey;
+    cache.IdsTime.Modified();
+    cache.IdsInRange = true;
+    return true;
+  };
+  auto idsError = [&]()
+  {
+    vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
+      << numPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+  };
+  bool checkIdsBeside = false;
+  {
+    MeshCache& cache = *this->Cache;
     const vtkMTimeType idsChanged = std::max(
       { input->vtkObject::GetMTime(), polys->GetMTime(), polys->GetConnectivityArray()->GetMTime(),
         strips->GetMTime(), strips->GetConnectivityArray()->GetMTime() });
     if (!cache.IdsInRange || !MeshCache::Fresh(cache.IdsKey, idsKey, idsChanged, cache.IdsTime))
     {
       cache.IdsInRange = false;
-      if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
-        !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
+      checkIdsBeside = !needLinks && this->Scale != 0.0;
+      if (!checkIdsBeside && !idsInRange())
       {
-        vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
-          << numPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+        idsError();
         return 0;
       }
-      cache.IdsKey = idsKey;
-      cache.IdsTime.Modified();
-      cache.IdsInRange = true;
     }
   }
 
@@ -1894,7 +1916,6 @@ int vtkDisplacementMapFilter::RequestData(
     }
     PolyLinks mesh;
     MeshCache& cache = *this->Cache;
-    vtkCellArray* polys = input->GetPolys();
     MeshCache::Key linksKey;
     linksKey.Objects = { polys, polys->GetOffsetsArray(), polys->GetConnectivityArray(), nullptr,
       nullptr };
@@ -1973,7 +1994,7 @@ int vtkDisplacementMapFilter::RequestData(
     }
     if (useDerivs)
     {
-      EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
+      EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
     }
     const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
       (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
@@ -2055,6 +2076,7 @@ int vtkDisplacementMapFilter::RequestData(
     };
     // Pass 1: points, and the normals of the analytic modes.
     vtkIdType nonFinite = 0;
+    bool idsOk = true;
     auto run = [&](auto* data)
     {
       using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
@@ -2104,7 +2126,11 @@ int vtkDisplacementMapFilter::RequestData(
               }
               else if (task == 1)
               {
-                findGroups();
+                idsOk = !checkIdsBeside || idsInRange();
+                if (idsOk)
+                {
+                  findGroups();
+                }
               }
               else if (linksAside)
               {
@@ -2112,6 +2138,10 @@ int vtkDisplacementMapFilter::RequestData(
               }
             }
           });
+        if (!idsOk)
+        {
+          return;
+        }
         if (needLinks)
         {
           mesh.UseLinks(cache.Links);
@@ -2168,6 +2198,11 @@ int vtkDisplacementMapFilter::RequestData(
       default:
         run(static_cast<const double*>(raw));
         break;
+    }
+    if (!idsOk)
+    {
+      idsError();
+      return 0;
     }
     if (keepFits)
     {
