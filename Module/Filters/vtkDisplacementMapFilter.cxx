@@ -1767,7 +1767,8 @@ int vtkDisplacementMapFilter::RequestData(
   // Every pass reads points through the cells: an id outside the points must stop the filter
   // before a pass reads it. Checked once per change of the cells or of the point count: here, or
   // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it before the seam
-  // search (the only other reader of the cells there).
+  // search (the cells' other reader there but for the derivative-scale estimate, which skips ids
+  // outside the points).
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
   MeshCache::Key idsKey;
