@@ -27,12 +27,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <functional>
 #include <limits>
 #include <memory>
 #include <new>
 #include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -1194,55 +1192,20 @@ struct MeshPolygonNormalWorker
   signed char* Signs;
   bool Known;
 
-  template <bool SignKnown>
-  VTK_ALWAYS_INLINE void PolygonNormal(vtkIdType cell, double out[3]) const
+  // Adds the cross products of the fan from the first of the @a n corners @a ids to @a sum; @a pts
+  // has 3 components (points, moved points).
+  static VTK_ALWAYS_INLINE void FanSum(
+    const R* pts, const vtkIdType* ids, vtkIdType n, double sum[3])
   {
-    const PolyLinks& mesh = *this->C.Polys;
-    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
-    // The displaced polygon's normal, area-weighted: a fan of cross products from corner 0.
-    double moved[3] = { 0.0, 0.0, 0.0 };
-    this->FanSum(this->Moved, b, e, moved);
-    double sign = 1.0;
-    if (SignKnown)
+    const R* q0 = pts + 3 * ids[0];
+    const double p0[3] = { q0[0], q0[1], q0[2] };
+    for (vtkIdType k = 1; k + 1 < n; ++k)
     {
-      sign = this->Signs[cell] < 0 ? -1.0 : 1.0;
-    }
-    else
-    {
-      // The orientation: the input polygon's normal against its points' input normals.
-      double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
-      this->FanSum(*this->C.Points, b, e, orig);
-      for (vtkIdType k = b; k < e; ++k)
-      {
-        double nk[3];
-        this->C.Normals->Get3(mesh.Conn[k], nk);
-        nsum[0] += nk[0];
-        nsum[1] += nk[1];
-        nsum[2] += nk[2];
-      }
-      sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
-      this->Signs[cell] = sign < 0.0 ? -1 : 1;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      out[k] = sign * moved[k];
-    }
-  }
-
-  // Adds the cross products of the fan from corner b of the polygon's corners [b, e) to sum.
-  VTK_ALWAYS_INLINE void FanSum(
-    const ArrayReader<R>& pts, vtkIdType b, vtkIdType e, double sum[3]) const
-  {
-    const PolyLinks& mesh = *this->C.Polys;
-    double p0[3];
-    pts.Get3(mesh.Conn[b], p0);
-    for (vtkIdType k = b + 1; k + 1 < e; ++k)
-    {
-      double p1[3], p2[3], x[3];
-      pts.Get3(mesh.Conn[k], p1);
-      pts.Get3(mesh.Conn[k + 1], p2);
-      const double a1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-      const double a2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+      const R* q1 = pts + 3 * ids[k];
+      const R* q2 = pts + 3 * ids[k + 1];
+      const double a1[3] = { q1[0] - p0[0], q1[1] - p0[1], q1[2] - p0[2] };
+      const double a2[3] = { q2[0] - p0[0], q2[1] - p0[1], q2[2] - p0[2] };
+      double x[3];
       Cross(a1, a2, x);
       sum[0] += x[0];
       sum[1] += x[1];
@@ -1260,15 +1223,57 @@ struct MeshPolygonNormalWorker
   {
     if (this->Known)
     {
-      for (vtkIdType cell = begin; cell < end; ++cell)
-      {
-        this->template PolygonNormal<true>(cell, this->CellNormals + 3 * cell);
-      }
-      return;
+      this->template Polygons<true>(begin, end);
     }
-    for (vtkIdType cell = begin; cell < end; ++cell)
+    else
     {
-      this->template PolygonNormal<false>(cell, this->CellNormals + 3 * cell);
+      this->template Polygons<false>(begin, end);
+    }
+  }
+
+  // The arrays as raw pointers held in registers through the loop (the input points, normals and
+  // moved points all have 3 components).
+  template <bool SignKnown>
+  VTK_ALWAYS_INLINE void Polygons(vtkIdType begin, vtkIdType end) const
+  {
+    const vtkIdType* offsets = this->C.Polys->Offsets;
+    const vtkIdType* conn = this->C.Polys->Conn;
+    const R* moved = this->Moved.P;
+    const R* points = this->C.Points->P;
+    const R* normals = this->C.Normals->P;
+    signed char* signs = this->Signs;
+    double* out = this->CellNormals + 3 * begin;
+    for (vtkIdType cell = begin; cell < end; ++cell, out += 3)
+    {
+      const vtkIdType* ids = conn + offsets[cell];
+      const vtkIdType n = offsets[cell + 1] - offsets[cell];
+      // The displaced polygon's normal, area-weighted: a fan of cross products from corner 0.
+      double m[3] = { 0.0, 0.0, 0.0 };
+      FanSum(moved, ids, n, m);
+      double sign;
+      if (SignKnown)
+      {
+        sign = signs[cell] < 0 ? -1.0 : 1.0;
+      }
+      else
+      {
+        // The orientation: the input polygon's normal against its points' input normals.
+        double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
+        FanSum(points, ids, n, orig);
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          const R* nk = normals + 3 * ids[k];
+          nsum[0] += nk[0];
+          nsum[1] += nk[1];
+          nsum[2] += nk[2];
+        }
+        sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+        signs[cell] = sign < 0.0 ? -1 : 1;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        out[k] = sign * m[k];
+      }
     }
   }
 };
@@ -1330,19 +1335,20 @@ struct MeshPointNormalWorker : BlockOps<R>
 // per-point sort: each edge a->b adds a hash of b to a's sum and subtracts a hash of a from
 // b's (so each corner adds the hash of its next point minus that of its previous one). Where every
 // edge around a point is shared by two consistently oriented polygons (an interior point), the sums
-// cancel exactly; a boundary edge leaves a non-zero sum (unless 64-bit hashes cancel by chance).
+// cancel exactly; a boundary edge leaves a non-zero sum. The hash is a bijection, so the sum of a
+// point on one boundary fan (a seam's usual point), the hash of the fan's last neighbour minus that
+// of its first, is never zero; only where several boundary fans meet could sums cancel, by chance.
 // Inconsistent orientation or non-manifold edges only add candidates, which the position test then
 // discards. Points without polygons are candidates too. Serial, and integer sums commute: the flags
 // never depend on threads.
 std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
 {
-  // splitmix64's finaliser: neighbouring ids get unrelated hashes.
+  // An odd multiplier then an xor-shift, both invertible: neighbouring ids get unrelated hashes,
+  // for a third of the instructions of a full mixer (which took a third of this sweep's time).
   auto hash = [](vtkIdType id)
   {
-    std::uint64_t z = static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    const std::uint64_t z = static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ULL;
+    return z ^ (z >> 29);
   };
   Buffer<std::uint64_t> sum(numPts);
   Buffer<unsigned char> used(numPts);
@@ -1384,34 +1390,51 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
 // Groups the points @a ids that lie within @a tol of one another (transitively): returns,
 // per entry of @a ids, the index of its group's first entry. Serial and in id order, so
 // the groups never depend on the thread count; candidates are few (boundary points only).
+// Each candidate looks for earlier ones in the 27 cells of size @a tol around its own, in a
+// flat hash table of cells (open addressing) whose entries head lists through the candidates.
 template <typename R>
 std::vector<vtkIdType> CoincidentGroups(
   const ArrayReader<R>& points, const std::vector<vtkIdType>& ids, double tol)
 {
-  struct KeyHash
+  using Key = std::array<double, 3>;
+  // The bits of the three (whole-number) keys, mixed by multiplication. Adding +0 makes -0 and
+  // +0, which compare equal, hash alike. (The hash only places cells: the groups found do not
+  // depend on it.)
+  auto hash = [](const Key& k)
   {
-    // The bits of the three (whole-number) keys, mixed by multiplication: std::hash<double>
-    // hashes bytes one by one, and each candidate looks up 27 buckets. Adding +0 makes -0 and
-    // +0, which compare equal, hash alike. (The hash only places buckets: the groups found do
-    // not depend on it.)
-    size_t operator()(const std::array<double, 3>& k) const
+    std::uint64_t h = 0;
+    for (double x : k)
     {
-      std::uint64_t h = 0;
-      for (double x : k)
-      {
-        x += 0.0;
-        std::uint64_t bits;
-        std::memcpy(&bits, &x, sizeof(bits));
-        h = (h ^ bits) * 0x9E3779B97F4A7C15ULL;
-        h ^= h >> 29;
-      }
-      return static_cast<size_t>(h);
+      x += 0.0;
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof(bits));
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ULL;
+      h ^= h >> 29;
     }
+    return h;
+  };
+  const size_t n = ids.size();
+  size_t slots = 16;
+  while (slots < 2 * n)
+  {
+    slots *= 2;
+  }
+  // Per slot its cell and the last candidate put there (-1: empty); per candidate the one put
+  // in its cell before it.
+  std::vector<Key> cellKey(slots);
+  std::vector<vtkIdType> head(slots, -1), below(n, -1);
+  auto slotOf = [&](const Key& k)
+  {
+    size_t s = hash(k) & (slots - 1);
+    while (head[s] >= 0 && cellKey[s] != k)
+    {
+      s = (s + 1) & (slots - 1);
+    }
+    return s;
   };
   const double cell = tol > 0.0 ? tol : 1.0;
-  std::unordered_map<std::array<double, 3>, std::vector<vtkIdType>, KeyHash> buckets;
-  std::vector<vtkIdType> parent(ids.size());
-  std::function<vtkIdType(vtkIdType)> find = [&](vtkIdType k)
+  std::vector<vtkIdType> parent(n);
+  auto find = [&](vtkIdType k)
   {
     while (parent[k] != k)
     {
@@ -1419,25 +1442,20 @@ std::vector<vtkIdType> CoincidentGroups(
     }
     return k;
   };
-  for (size_t k = 0; k < ids.size(); ++k)
+  for (size_t k = 0; k < n; ++k)
   {
     parent[k] = static_cast<vtkIdType>(k);
     double p[3];
     points.Get3(ids[k], p);
-    const std::array<double, 3> key = { std::floor(p[0] / cell), std::floor(p[1] / cell),
-      std::floor(p[2] / cell) };
+    const Key key = { std::floor(p[0] / cell), std::floor(p[1] / cell), std::floor(p[2] / cell) };
     for (int dx = -1; dx <= 1; ++dx)
     {
       for (int dy = -1; dy <= 1; ++dy)
       {
         for (int dz = -1; dz <= 1; ++dz)
         {
-          auto it = buckets.find({ key[0] + dx, key[1] + dy, key[2] + dz });
-          if (it == buckets.end())
-          {
-            continue;
-          }
-          for (vtkIdType j : it->second)
+          for (vtkIdType j = head[slotOf({ key[0] + dx, key[1] + dy, key[2] + dz })]; j >= 0;
+               j = below[j])
           {
             double q[3];
             points.Get3(ids[j], q);
@@ -1451,14 +1469,71 @@ std::vector<vtkIdType> CoincidentGroups(
         }
       }
     }
-    buckets[key].push_back(static_cast<vtkIdType>(k));
+    const size_t s = slotOf(key);
+    cellKey[s] = key;
+    below[k] = head[s];
+    head[s] = static_cast<vtkIdType>(k);
   }
-  std::vector<vtkIdType> rep(ids.size());
-  for (size_t k = 0; k < ids.size(); ++k)
+  std::vector<vtkIdType> rep(n);
+  for (size_t k = 0; k < n; ++k)
   {
     rep[k] = find(static_cast<vtkIdType>(k));
   }
   return rep;
+}
+
+// The diagonal of the input's bounding box as vtkDataSet::GetLength() gives it (in VTK 9.1 the
+// bounds of all of a vtkPolyData's points), in one pass that the compiler vectorises: 24 lanes
+// (8 points) per step, each lane always the same coordinate. The extremes of the same values are
+// the same, so the length is GetLength()'s to the bit; non-finite coordinates (x - x is then NaN,
+// else 0) are left to it.
+template <typename R>
+double DiagonalLength(const ArrayReader<R>& points, vtkIdType numPts, vtkDataSet* input)
+{
+  constexpr int Lanes = 24;
+  const R* v = points.P;
+  R lo[Lanes], hi[Lanes], nonFinite[Lanes];
+  for (int j = 0; j < Lanes; ++j)
+  {
+    lo[j] = hi[j] = v[j % 3];
+    nonFinite[j] = 0;
+  }
+  const vtkIdType n = 3 * numPts;
+  vtkIdType i = 0;
+  for (; i + Lanes <= n; i += Lanes)
+  {
+    for (int j = 0; j < Lanes; ++j)
+    {
+      const R x = v[i + j];
+      lo[j] = std::min(lo[j], x);
+      hi[j] = std::max(hi[j], x);
+      nonFinite[j] += x - x;
+    }
+  }
+  for (int j = 0; i < n; ++i, ++j)
+  {
+    const R x = v[i];
+    lo[j] = std::min(lo[j], x);
+    hi[j] = std::max(hi[j], x);
+    nonFinite[j] += x - x;
+  }
+  double l = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    R a = lo[c], b = hi[c];
+    for (int j = c; j < Lanes; j += 3)
+    {
+      if (nonFinite[j] != 0)
+      {
+        return input->GetLength();
+      }
+      a = std::min(a, lo[j]);
+      b = std::max(b, hi[j]);
+    }
+    const double diff = static_cast<double>(b) - static_cast<double>(a);
+    l += diff * diff;
+  }
+  return std::sqrt(l);
 }
 
 // dPdu and dPdv may be derivatives with respect to parameters (u,v) of which the texture
@@ -1467,9 +1542,11 @@ std::vector<vtkIdType> CoincidentGroups(
 // least squares over up to 4096 edges spread over the polygons: each edge's (du, dv) solves
 // dP ~ dPdu du + dPdv dv, against its (ds, dt). Returns 1/r (so dP/ds = dPdu / r_s); exactly
 // 1 when the fit is within 0.1% of it (float positions and the O(h^2) error of the fit
-// would otherwise perturb the untransformed case) or cannot be made.
+// would otherwise perturb the untransformed case) or cannot be made. Edges with an id outside the
+// @a numPts points are left out (their check may come later, beside pass 1).
 template <typename R>
-void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double scale[2])
+void EstimateDerivativeScale(
+  const Context<R>& c, const PolyLinks& mesh, vtkIdType numPts, double scale[2])
 {
   scale[0] = scale[1] = 1.0;
   double su = 0.0, uu = 0.0, tv = 0.0, vv = 0.0;
@@ -1481,6 +1558,10 @@ void EstimateDerivativeScale(const Context<R>& c, const PolyLinks& mesh, double 
       continue;
     }
     const vtkIdType i = mesh.Conn[mesh.Offsets[cell]], j = mesh.Conn[mesh.Offsets[cell] + 1];
+    if (i < 0 || i >= numPts || j < 0 || j >= numPts)
+    {
+      continue;
+    }
     // The mean of the two ends' derivatives: exact for quadratic p, so the fit has no
     // first-order bias from the surface's curvature.
     double pi[3], pj[3], a[3], b[3], aj[3], bj[3];
@@ -1756,32 +1837,49 @@ int vtkDisplacementMapFilter::RequestData(
     return 0;
   }
 
+  // Every pass reads points through the cells: an id outside the points must stop the filter
+  // before a pass reads it. Checked once per change of the cells or of the point count: here, or
+  // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it before the seam
+  // search (the cells' other reader there but for the derivative-scale estimate, which skips ids
+  // outside the points).
+  vtkCellArray* polys = input->GetPolys();
+  vtkCellArray* strips = input->GetStrips();
+  MeshCache::Key idsKey;
+  idsKey.Objects = { polys, polys->GetConnectivityArray(), strips, strips->GetConnectivityArray() };
+  idsKey.NumPoints = numPts;
+  auto idsInRange = [&]()
   {
-    // Every pass below reads points through the cells: an id outside the points must stop
-    // the filter first. Checked once per change of the cells or of the point count.
     MeshCache& cache = *this->Cache;
-    vtkCellArray* polys = input->GetPolys();
-    vtkCellArray* strips = input->GetStrips();
-    MeshCache::Key idsKey;
-    idsKey.Objects = { polys, polys->GetConnectivityArray(), strips,
-      strips->GetConnectivityArray() };
-    idsKey.NumPoints = numPts;
+    if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
+      !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
+    {
+      return false;
+    }
+    cache.IdsKey = idsKey;
+    cache.IdsTime.Modified();
+    cache.IdsInRange = true;
+    return true;
+  };
+  auto idsError = [&]()
+  {
+    vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
+      << numPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+  };
+  bool checkIdsBeside = false;
+  {
+    MeshCache& cache = *this->Cache;
     const vtkMTimeType idsChanged = std::max(
       { input->vtkObject::GetMTime(), polys->GetMTime(), polys->GetConnectivityArray()->GetMTime(),
         strips->GetMTime(), strips->GetConnectivityArray()->GetMTime() });
     if (!cache.IdsInRange || !MeshCache::Fresh(cache.IdsKey, idsKey, idsChanged, cache.IdsTime))
     {
       cache.IdsInRange = false;
-      if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
-        !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
+      checkIdsBeside = !needLinks && this->Scale != 0.0;
+      if (!checkIdsBeside && !idsInRange())
       {
-        vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
-          << numPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+        idsError();
         return 0;
       }
-      cache.IdsKey = idsKey;
-      cache.IdsTime.Modified();
-      cache.IdsInRange = true;
     }
   }
 
@@ -1892,7 +1990,6 @@ int vtkDisplacementMapFilter::RequestData(
     }
     PolyLinks mesh;
     MeshCache& cache = *this->Cache;
-    vtkCellArray* polys = input->GetPolys();
     MeshCache::Key linksKey;
     linksKey.Objects = { polys, polys->GetOffsetsArray(), polys->GetConnectivityArray(), nullptr,
       nullptr };
@@ -1968,7 +2065,7 @@ int vtkDisplacementMapFilter::RequestData(
     }
     if (useDerivs)
     {
-      EstimateDerivativeScale(ctx, mesh, ctx.DerivativeScale);
+      EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
     }
     const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
       (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
@@ -2009,7 +2106,7 @@ int vtkDisplacementMapFilter::RequestData(
       if (candidates.size() > 1)
       {
         // The input's bounds here, beside pass 1, which reads no bounds.
-        const double seamTolerance = this->SeamTolerance * input->GetLength();
+        const double seamTolerance = this->SeamTolerance * DiagonalLength(pts, numPts, input);
         const std::vector<vtkIdType> rep = CoincidentGroups(pts, candidates, seamTolerance);
         std::vector<unsigned char> isRep(candidates.size(), 0);
         for (size_t k = 0; k < candidates.size(); ++k)
@@ -2050,6 +2147,7 @@ int vtkDisplacementMapFilter::RequestData(
     };
     // Pass 1: points, and the normals of the analytic modes.
     vtkIdType nonFinite = 0;
+    bool idsOk = true;
     auto run = [&](auto* data)
     {
       using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
@@ -2074,13 +2172,21 @@ int vtkDisplacementMapFilter::RequestData(
         DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
         // Pass 1 (threaded), the seam groups and the links (serial) read only the input and write
         // apart: they run side by side, the serial ones on whichever threads pass 1 leaves (the
-        // links that pass 1 needs first, on the thread that then starts pass 1).
+        // links that pass 1 needs first, on the thread that then starts pass 1). Links wanted only
+        // after pass 1 (Mesh) come first in the task list instead, so that the two serial tasks
+        // start at once on two threads and pass 1 fills the time they leave (last, the links
+        // would follow the seams on one thread while the other ran out of work).
+        const bool linksAside = linksBeside && !linksFirst;
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
           {
             for (vtkIdType task = task0; task < task1; ++task)
             {
-              if (task == 0)
+              if (task == 0 && linksAside)
+              {
+                buildLinks();
+              }
+              else if (task == 0)
               {
                 if (linksFirst)
                 {
@@ -2091,14 +2197,22 @@ int vtkDisplacementMapFilter::RequestData(
               }
               else if (task == 1)
               {
-                findGroups();
+                idsOk = !checkIdsBeside || idsInRange();
+                if (idsOk)
+                {
+                  findGroups();
+                }
               }
-              else if (linksBeside && !linksFirst)
+              else if (linksAside)
               {
-                buildLinks();
+                vtkSMPTools::For(0, numPts, Grain, worker);
               }
             }
           });
+        if (!idsOk)
+        {
+          return;
+        }
         if (needLinks)
         {
           mesh.UseLinks(cache.Links);
@@ -2155,6 +2269,11 @@ int vtkDisplacementMapFilter::RequestData(
       default:
         run(static_cast<const double*>(raw));
         break;
+    }
+    if (!idsOk)
+    {
+      idsError();
+      return 0;
     }
     if (keepFits)
     {
