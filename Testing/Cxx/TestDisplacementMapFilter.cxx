@@ -1348,6 +1348,101 @@ TEST(DisplacementMapFilter, PointIdsOutOfRangeAreAnError)
   }
 }
 
+// Where pass 1 reads no cells (None, and Approximate with dPdu/dPdv) the id check runs beside it:
+// no pass may read through a bad id first (the seam sweep writes through them, the derivative-scale
+// estimate reads each polygon's first two). A bad id in the first, a middle or the last polygon, or
+// in a triangle strip, 32- or 64-bit connectivity, at 1 and 2 threads, seams merged or not: the
+// error, an empty output and the input untouched.
+TEST(DisplacementMapFilter, PointIdsOutOfRangeBesidePass1)
+{
+  const Surface s = Rectangle();
+  auto image = RandomImage(4, 4, 1);
+  for (const int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    for (const bool ids64 : { false, true })
+    {
+      for (const bool strip : { false, true })
+      {
+        for (const vtkIdType where : { vtkIdType(0), vtkIdType(8), vtkIdType(-1) })
+        {
+          for (const vtkIdType bad : { vtkIdType(25), vtkIdType(-7),
+                 ids64 ? vtkIdType(1) << 40 : vtkIdType(VTK_TYPE_INT32_MAX) })
+          {
+            for (const int mode :
+              { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate })
+            {
+              for (const bool merge : { true, false })
+              {
+                SCOPED_TRACE(std::to_string(threads) + " threads, " + (ids64 ? "64" : "32") +
+                  "-bit, " + (strip ? "strip" : "polygon") + " at " + std::to_string(where) +
+                  ", id " + std::to_string(bad) + ", mode " + std::to_string(mode) +
+                  (merge ? ", merged" : ", apart"));
+                auto mesh = MakeMesh(s, 4, 4, true);
+                vtkCellArray* cells = mesh->GetPolys();
+                if (strip)
+                {
+                  vtkNew<vtkCellArray> strips;
+                  const vtkIdType ids[4] = { 0, 5, 1, 6 };
+                  strips->InsertNextCell(4, ids);
+                  mesh->SetStrips(strips);
+                  cells = strips;
+                }
+                if (ids64)
+                {
+                  cells->ConvertTo64BitStorage();
+                }
+                else
+                {
+                  cells->ConvertTo32BitStorage();
+                }
+                vtkDataArray* conn = cells->GetConnectivityArray();
+                const vtkIdType at = where < 0 ? conn->GetNumberOfTuples() - 1
+                                               : std::min(where, conn->GetNumberOfTuples() - 1);
+                const double good = conn->GetComponent(at, 0);
+                vtkNew<vtkDisplacementMapFilter> f;
+                f->SetNormalMode(mode);
+                f->SetMergeSeams(merge);
+                f->SetInputData(0, mesh);
+                f->SetInputData(1, image);
+                auto obs = Watch(f);
+                f->Update();
+                ASSERT_EQ(obs->Errors, 0) << obs->Message;
+                ASSERT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
+
+                conn->SetComponent(at, 0, static_cast<double>(bad));
+                cells->Modified();
+                auto pointsBefore =
+                  vtkSmartPointer<vtkDataArray>::Take(mesh->GetPoints()->GetData()->NewInstance());
+                pointsBefore->DeepCopy(mesh->GetPoints()->GetData());
+                auto connBefore = vtkSmartPointer<vtkDataArray>::Take(conn->NewInstance());
+                connBefore->DeepCopy(conn);
+                f->SetScale(0.5); // a new execution either way
+                f->Update();
+                const int errors = obs->Errors;
+                EXPECT_GE(errors, 1);
+                EXPECT_NE(obs->Message.find("point id outside [0, 25)"), std::string::npos)
+                  << obs->Message;
+                EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+                EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+                EXPECT_TRUE(SameBits(mesh->GetPoints()->GetData(), pointsBefore));
+                EXPECT_TRUE(SameBits(conn, connBefore));
+
+                conn->SetComponent(at, 0, good);
+                cells->Modified();
+                f->Update();
+                EXPECT_EQ(obs->Errors, errors);
+                EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 // Other arrays pass through; None keeps normals; PrintSelf names every setting.
 TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
 {
