@@ -29,6 +29,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -390,6 +391,86 @@ TEST(DisplacementMapFilter, SeamsAndPolesAreWatertight)
   double n[3];
   out->GetPointData()->GetNormals()->GetTuple(0, n);
   EXPECT_LT(AngleDeg({ n[0], n[1], n[2] }, { 0, -1, 0 }), 1.0);
+}
+
+// A seam point where two boundary fans meet (a bowtie: two triangles touching only at it) must be
+// found by the seam sweep whatever its neighbours' ids. The sweep sums, per point, a hash of each
+// corner's next point minus one of its previous point; here those sums are h(117) - h(422) +
+// h(1199) - h(894), and 117 + 1199 = 422 + 894, so a hash that is nearly additive (one multiply
+// and an xor-shift: it cancels for these ids) misses the point: it then moves by its own height,
+// not its duplicate's, and the surface cracks.
+TEST(DisplacementMapFilter, BowtieSeamPointMerges)
+{
+  const vtkIdType p = 1200, q = 1201;
+  vtkNew<vtkPoints> points;
+  points->SetDataType(VTK_DOUBLE);
+  points->SetNumberOfPoints(q + 1);
+  vtkNew<vtkDoubleArray> normals, tcoords;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(q + 1);
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(q + 1);
+  for (vtkIdType i = 0; i <= q; ++i)
+  {
+    // Points no polygon uses, apart from one another and from the triangles.
+    points->SetPoint(i, 3.0 + static_cast<double>(i), 5.0, 0.0);
+    normals->SetTuple3(i, 0.0, 0.0, 1.0);
+    tcoords->SetTuple2(i, 0.5, 0.5);
+  }
+  // p and q at one place on either side of a texture seam (s = 0.25 and 0.75).
+  points->SetPoint(p, 0.0, 0.0, 0.0);
+  points->SetPoint(q, 0.0, 0.0, 0.0);
+  tcoords->SetTuple2(p, 0.25, 0.5);
+  tcoords->SetTuple2(q, 0.75, 0.5);
+  points->SetPoint(117, 1.0, 0.0, 0.0);
+  points->SetPoint(422, 0.0, 1.0, 0.0);
+  points->SetPoint(1199, -1.0, 0.0, 0.0);
+  points->SetPoint(894, 0.0, -1.0, 0.0);
+  points->SetPoint(0, 1.0, -1.0, 0.0);
+  points->SetPoint(1, 1.0, -0.5, 0.0);
+  vtkNew<vtkCellArray> tris;
+  for (const std::array<vtkIdType, 3>& t : { std::array<vtkIdType, 3>{ p, 117, 422 },
+         std::array<vtkIdType, 3>{ p, 1199, 894 }, std::array<vtkIdType, 3>{ q, 0, 1 } })
+  {
+    tris->InsertNextCell(3, t.data());
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(tris);
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetPointData()->SetTCoords(tcoords);
+  // Heights growing with s: p's and q's own differ.
+  auto image = MakeHeightImage([](double s, double) { return s; }, 8, 4);
+  for (int mode : AllModes)
+  {
+    for (bool merge : { true, false })
+    {
+      SCOPED_TRACE(std::string("mode ") + std::to_string(mode) + (merge ? " merged" : " apart"));
+      vtkNew<vtkDisplacementMapFilter> f;
+      f->SetInputData(0, mesh);
+      f->SetInputData(1, image);
+      f->SetNormalMode(mode);
+      f->SetMergeSeams(merge);
+      auto obs = Watch(f);
+      f->Update();
+      ASSERT_EQ(obs->Errors, 0) << obs->Message;
+      double xp[3], xq[3];
+      f->GetOutput()->GetPoint(p, xp);
+      f->GetOutput()->GetPoint(q, xq);
+      // Merged, both move by the mean of their heights (0.25 and 0.75: the image is linear in s).
+      if (merge)
+      {
+        EXPECT_EQ(xp[2], xq[2]);
+        EXPECT_NEAR(xp[2], 0.5, 1e-12);
+      }
+      else
+      {
+        EXPECT_NEAR(xq[2] - xp[2], 0.5, 1e-12);
+      }
+    }
+  }
 }
 
 // Results do not depend on the number of threads, bit for bit.
@@ -1265,6 +1346,101 @@ TEST(DisplacementMapFilter, PointIdsOutOfRangeAreAnError)
       EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
     }
   }
+}
+
+// Where pass 1 reads no cells (None, and Approximate with dPdu/dPdv) the id check runs beside it:
+// no pass may read through a bad id first (the seam sweep writes through them, the derivative-scale
+// estimate reads each polygon's first two). A bad id in the first, a middle or the last polygon, or
+// in a triangle strip, 32- or 64-bit connectivity, at 1 and 2 threads, seams merged or not: the
+// error, an empty output and the input untouched.
+TEST(DisplacementMapFilter, PointIdsOutOfRangeBesidePass1)
+{
+  const Surface s = Rectangle();
+  auto image = RandomImage(4, 4, 1);
+  for (const int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    for (const bool ids64 : { false, true })
+    {
+      for (const bool strip : { false, true })
+      {
+        for (const vtkIdType where : { vtkIdType(0), vtkIdType(8), vtkIdType(-1) })
+        {
+          for (const vtkIdType bad : { vtkIdType(25), vtkIdType(-7),
+                 ids64 ? vtkIdType(1) << 40 : vtkIdType(VTK_TYPE_INT32_MAX) })
+          {
+            for (const int mode :
+              { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate })
+            {
+              for (const bool merge : { true, false })
+              {
+                SCOPED_TRACE(std::to_string(threads) + " threads, " + (ids64 ? "64" : "32") +
+                  "-bit, " + (strip ? "strip" : "polygon") + " at " + std::to_string(where) +
+                  ", id " + std::to_string(bad) + ", mode " + std::to_string(mode) +
+                  (merge ? ", merged" : ", apart"));
+                auto mesh = MakeMesh(s, 4, 4, true);
+                vtkCellArray* cells = mesh->GetPolys();
+                if (strip)
+                {
+                  vtkNew<vtkCellArray> strips;
+                  const vtkIdType ids[4] = { 0, 5, 1, 6 };
+                  strips->InsertNextCell(4, ids);
+                  mesh->SetStrips(strips);
+                  cells = strips;
+                }
+                if (ids64)
+                {
+                  cells->ConvertTo64BitStorage();
+                }
+                else
+                {
+                  cells->ConvertTo32BitStorage();
+                }
+                vtkDataArray* conn = cells->GetConnectivityArray();
+                const vtkIdType at = where < 0 ? conn->GetNumberOfTuples() - 1
+                                               : std::min(where, conn->GetNumberOfTuples() - 1);
+                const double good = conn->GetComponent(at, 0);
+                vtkNew<vtkDisplacementMapFilter> f;
+                f->SetNormalMode(mode);
+                f->SetMergeSeams(merge);
+                f->SetInputData(0, mesh);
+                f->SetInputData(1, image);
+                auto obs = Watch(f);
+                f->Update();
+                ASSERT_EQ(obs->Errors, 0) << obs->Message;
+                ASSERT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
+
+                conn->SetComponent(at, 0, static_cast<double>(bad));
+                cells->Modified();
+                auto pointsBefore =
+                  vtkSmartPointer<vtkDataArray>::Take(mesh->GetPoints()->GetData()->NewInstance());
+                pointsBefore->DeepCopy(mesh->GetPoints()->GetData());
+                auto connBefore = vtkSmartPointer<vtkDataArray>::Take(conn->NewInstance());
+                connBefore->DeepCopy(conn);
+                f->SetScale(0.5); // a new execution either way
+                f->Update();
+                const int errors = obs->Errors;
+                EXPECT_GE(errors, 1);
+                EXPECT_NE(obs->Message.find("point id outside [0, 25)"), std::string::npos)
+                  << obs->Message;
+                EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+                EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+                EXPECT_TRUE(SameBits(mesh->GetPoints()->GetData(), pointsBefore));
+                EXPECT_TRUE(SameBits(conn, connBefore));
+
+                conn->SetComponent(at, 0, good);
+                cells->Modified();
+                f->Update();
+                EXPECT_EQ(obs->Errors, errors);
+                EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 25);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 // Other arrays pass through; None keeps normals; PrintSelf names every setting.
