@@ -1615,12 +1615,38 @@ VTK_ALWAYS_INLINE bool FanIsOneRun(
 constexpr double FastProjection2 = 1e-6;
 constexpr double FastCos = 1e-3;
 
-// What the triangle pass leaves for the fans, per triangle (12 floats): the unit dP/dt,
-// then per corner dP/ds times the corner's weight (its angle in the tangent plane over the
-// length of dP/ds projected onto it). A vertex's frame is then the sum of its corners'
-// weighted dP/ds, projected: the corners' arithmetic is done once per triangle, where the
-// triangle's positions are at hand, instead of once per corner from gathered positions.
-constexpr int FastRecord = 12;
+// The fans of a run of vertices are done in blocks, in three phases: checking each fan and
+// listing its corners, weighing all the block's corners in one loop of plain arithmetic
+// (which the compiler vectorises), and summing each fan.
+struct FanBlock
+{
+  static constexpr int MaxVertices = 128;
+  static constexpr int MaxCorners = 512;
+  static_assert(MaxCorners >= MaxFastFan, "a fan fits in a block");
+  int NumberOfVertices = 0;
+  int NumberOfCorners = 0;
+  std::int32_t Vertex[MaxVertices];
+  float Handedness[MaxVertices];
+  int First[MaxVertices + 1];
+  // Per vertex: its unit normal, the offset of its first triangle's directions, the
+  // projections of those (unit vectors, see References), whether checks passed, the sum of
+  // weighted dP/ds, the tangent.
+  alignas(32) double NV[3][MaxVertices];
+  alignas(32) std::int32_t First6[MaxVertices];
+  alignas(32) double R[6][MaxVertices];
+  alignas(32) double Good[MaxVertices];
+  alignas(32) double S[3][MaxVertices];
+  alignas(32) float Tangent[3][MaxVertices];
+  // Per corner: its triangle, the point ids of the corner and of its next and previous
+  // corners (times 3: offsets of their coordinates), its vertex's unit normal, its weighted
+  // dP/ds.
+  alignas(32) std::int32_t Triangle[MaxCorners];
+  alignas(32) std::int32_t Self[MaxCorners];
+  alignas(32) std::int32_t Next[MaxCorners];
+  alignas(32) std::int32_t Prev[MaxCorners];
+  alignas(32) double N[3][MaxCorners];
+  alignas(32) double WeightedOs[3][MaxCorners];
+};
 
 template <typename PT, typename NT, typename TT>
 class FastMikk
@@ -1684,13 +1710,11 @@ private:
           }
         });
     }
-    Block<double> unitNormals(3 * static_cast<std::size_t>(this->NumberOfPoints));
-    this->UnitNormals(unitNormals.Get());
     Block<std::int32_t> w(3 * nt);
-    Block<float> records(FastRecord * nt);
+    Block<std::array<float, 6>> dir(nt);
     Block<unsigned char> orient(nt);
     if (!this->Triangles(offsets, conn, nTris, weld.Get(), referenced ? referenced->Get() : nullptr,
-          unitNormals.Get(), w.Get(), records.Get(), orient.Get()))
+          w.Get(), dir.Get(), orient.Get()))
     {
       return false;
     }
@@ -1716,8 +1740,8 @@ private:
     {
       return false;
     }
-    if (!this->Vertices(w.Get(), records.Get(), orient.Get(), first.Get(), corners.Get(),
-          weld.Get(), referenced ? referenced->Get() : nullptr, unitNormals.Get(), out))
+    if (!this->Vertices(w.Get(), dir.Get(), orient.Get(), first.Get(), corners.Get(), weld.Get(),
+          referenced ? referenced->Get() : nullptr, out))
     {
       return false;
     }
@@ -1882,59 +1906,13 @@ private:
     return true;
   }
 
-  // Every point's unit normal as UnitNormal gives it, or NaN where that is not a unit
-  // vector (a zero normal): a triangle using such a point fails the triangle pass's checks.
-  void UnitNormals(double* un) const
-  {
-    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        if (vtkSurfaceDetailVectorize::HaveAVX2())
-        {
-          UnitNormalsAVX2(*this, b, e, un);
-        }
-        else
-        {
-          this->UnitNormalRange(b, e, un);
-        }
-      });
-  }
-
-  SURFACEDETAIL_TARGET_AVX2 static void UnitNormalsAVX2(
-    const FastMikk& self, vtkIdType b, vtkIdType e, double* un)
-  {
-    self.UnitNormalRange(b, e, un);
-  }
-
-  // UnitNormal without branches, so that the loop vectorises.
-  VTK_ALWAYS_INLINE void UnitNormalRange(vtkIdType b, vtkIdType e, double* __restrict un) const
-  {
-    const NT* __restrict n = this->N;
-    for (vtkIdType i = b; i < e; ++i)
-    {
-      const double x = double(n[3 * i]), y = double(n[3 * i + 1]), z = double(n[3 * i + 2]);
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && len <= DBL_MAX;
-      const double ux = scale ? inv * x : x, uy = scale ? inv * y : y, uz = scale ? inv * z : z;
-      const double unit = std::abs(ux * ux + uy * uy + uz * uz - 1.0) < 1e-6
-        ? 1.0
-        : std::numeric_limits<double>::quiet_NaN();
-      un[3 * i] = unit * ux;
-      un[3 * i + 1] = unit * uy;
-      un[3 * i + 2] = unit * uz;
-    }
-  }
-
   // Per triangle: welded corners, the directions of dP/ds and dP/dt as the general path's
-  // InitTriangles computes them, the orientation, and the record of its corners (see
-  // FastRecord; single precision: every use below has a margin far above that rounding).
-  // Quads, larger polygons, degenerate triangles, triangles without usable derivatives and
-  // corners whose projected edges the general path would not normalise need the general
-  // path.
+  // InitTriangles computes them (then stored in single precision: every use below has a
+  // margin far above that rounding), and the orientation. Quads, larger polygons,
+  // degenerate triangles and triangles without usable derivatives need the general path.
   template <typename IdT>
   bool Triangles(const IdT* offsets, const IdT* conn, vtkIdType nTris, const std::int32_t* weld,
-    std::atomic<unsigned char>* referenced, const double* un, std::int32_t* w, float* records,
+    std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
     unsigned char* orient) const
   {
     if (offsets[nTris] != 3 * nTris)
@@ -1950,8 +1928,8 @@ private:
           return;
         }
         const bool done = vtkSurfaceDetailVectorize::HaveAVX2()
-          ? TrianglesAVX2(*this, b, e, offsets, conn, weld, referenced, un, w, records, orient)
-          : this->TriangleRange(b, e, offsets, conn, weld, referenced, un, w, records, orient);
+          ? TrianglesAVX2(*this, b, e, offsets, conn, weld, referenced, w, dir, orient)
+          : this->TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
         if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
@@ -1963,10 +1941,10 @@ private:
   template <typename IdT>
   SURFACEDETAIL_TARGET_AVX2 static bool TrianglesAVX2(const FastMikk& self, vtkIdType b,
     vtkIdType e, const IdT* offsets, const IdT* conn, const std::int32_t* weld,
-    std::atomic<unsigned char>* referenced, const double* un, std::int32_t* w, float* records,
+    std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
     unsigned char* orient)
   {
-    return self.TriangleRange(b, e, offsets, conn, weld, referenced, un, w, records, orient);
+    return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
   }
 
   // As the fans: blocks of triangles, each checked and listed, then one loop of plain
@@ -1974,7 +1952,7 @@ private:
   template <typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
-    const double* un, std::int32_t* w, float* records, unsigned char* orient) const
+    std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient) const
   {
     constexpr int Size = 128;
     struct Columns
@@ -1983,7 +1961,7 @@ private:
       alignas(32) std::int32_t U[3][Size]; // offsets of the corners' texture coordinates
       alignas(32) double Good[Size];
       alignas(32) double Sign[Size];
-      alignas(32) float R[FastRecord][Size];
+      alignas(32) float D[6][Size];
     };
     std::unique_ptr<Columns> columns(new Columns);
     Columns& cb = *columns;
@@ -2009,7 +1987,7 @@ private:
           cb.U[k][j] = this->TcStride * p;
         }
       }
-      this->TriangleColumns(cb.X, cb.U, m, un, cb.Good, cb.Sign, cb.R);
+      this->TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
       for (int j = 0; j < m; ++j)
       {
         if (cb.Good[j] == 0.0)
@@ -2017,49 +1995,18 @@ private:
           return false;
         }
         const vtkIdType t = t0 + j;
-        float* r = records + FastRecord * t;
-        for (int c = 0; c < FastRecord; ++c)
-        {
-          r[c] = cb.R[c][j];
-        }
+        dir[t] = { cb.D[0][j], cb.D[1][j], cb.D[2][j], cb.D[3][j], cb.D[4][j], cb.D[5][j] };
         orient[t] = cb.Sign[j] > 0.0 ? 1 : 0;
       }
     }
     return true;
   }
 
-  // A corner's dP/ds weighted (see FastRecord), and whether the general path would
-  // normalise both its projected edges. The edges from the corner are sigma-signed f1 and
-  // f2 (e1 . e2 = sigma f1 . f2, l1 and l2 their squared lengths, f12 = f1 . f2); x is their
-  // cross product, the same at every corner of the triangle; n the corner's unit normal,
-  // s the triangle's unit dP/ds. The angle between the projected edges e1, e2 has the cross
-  // product n . x and the dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d,
-  // |proj d|^2 = d . d - (d . n)^2.
-  VTK_ALWAYS_INLINE static double WeighCorner(const double (&f1)[3], const double (&f2)[3],
-    double l1, double l2, double f12, double sigma, const double (&x)[3], const double (&n)[3],
-    const double (&s)[3], double ss, float* ws)
-  {
-    const double n1 = f1[0] * n[0] + f1[1] * n[1] + f1[2] * n[2];
-    const double n2 = f2[0] * n[0] + f2[1] * n[1] + f2[2] * n[2];
-    // The general path normalises a projected edge only when some component is above
-    // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
-    // margin of 4), so shorter projections (an edge along the normal) go that way.
-    const double pl1 = l1 - n1 * n1, pl2 = l2 - n2 * n2;
-    const double angle = FastAngle(
-      std::abs(x[0] * n[0] + x[1] * n[1] + x[2] * n[2]), sigma * (f12 - n1 * n2));
-    const double on = s[0] * n[0] + s[1] * n[1] + s[2] * n[2];
-    const double weight = angle / std::sqrt(ss - on * on);
-    ws[0] = static_cast<float>(weight * s[0]);
-    ws[1] = static_cast<float>(weight * s[1]);
-    ws[2] = static_cast<float>(weight * s[2]);
-    return std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? 1.0 : 0.0;
-  }
-
   // One loop over a block's triangles (with gathers in the AVX2 build).
   template <int Size>
   VTK_ALWAYS_INLINE void TriangleColumns(const std::int32_t (&x)[3][Size],
-    const std::int32_t (&u)[3][Size], int m, const double* __restrict un,
-    double* __restrict good, double* __restrict sign, float (&r)[FastRecord][Size]) const
+    const std::int32_t (&u)[3][Size], int m, double* __restrict good, double* __restrict sign,
+    float (&d)[6][Size]) const
   {
     const PT* __restrict p = this->P;
     const TT* __restrict tc = this->T;
@@ -2102,40 +2049,18 @@ private:
       g = lenOt2 > floor2 ? g : 0.0;
       g = lenOs2 > 4.0 * FLT_MIN * FLT_MIN ? g : 0.0;
       g = lenOt2 > 4.0 * FLT_MIN * FLT_MIN ? g : 0.0;
+      good[j] = g;
       const double s = area2 > 0.0 ? 1.0 : -1.0;
       sign[j] = s;
       const double ss = s / std::sqrt(lenOs2), st = s / std::sqrt(lenOt2);
-      const double us[3] = { ss * os[0], ss * os[1], ss * os[2] };
       for (int i = 0; i < 3; ++i)
       {
-        r[i][j] = static_cast<float>(st * ot[i]);
-      }
-      // The corners: edges d1 = v2 - v1, d2 = v3 - v1, d3 = v3 - v2; corner 1 has the edges
-      // d1 and d2, corner 2 d3 and -d1, corner 3 -d2 and -d3.
-      const double d3[3] = { v3[0] - v2[0], v3[1] - v2[1], v3[2] - v2[2] };
-      const double l3 = d3[0] * d3[0] + d3[1] * d3[1] + d3[2] * d3[2];
-      const double d12 = d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2];
-      const double d13 = d1[0] * d3[0] + d1[1] * d3[1] + d1[2] * d3[2];
-      const double d23 = d2[0] * d3[0] + d2[1] * d3[1] + d2[2] * d3[2];
-      const double cx[3] = { d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
-        d1[0] * d2[1] - d1[1] * d2[0] };
-      const double uss = us[0] * us[0] + us[1] * us[1] + us[2] * us[2];
-      const double n1[3] = { un[a], un[a + 1], un[a + 2] };
-      const double n2[3] = { un[b], un[b + 1], un[b + 2] };
-      const double n3[3] = { un[c], un[c + 1], un[c + 2] };
-      float w1[3], w2[3], w3[3];
-      g *= WeighCorner(d1, d2, l1, l2, d12, 1.0, cx, n1, us, uss, w1);
-      g *= WeighCorner(d3, d1, l3, l1, d13, -1.0, cx, n2, us, uss, w2);
-      g *= WeighCorner(d2, d3, l2, l3, d23, 1.0, cx, n3, us, uss, w3);
-      good[j] = g;
-      for (int i = 0; i < 3; ++i)
-      {
-        r[3 + i][j] = w1[i];
-        r[6 + i][j] = w2[i];
-        r[9 + i][j] = w3[i];
+        d[i][j] = static_cast<float>(ss * os[i]);
+        d[3 + i][j] = static_cast<float>(st * ot[i]);
       }
     }
   }
+
   // Vertex -> its corners (4 * triangle + corner), each list in triangle order. Two tasks:
   // the first half of the triangles counts into one array and fills each list from its
   // front, the second half into another and fills from the back, walking backwards; no
@@ -2199,9 +2124,9 @@ private:
       });
   }
 
-  bool Vertices(const std::int32_t* w, const float* records, const unsigned char* orient,
+  bool Vertices(const std::int32_t* w, const std::array<float, 6>* dir, const unsigned char* orient,
     const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
-    const std::atomic<unsigned char>* referenced, const double* un, float* out) const
+    const std::atomic<unsigned char>* referenced, float* out) const
   {
     std::atomic<bool> fail(false);
     vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
@@ -2212,10 +2137,10 @@ private:
           return;
         }
         const bool done = vtkSurfaceDetailVectorize::HaveAVX2()
-          ? FansAVX2(*this, std::int32_t(b), std::int32_t(e), w, records, orient, first,
-              corners, weld, un, out)
-          : this->Fans<false>(std::int32_t(b), std::int32_t(e), w, records, orient, first,
-              corners, weld, un, out);
+          ? FansAVX2(
+              *this, std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out)
+          : this->Fans<false>(
+              std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out);
         if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
@@ -2281,103 +2206,252 @@ private:
     return n;
   }
 
-  // The fans in the AVX2 build (see vtkSurfaceDetailVectorize.h): the small fans' links
-  // found in eight lanes; the same results bit for bit (no fused multiply-add, and sums
-  // stay in order).
+  // The fans in the AVX2 build (see vtkSurfaceDetailVectorize.h): the corners' arithmetic
+  // four to a vector, the small fans' links found in eight lanes; the same results bit
+  // for bit (no fused multiply-add, and sums stay in order).
   SURFACEDETAIL_TARGET_AVX2 static bool FansAVX2(const FastMikk& self, std::int32_t b,
-    std::int32_t e, const std::int32_t* w, const float* records, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
-    const double* un, float* out)
+    std::int32_t e, const std::int32_t* w, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    const std::int32_t* weld, float* out)
   {
-    return self.Fans<true>(b, e, w, records, orient, first, corners, weld, un, out);
+    return self.Fans<true>(b, e, w, dir, orient, first, corners, weld, out);
   }
 
-  // Per vertex: checks its fan, sums its corners' weighted dP/ds in corner-list order and
-  // projects the sum onto the tangent plane. At the default threshold MikkTSpace separates
-  // only opposite directions; with every corner's dP/ds and dP/dt projections within a
-  // quarter turn (with a margin) of the first corner's, no two are.
   template <bool Wide>
   VTK_ALWAYS_INLINE bool Fans(std::int32_t b, std::int32_t e, const std::int32_t* w,
-    const float* records, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, const std::int32_t* weld, const double* un, float* out) const
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, const std::int32_t* weld, float* out) const
   {
-    constexpr double cos2 = FastCos * FastCos;
-    for (std::int32_t v = b; v < e; ++v)
+    std::unique_ptr<FanBlock> block(new FanBlock);
+    FanBlock& fb = *block;
+    for (std::int32_t v = b; v < e;)
     {
-      if (this->Welded && weld[v] != v)
+      fb.NumberOfVertices = 0;
+      fb.NumberOfCorners = 0;
+      fb.First[0] = 0;
+      for (; v < e && fb.NumberOfVertices < FanBlock::MaxVertices; ++v)
       {
-        continue; // a copy of a smaller point, filled later
+        if (this->Welded && weld[v] != v)
+        {
+          continue; // a copy of a smaller point, filled later
+        }
+        const int k = first[v + 1] - first[v];
+        if (k > FanBlock::MaxCorners - fb.NumberOfCorners)
+        {
+          break;
+        }
+        if (!this->GatherFan<Wide>(v, k, w, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        {
+          return false;
+        }
       }
-      float* o = out + 4 * std::size_t(v);
-      const int k = first[v + 1] - first[v];
-      if (k == 0)
-      {
-        FinalTangent(this->UnitNormal(v), TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, o);
-        continue;
-      }
-      const std::int32_t* list = corners + first[v];
-      const unsigned char o0 = orient[list[0] >> 2];
-      int same = 1;
-      for (int a = 1; a < k; ++a)
-      {
-        same &= orient[list[a] >> 2] == o0;
-      }
-      // Each edge at v must join exactly two triangles or bound the fan (then the general
-      // path's greedy pairing finds the same links), and the links must chain all the
-      // triangles into one run.
-      std::int32_t next[MaxFastFan], prev[MaxFastFan];
-      if (!same || !FanIsOneRun<Wide>(list, w, k, next, prev))
+      References(fb, dir);
+      this->WeighCorners(fb, dir);
+      if (!SumFans(fb, dir, out))
       {
         return false;
       }
-      // The references: the first corner's dP/ds and dP/dt projected (not normalised).
-      const double n[3] = { un[3 * std::size_t(v)], un[3 * std::size_t(v) + 1],
-        un[3 * std::size_t(v) + 2] };
-      const float* r0 = records + FastRecord * std::size_t(list[0] >> 2);
-      const float* s0 = r0 + 3 + 3 * (list[0] & 3);
-      const double sx = s0[0], sy = s0[1], sz = s0[2];
-      const double tx = r0[0], ty = r0[1], tz = r0[2];
-      const double sn = sx * n[0] + sy * n[1] + sz * n[2];
-      const double tn = tx * n[0] + ty * n[1] + tz * n[2];
-      const double p[3] = { sx - sn * n[0], sy - sn * n[1], sz - sn * n[2] };
-      const double q[3] = { tx - tn * n[0], ty - tn * n[1], tz - tn * n[2] };
+    }
+    return true;
+  }
+
+  // Checks the fan of v and appends its corners to the block (a vertex that no triangle
+  // uses gets the default frame at once).
+  template <bool Wide>
+  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* w,
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    FanBlock& fb, float* out) const
+  {
+    const V3 n = this->UnitNormal(v);
+    if (k == 0)
+    {
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
+      return true;
+    }
+    if (!(std::abs(Dot(n, n) - 1.0) < 1e-6))
+    {
+      return false;
+    }
+    std::int32_t next[MaxFastFan], prev[MaxFastFan];
+    const std::int32_t* list = corners + first[v];
+    const unsigned char o = orient[list[0] >> 2];
+    std::int32_t* tri = fb.Triangle + fb.NumberOfCorners;
+    int same = 1;
+    for (int a = 0; a < k; ++a)
+    {
+      const std::int32_t t = list[a] >> 2;
+      tri[a] = t;
+      same &= orient[t] == o;
+    }
+    // Each edge at v must join exactly two triangles or bound the fan (then the general
+    // path's greedy pairing finds the same links), and the links must chain all the
+    // triangles into one run.
+    if (!same || !FanIsOneRun<Wide>(list, w, k, next, prev))
+    {
+      return false;
+    }
+    const int j = fb.NumberOfVertices;
+    fb.NV[0][j] = n[0];
+    fb.NV[1][j] = n[1];
+    fb.NV[2][j] = n[2];
+    fb.First6[j] = 6 * tri[0];
+    for (int a = 0, c = fb.NumberOfCorners; a < k; ++a, ++c)
+    {
+      fb.Self[c] = 3 * v;
+      fb.Next[c] = 3 * next[a];
+      fb.Prev[c] = 3 * prev[a];
+      fb.N[0][c] = n[0];
+      fb.N[1][c] = n[1];
+      fb.N[2][c] = n[2];
+    }
+    fb.Handedness[fb.NumberOfVertices] = o != 0 ? 1.0f : -1.0f;
+    fb.Vertex[fb.NumberOfVertices++] = v;
+    fb.NumberOfCorners += k;
+    fb.First[fb.NumberOfVertices] = fb.NumberOfCorners;
+    return true;
+  }
+
+  // Each corner's angle, projected onto the tangent plane, over the length of its dP/ds
+  // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
+  // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
+  // One loop over the block's corners, which the compiler vectorises (with gathers in the
+  // AVX2 build).
+  VTK_ALWAYS_INLINE void WeighCorners(FanBlock& fb, const std::array<float, 6>* dir) const
+  {
+    const int nc = fb.NumberOfCorners;
+    const PT* __restrict p = this->P;
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
+    const double* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
+    double* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
+    for (int c = 0; c < nc; ++c)
+    {
+      const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
+      const double pv[3] = { double(p[x0]), double(p[x0 + 1]), double(p[x0 + 2]) };
+      const double e1x = double(p[x1]) - pv[0], e1y = double(p[x1 + 1]) - pv[1],
+                   e1z = double(p[x1 + 2]) - pv[2];
+      const double e2x = double(p[x2]) - pv[0], e2y = double(p[x2 + 1]) - pv[1],
+                   e2z = double(p[x2 + 2]) - pv[2];
+      const double osx = d[t], osy = d[t + 1], osz = d[t + 2];
+      const double n1 = e1x * nx[c] + e1y * ny[c] + e1z * nz[c];
+      const double n2 = e2x * nx[c] + e2y * ny[c] + e2z * nz[c];
+      // The general path normalises a projected edge only when some component is above
+      // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+      // margin of 4), so shorter projections (an edge along the normal) go that way.
+      const double pl1 = e1x * e1x + e1y * e1y + e1z * e1z - n1 * n1;
+      const double pl2 = e2x * e2x + e2y * e2y + e2z * e2z - n2 * n2;
+      const double x = e1y * e2z - e1z * e2y;
+      const double y = e1z * e2x - e1x * e2z;
+      const double z = e1x * e2y - e1y * e2x;
+      const double angle = FastAngle(
+        std::abs(x * nx[c] + y * ny[c] + z * nz[c]), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+      const double on = osx * nx[c] + osy * ny[c] + osz * nz[c];
+      // A failed check makes the weight NaN, which fails the fan's final test.
+      const double weight =
+        (std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? angle
+                                                       : std::numeric_limits<double>::quiet_NaN()) /
+        std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+      wx[c] = weight * osx;
+      wy[c] = weight * osy;
+      wz[c] = weight * osz;
+    }
+  }
+
+  // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
+  // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
+  // directions, and with every direction within a quarter turn of these (with a margin),
+  // no two are.
+  VTK_ALWAYS_INLINE static void References(FanBlock& fb, const std::array<float, 6>* dir)
+  {
+    const int nv = fb.NumberOfVertices;
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict first6 = fb.First6;
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    double* __restrict good = fb.Good;
+    double* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    double* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < nv; ++j)
+    {
+      const std::int32_t t = first6[j];
+      const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
+      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
+      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
+      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
+      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
       const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
       const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-      bool ok = lp > FastProjection2 * (sx * sx + sy * sy + sz * sz) &&
-        lq > FastProjection2 * (tx * tx + ty * ty + tz * tz);
-      // Within a quarter turn: d . p > FastCos |d| |p|, squared (no square roots).
-      const double cp = cos2 * lp, cq = cos2 * lq;
+      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+      r0x[j] = ip * p[0];
+      r0y[j] = ip * p[1];
+      r0z[j] = ip * p[2];
+      r1x[j] = iq * q[0];
+      r1y[j] = iq * q[1];
+      r1z[j] = iq * q[2];
+    }
+  }
+
+  // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
+  // in corner order, then the rest in one loop over the block's vertices.
+  VTK_ALWAYS_INLINE static bool SumFans(FanBlock& fb, const std::array<float, 6>* dir, float* out)
+  {
+    const int nv = fb.NumberOfVertices;
+    int ok = 1;
+    for (int j = 0; j < nv; ++j)
+    {
+      const double r0[3] = { fb.R[0][j], fb.R[1][j], fb.R[2][j] };
+      const double r1[3] = { fb.R[3][j], fb.R[4][j], fb.R[5][j] };
       double sum[3] = { 0.0, 0.0, 0.0 };
-      for (int a = 0; a < k; ++a)
+      for (int c = fb.First[j]; c < fb.First[j + 1]; ++c)
       {
-        const float* r = records + FastRecord * std::size_t(list[a] >> 2);
-        const float* s = r + 3 + 3 * (list[a] & 3);
-        const double ws[3] = { s[0], s[1], s[2] }, ot[3] = { r[0], r[1], r[2] };
-        const double ds = ws[0] * p[0] + ws[1] * p[1] + ws[2] * p[2];
-        const double dt = ot[0] * q[0] + ot[1] * q[1] + ot[2] * q[2];
-        ok &= ds > 0.0 && ds * ds > cp * (ws[0] * ws[0] + ws[1] * ws[1] + ws[2] * ws[2]);
-        ok &= dt > 0.0 && dt * dt > cq * (ot[0] * ot[0] + ot[1] * ot[1] + ot[2] * ot[2]);
-        sum[0] += ws[0];
-        sum[1] += ws[1];
-        sum[2] += ws[2];
+        const auto& d = dir[fb.Triangle[c]];
+        const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
+        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > FastCos;
+        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > FastCos;
+        sum[0] += fb.WeightedOs[0][c];
+        sum[1] += fb.WeightedOs[1][c];
+        sum[2] += fb.WeightedOs[2][c];
       }
-      const double sumN = sum[0] * n[0] + sum[1] * n[1] + sum[2] * n[2];
-      const double t[3] = { sum[0] - sumN * n[0], sum[1] - sumN * n[1], sum[2] - sumN * n[2] };
+      fb.S[0][j] = sum[0];
+      fb.S[1][j] = sum[1];
+      fb.S[2][j] = sum[2];
+    }
+    if (!ok)
+    {
+      return false;
+    }
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
+    double* __restrict good = fb.Good;
+    float* __restrict tx = fb.Tangent[0], * __restrict ty = fb.Tangent[1], * __restrict tz = fb.Tangent[2];
+    for (int j = 0; j < nv; ++j)
+    {
+      const double sumN = sx[j] * nx[j] + sy[j] * ny[j] + sz[j] * nz[j];
+      const double t[3] = { sx[j] - sumN * nx[j], sy[j] - sumN * ny[j], sz[j] - sumN * nz[j] };
       const double len2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
       // Not finite is not above 1e-12 or not below the largest double.
-      if (!ok || !(std::min(len2 - 1e-12, DBL_MAX - len2) > 0.0))
+      good[j] = std::min(len2 - 1e-12, DBL_MAX - len2) > 0.0 ? good[j] : 0.0;
+      const double inv = 1.0 / std::sqrt(len2);
+      tx[j] = static_cast<float>(inv * t[0]);
+      ty[j] = static_cast<float>(inv * t[1]);
+      tz[j] = static_cast<float>(inv * t[2]);
+    }
+    for (int j = 0; j < nv; ++j)
+    {
+      if (fb.Good[j] == 0.0)
       {
         return false;
       }
-      const double inv = 1.0 / std::sqrt(len2);
-      o[0] = static_cast<float>(inv * t[0]);
-      o[1] = static_cast<float>(inv * t[1]);
-      o[2] = static_cast<float>(inv * t[2]);
-      o[3] = o0 != 0 ? 1.0f : -1.0f;
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      o[0] = fb.Tangent[0][j];
+      o[1] = fb.Tangent[1][j];
+      o[2] = fb.Tangent[2][j];
+      o[3] = fb.Handedness[j];
     }
     return true;
   }
 };
+
 // Calls f with the values of a float or double array; false for other arrays.
 template <typename F>
 bool WithValues(vtkDataArray* array, F&& f)
