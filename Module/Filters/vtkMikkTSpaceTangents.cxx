@@ -1765,35 +1765,64 @@ private:
     const TT* t = this->T + std::size_t(this->TcStride) * i;
     return { double(t[0]), double(t[1]) };
   }
-  // Hash of a point's values (0 and -0 alike, as they compare equal); false if any value
-  // is not finite. Independent products rather than a chain of dependent steps.
-  bool Hash(std::int32_t i, std::uint64_t& h) const
+  // A value's bits for the hash, 0 and -0 alike (they compare equal), and whether it is not
+  // finite (all exponent bits set). Integer code only, with no conversion to double and no
+  // branch, so that the hash loop vectorises: single precision values are hashed as 32-bit
+  // words, whose products with 32-bit constants are one vector instruction.
+  template <typename X>
+  VTK_ALWAYS_INLINE static std::uint64_t HashBits(X v, std::uint64_t& nonFinite)
   {
-    const TT* t = this->T + std::size_t(this->TcStride) * i;
-    const double v[8] = { double(this->P[3 * std::size_t(i)]),
-      double(this->P[3 * std::size_t(i) + 1]), double(this->P[3 * std::size_t(i) + 2]),
-      double(this->N[3 * std::size_t(i)]), double(this->N[3 * std::size_t(i) + 1]),
-      double(this->N[3 * std::size_t(i) + 2]), double(t[0]), double(t[1]) };
-    static constexpr std::uint64_t K[8] = { 0x9e3779b97f4a7c15ULL, 0xc2b2ae3d27d4eb4fULL,
-      0x165667b19e3779f9ULL, 0xd6e8feb86659fd93ULL, 0xa0761d6478bd642fULL, 0xe7037ed1a0b428dbULL,
-      0x8ebc6af09c88c6e3ULL, 0x589965cc75374cc3ULL };
-    double finite = 0.0;
-    h = 0;
-    for (int c = 0; c < 8; ++c)
+    if constexpr (sizeof(X) == sizeof(std::uint32_t))
     {
-      finite += v[c] * 0.0;
-      const double x = v[c] == 0.0 ? 0.0 : v[c];
-      std::uint64_t bits;
-      std::memcpy(&bits, &x, sizeof(bits));
-      h += bits * K[c];
+      std::uint32_t bits;
+      std::memcpy(&bits, &v, sizeof(bits));
+      nonFinite |= (bits & 0x7f800000u) == 0x7f800000u ? 1u : 0u;
+      return (bits & 0x7fffffffu) == 0 ? 0 : bits;
     }
-    h ^= h >> 31;
-    h *= 0x7fb5d329728ea185ULL;
-    h ^= h >> 27;
-    h *= 0x81dadef4bc2dd44dULL;
-    h ^= h >> 33;
-    return finite == 0.0;
+    else
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof(bits));
+      constexpr std::uint64_t exponent = 0x7ff0000000000000ULL;
+      nonFinite |= (bits & exponent) == exponent ? 1u : 0u;
+      return (bits & ~(std::uint64_t(1) << 63)) == 0 ? 0 : bits;
+    }
   }
+
+  // Hashes of points [b, e) of their values; false if any value is not finite. Independent
+  // products rather than a chain of dependent steps.
+  VTK_ALWAYS_INLINE bool HashRange(vtkIdType b, vtkIdType e, std::uint64_t* __restrict hashes) const
+  {
+    const PT* __restrict p = this->P;
+    const NT* __restrict n = this->N;
+    const TT* __restrict t = this->T;
+    const std::size_t ts = static_cast<std::size_t>(this->TcStride);
+    static constexpr std::uint64_t K[8] = { 0x7f4a7c15u, 0x27d4eb4fu, 0x9e3779f9u, 0x6659fd93u,
+      0x78bd642fu, 0xa0b428dbu, 0x9c88c6e3u, 0x75374cc3u };
+    std::uint64_t nonFinite = 0;
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      const std::size_t i3 = 3 * static_cast<std::size_t>(i), it = ts * static_cast<std::size_t>(i);
+      std::uint64_t h = HashBits(p[i3], nonFinite) * K[0] + HashBits(p[i3 + 1], nonFinite) * K[1];
+      h += HashBits(p[i3 + 2], nonFinite) * K[2] + HashBits(n[i3], nonFinite) * K[3];
+      h += HashBits(n[i3 + 1], nonFinite) * K[4] + HashBits(n[i3 + 2], nonFinite) * K[5];
+      h += HashBits(t[it], nonFinite) * K[6] + HashBits(t[it + 1], nonFinite) * K[7];
+      h ^= h >> 31;
+      h *= 0x7fb5d329728ea185ULL;
+      h ^= h >> 27;
+      h *= 0x81dadef4bc2dd44dULL;
+      h ^= h >> 33;
+      hashes[i] = h;
+    }
+    return nonFinite == 0;
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 static bool HashRangeAVX2(
+    const FastMikk& self, vtkIdType b, vtkIdType e, std::uint64_t* hashes)
+  {
+    return self.HashRange(b, e, hashes);
+  }
+
   bool SameValues(std::int32_t i, std::int32_t o) const
   {
     for (int c = 0; c < 3; ++c)
@@ -1823,13 +1852,12 @@ private:
     vtkSMPTools::For(0, vtkIdType(n),
       [&](vtkIdType b, vtkIdType e)
       {
-        for (vtkIdType i = b; i < e; ++i)
+        const bool finite = vtkSurfaceDetailVectorize::HaveAVX2()
+          ? HashRangeAVX2(*this, b, e, hashes.Get())
+          : this->HashRange(b, e, hashes.Get());
+        if (!finite)
         {
-          if (!this->Hash(static_cast<std::int32_t>(i), hashes[i]))
-          {
-            fail.store(true, std::memory_order_relaxed);
-            return;
-          }
+          fail.store(true, std::memory_order_relaxed);
         }
       });
     if (fail)
