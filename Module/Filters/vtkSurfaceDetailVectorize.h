@@ -16,7 +16,12 @@
  *   vtkSurfaceDetailVectorize::HaveAVX2() says so: for templates, where `target_clones` is
  *   not available. RunWidest() does that for a vtkSMPTools worker.
  *
- * Elsewhere (other compilers or processors) both macros are empty and HaveAVX2() is false.
+ * - SURFACEDETAIL_TARGET_AVX512 (GCC) likewise, run only when HaveAVX512() says so: eight
+ *   doubles to a vector. AVX-512 includes FMA, so a file using it must be compiled with
+ *   -ffp-contract=off to keep the bits of the other builds.
+ *
+ * Elsewhere (other compilers or processors) the macros are empty and HaveAVX2() and
+ * HaveAVX512() are false.
  * Shared by the filters of this module; not installed.
  */
 #ifndef vtkSurfaceDetailVectorize_h
@@ -36,6 +41,13 @@
 #define SURFACEDETAIL_TARGET_AVX2
 #endif
 
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define SURFACEDETAIL_TARGET_AVX512                                                                \
+  __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,prefer-vector-width=512")))
+#else
+#define SURFACEDETAIL_TARGET_AVX512
+#endif
+
 namespace vtkSurfaceDetailVectorize
 {
 /// Whether this processor runs SURFACEDETAIL_TARGET_AVX2 code (asked once).
@@ -43,6 +55,21 @@ inline bool HaveAVX2()
 {
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
   static const bool have = __builtin_cpu_supports("avx2");
+  return have;
+#else
+  return false;
+#endif
+}
+
+/// Whether this processor runs SURFACEDETAIL_TARGET_AVX512 code (asked once). AVX-512
+/// implies FMA: files that use it are compiled with -ffp-contract=off, so that its build
+/// gives the same bits as the others.
+inline bool HaveAVX512()
+{
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+  static const bool have = __builtin_cpu_supports("avx512f") &&
+    __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
+    __builtin_cpu_supports("avx512bw");
   return have;
 #else
   return false;
