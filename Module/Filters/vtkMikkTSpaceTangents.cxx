@@ -1504,22 +1504,14 @@ VTK_ALWAYS_INLINE void Links(const Lanes8& nx, const Lanes8& pv, Lanes8& link, L
   in |= back;
 }
 
-// The next and prev values are built in the vectors' lanes and stored from there (a vector
-// loaded from just stored scalars would wait for them: no store forwarding).
-VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
-  const std::int32_t* list, const std::int32_t* w, int k, std::int32_t* next, std::int32_t* prev)
+// The next and prev values are loaded eight at a time: the lists have room for it (see
+// VertexCorners), and lanes past k are replaced.
+VTK_ALWAYS_INLINE bool SmallFanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
 {
   static constexpr Lanes8 Lane = { 0, 1, 2, 3, 4, 5, 6, 7 };
   Lanes8 nx, pv;
-  for (int a = 0; a < 8; ++a)
-  {
-    const std::int32_t c = list[a < k ? a : k - 1];
-    const std::int32_t t = c >> 2, i = c & 3;
-    nx[a] = w[3 * t + (i == 2 ? 0 : i + 1)];
-    pv[a] = w[3 * t + (i == 0 ? 2 : i - 1)];
-  }
-  std::memcpy(next, &nx, sizeof(nx));
-  std::memcpy(prev, &pv, sizeof(pv));
+  std::memcpy(&nx, next, sizeof(nx));
+  std::memcpy(&pv, prev, sizeof(pv));
   const Lanes8 pad = Lane >= k;
   nx = (nx & ~pad) | (pad & (-1 - Lane));
   pv = (pv & ~pad) | (pad & (-9 - Lane));
@@ -1585,28 +1577,20 @@ VTK_ALWAYS_INLINE bool SmallFanIsOneRun(
 #define SURFACEDETAIL_MIKK_LANES 0
 #endif
 
-// The fan's next and prev values (from its corner list) and whether it is one run; Wide:
-// in the AVX2 build (the lanes' code built for the baseline costs more than the hash).
+// Whether a fan, given by the next and prev values of its corners, is one run; Wide: in the
+// AVX2 and AVX-512 builds (the lanes' code built for the baseline costs more than the hash).
 template <bool Wide>
-VTK_ALWAYS_INLINE bool FanIsOneRun(
-  const std::int32_t* list, const std::int32_t* w, int k, std::int32_t* next, std::int32_t* prev)
+VTK_ALWAYS_INLINE bool FanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
 {
 #if SURFACEDETAIL_MIKK_LANES
   if constexpr (Wide)
   {
     if (k <= 8)
     {
-      return SmallFanIsOneRun(list, w, k, next, prev);
+      return SmallFanIsOneRun(next, prev, k);
     }
   }
 #endif
-  for (int a = 0; a < k; ++a)
-  {
-    static constexpr int nextCorner[3] = { 1, 2, 0 }, prevCorner[3] = { 2, 0, 1 };
-    const std::int32_t t = list[a] >> 2, i = list[a] & 3;
-    next[a] = w[3 * t + nextCorner[i]];
-    prev[a] = w[3 * t + prevCorner[i]];
-  }
   return LargeFanIsOneRun(next, prev, k);
 }
 
@@ -1720,7 +1704,11 @@ private:
     }
     Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
     Block<std::int32_t> corners(3 * nt);
-    this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get());
+    // Eight more: a fan's next and prev values are read eight at a time.
+    Block<std::int32_t> nextIds(3 * nt + 8), prevIds(3 * nt + 8);
+    std::fill_n(nextIds.Get() + 3 * nt, 8, 0);
+    std::fill_n(prevIds.Get() + 3 * nt, 8, 0);
+    this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get());
     // A pole (a fan too large for the fast path) is found here at the cost of one scan,
     // rather than in the per-vertex pass, which may have done most of its work by then.
     std::atomic<bool> largeFan(false);
@@ -1740,8 +1728,8 @@ private:
     {
       return false;
     }
-    if (!this->Vertices(w.Get(), dir.Get(), orient.Get(), first.Get(), corners.Get(), weld.Get(),
-          referenced ? referenced->Get() : nullptr, out))
+    if (!this->Vertices(nextIds.Get(), prevIds.Get(), dir.Get(), orient.Get(), first.Get(),
+          corners.Get(), weld.Get(), referenced ? referenced->Get() : nullptr, out))
     {
       return false;
     }
@@ -2108,12 +2096,13 @@ private:
     }
   }
 
-  // Vertex -> its corners (4 * triangle + corner), each list in triangle order. Two tasks:
-  // the first half of the triangles counts into one array and fills each list from its
-  // front, the second half into another and fills from the back, walking backwards; no
-  // atomics, and the order does not depend on the number of threads.
-  void VertexCorners(
-    const std::int32_t* w, vtkIdType nTris, std::int32_t* first, std::int32_t* corners) const
+  // Vertex -> its corners (4 * triangle + corner), each list in triangle order, and beside
+  // each corner the (welded) points after and before it in its triangle. Two tasks: the
+  // first half of the triangles counts into one array and fills each list from its front,
+  // the second half into another and fills from the back, walking backwards; no atomics,
+  // and the order does not depend on the number of threads.
+  void VertexCorners(const std::int32_t* w, vtkIdType nTris, std::int32_t* first,
+    std::int32_t* corners, std::int32_t* nextIds, std::int32_t* prevIds) const
   {
     const std::size_t nv = static_cast<std::size_t>(this->NumberOfPoints);
     const vtkIdType half = 3 * (nTris / 2), end = 3 * nTris;
@@ -2153,7 +2142,10 @@ private:
             {
               for (int i = 0; i < 3; ++i)
               {
-                corners[count0[w[3 * t + i]]++] = static_cast<std::int32_t>(t << 2 | i);
+                const std::int32_t c = count0[w[3 * t + i]]++;
+                corners[c] = static_cast<std::int32_t>(t << 2 | i);
+                nextIds[c] = w[3 * t + (i + 1) % 3];
+                prevIds[c] = w[3 * t + (i + 2) % 3];
               }
             }
           }
@@ -2163,7 +2155,10 @@ private:
             {
               for (int i = 2; i >= 0; --i)
               {
-                corners[--count1[w[3 * t + i]]] = static_cast<std::int32_t>(t << 2 | i);
+                const std::int32_t c = --count1[w[3 * t + i]];
+                corners[c] = static_cast<std::int32_t>(t << 2 | i);
+                nextIds[c] = w[3 * t + (i + 1) % 3];
+                prevIds[c] = w[3 * t + (i + 2) % 3];
               }
             }
           }
@@ -2171,8 +2166,9 @@ private:
       });
   }
 
-  bool Vertices(const std::int32_t* w, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+  bool Vertices(const std::int32_t* nextIds, const std::int32_t* prevIds,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, const std::int32_t* weld,
     const std::atomic<unsigned char>* referenced, float* out) const
   {
     std::atomic<bool> fail(false);
@@ -2184,13 +2180,13 @@ private:
           return;
         }
         const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
-          ? FansAVX512(
-              *this, std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out)
+          ? FansAVX512(*this, std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
+              first, corners, weld, out)
           : vtkSurfaceDetailVectorize::HaveAVX2()
-          ? FansAVX2(
-              *this, std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out)
-          : this->Fans<false>(
-              std::int32_t(b), std::int32_t(e), w, dir, orient, first, corners, weld, out);
+          ? FansAVX2(*this, std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient, first,
+              corners, weld, out)
+          : this->Fans<false>(std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
+              first, corners, weld, out);
         if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
@@ -2260,27 +2256,28 @@ private:
   // four to a vector, the small fans' links found in eight lanes; the same results bit
   // for bit (no fused multiply-add, and sums stay in order).
   SURFACEDETAIL_TARGET_AVX2 static bool FansAVX2(const FastMikk& self, std::int32_t b,
-    std::int32_t e, const std::int32_t* w, const std::array<float, 6>* dir,
-    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
-    const std::int32_t* weld, float* out)
+    std::int32_t e, const std::int32_t* nextIds, const std::int32_t* prevIds,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, const std::int32_t* weld, float* out)
   {
-    return self.Fans<true>(b, e, w, dir, orient, first, corners, weld, out);
+    return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
   }
 
   // The same in the AVX-512 build: eight doubles to a vector (5% fewer cycles on the 1M
   // torus on Zen 5); same bits (no contraction into fused multiply-adds: see CMakeLists).
   SURFACEDETAIL_TARGET_AVX512 static bool FansAVX512(const FastMikk& self, std::int32_t b,
-    std::int32_t e, const std::int32_t* w, const std::array<float, 6>* dir,
-    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
-    const std::int32_t* weld, float* out)
+    std::int32_t e, const std::int32_t* nextIds, const std::int32_t* prevIds,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, const std::int32_t* weld, float* out)
   {
-    return self.Fans<true>(b, e, w, dir, orient, first, corners, weld, out);
+    return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
   }
 
   template <bool Wide>
-  VTK_ALWAYS_INLINE bool Fans(std::int32_t b, std::int32_t e, const std::int32_t* w,
-    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, const std::int32_t* weld, float* out) const
+  VTK_ALWAYS_INLINE bool Fans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+    float* out) const
   {
     std::unique_ptr<FanBlock> block(new FanBlock);
     FanBlock& fb = *block;
@@ -2300,7 +2297,8 @@ private:
         {
           break;
         }
-        if (!this->GatherFan<Wide>(v, k, w, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        if (!this->GatherFan<Wide>(
+              v, k, nextIds, prevIds, orient, first, corners, fb, out + 4 * std::size_t(v)))
         {
           return false;
         }
@@ -2318,9 +2316,9 @@ private:
   // Checks the fan of v and appends its corners to the block (a vertex that no triangle
   // uses gets the default frame at once).
   template <bool Wide>
-  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* w,
-    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
-    FanBlock& fb, float* out) const
+  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, FanBlock& fb, float* out) const
   {
     const V3 n = this->UnitNormal(v);
     if (k == 0)
@@ -2332,8 +2330,9 @@ private:
     {
       return false;
     }
-    std::int32_t next[MaxFastFan], prev[MaxFastFan];
     const std::int32_t* list = corners + first[v];
+    const std::int32_t* next = nextIds + first[v];
+    const std::int32_t* prev = prevIds + first[v];
     const unsigned char o = orient[list[0] >> 2];
     std::int32_t* tri = fb.Triangle + fb.NumberOfCorners;
     int same = 1;
@@ -2346,7 +2345,7 @@ private:
     // Each edge at v must join exactly two triangles or bound the fan (then the general
     // path's greedy pairing finds the same links), and the links must chain all the
     // triangles into one run.
-    if (!same || !FanIsOneRun<Wide>(list, w, k, next, prev))
+    if (!same || !FanIsOneRun<Wide>(next, prev, k))
     {
       return false;
     }
