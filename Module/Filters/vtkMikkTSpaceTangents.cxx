@@ -1504,8 +1504,8 @@ VTK_ALWAYS_INLINE void Links(const Lanes8& nx, const Lanes8& pv, Lanes8& link, L
   in |= back;
 }
 
-// The next and prev values are loaded eight at a time: the lists have room for it (see
-// VertexCorners), and lanes past k are replaced.
+// The next and prev values are loaded eight at a time (their arrays have eight more
+// entries: see Finish), and lanes past k are replaced.
 VTK_ALWAYS_INLINE bool SmallFanIsOneRun(const std::int32_t* next, const std::int32_t* prev, int k)
 {
   static constexpr Lanes8 Lane = { 0, 1, 2, 3, 4, 5, 6, 7 };
