@@ -1876,12 +1876,19 @@ private:
     {
       bucketFirst[k + 1] += bucketFirst[k];
     }
-    Block<std::int32_t> order(n);
+    // The points in bucket order, each with its hash: the buckets' tables then read the
+    // hashes in order rather than from all over the hash array.
+    struct Entry
+    {
+      std::uint64_t Hash;
+      std::int32_t Id;
+    };
+    Block<Entry> order(n);
     {
       std::vector<std::int32_t> fill(bucketFirst.begin(), bucketFirst.end() - 1);
       for (std::int32_t i = 0; i < n; ++i)
       {
-        order[fill[hashes[i] & bucketMask]++] = i;
+        order[fill[hashes[i] & bucketMask]++] = Entry{ hashes[i], i };
       }
     }
     std::atomic<bool> welded(false);
@@ -1902,19 +1909,20 @@ private:
           table.assign(capacity, -1);
           for (std::int32_t j = begin; j < end; ++j)
           {
-            const std::int32_t i = order[j];
-            for (std::uint64_t s = (hashes[i] >> bucketBits) & mask;; s = (s + 1) & mask)
+            const Entry entry = order[j];
+            const std::int32_t i = entry.Id;
+            for (std::uint64_t s = (entry.Hash >> bucketBits) & mask;; s = (s + 1) & mask)
             {
-              const std::int32_t o = table[s];
+              const std::int32_t o = table[s]; // an index into order
               if (o < 0)
               {
-                table[s] = i;
+                table[s] = j;
                 weld[i] = i;
                 break;
               }
-              if (hashes[o] == hashes[i] && this->SameValues(i, o))
+              if (order[o].Hash == entry.Hash && this->SameValues(i, order[o].Id))
               {
-                weld[i] = o;
+                weld[i] = order[o].Id;
                 any = true;
                 break;
               }
