@@ -1728,6 +1728,8 @@ private:
     {
       return false;
     }
+    Block<double> unitNormals(3 * static_cast<std::size_t>(this->NumberOfPoints));
+    this->ComputeUnitNormals(unitNormals.Get());
     if (!this->Vertices(nextIds.Get(), prevIds.Get(), dir.Get(), orient.Get(), first.Get(),
           corners.Get(), weld.Get(), referenced ? referenced->Get() : nullptr, out))
     {
@@ -1742,6 +1744,58 @@ private:
   const int TcStride;
   const std::int32_t NumberOfPoints;
   bool Welded = false;
+  const double* UnitNormals = nullptr; // UnitNormal of every point, for the fans
+
+  // UnitNormal of every point into un (and UnitNormals), in a loop that vectorises: the fans
+  // then do not wait on a square root and a division per vertex.
+  void ComputeUnitNormals(double* un)
+  {
+    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        if (vtkSurfaceDetailVectorize::HaveAVX512())
+        {
+          UnitNormalsAVX512(*this, b, e, un);
+        }
+        else if (vtkSurfaceDetailVectorize::HaveAVX2())
+        {
+          UnitNormalsAVX2(*this, b, e, un);
+        }
+        else
+        {
+          this->UnitNormalRange(b, e, un);
+        }
+      });
+    this->UnitNormals = un;
+  }
+
+  SURFACEDETAIL_TARGET_AVX2 static void UnitNormalsAVX2(
+    const FastMikk& self, vtkIdType b, vtkIdType e, double* un)
+  {
+    self.UnitNormalRange(b, e, un);
+  }
+
+  SURFACEDETAIL_TARGET_AVX512 static void UnitNormalsAVX512(
+    const FastMikk& self, vtkIdType b, vtkIdType e, double* un)
+  {
+    self.UnitNormalRange(b, e, un);
+  }
+
+  // UnitNormal without branches.
+  VTK_ALWAYS_INLINE void UnitNormalRange(vtkIdType b, vtkIdType e, double* __restrict un) const
+  {
+    const NT* __restrict n = this->N;
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      const double x = double(n[3 * i]), y = double(n[3 * i + 1]), z = double(n[3 * i + 2]);
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double inv = 1.0 / len;
+      const bool scale = len > 0.0 && len <= DBL_MAX;
+      un[3 * i] = scale ? inv * x : x;
+      un[3 * i + 1] = scale ? inv * y : y;
+      un[3 * i + 2] = scale ? inv * z : z;
+    }
+  }
 
   V3 Position(std::int32_t i) const
   {
@@ -2328,7 +2382,8 @@ private:
     const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, FanBlock& fb, float* out) const
   {
-    const V3 n = this->UnitNormal(v);
+    const double* u = this->UnitNormals + 3 * std::size_t(v);
+    const V3 n{ u[0], u[1], u[2] };
     if (k == 0)
     {
       FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
