@@ -477,6 +477,30 @@ TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPath)
   ExpectFastPathIsGeneralPath(plane, "plane");
 }
 
+// The fast path normalises every point's normal in a pass of its own, without branches;
+// the general path normalises it where it needs it. Normals of length 3, 0 and past the
+// square's range (1e200: the length overflows, so neither path scales them) must give the
+// same frames both ways.
+TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPathOnUnnormalisedNormals)
+{
+  auto torus = MakeTorus(40, 20);
+  vtkNew<vtkDoubleArray> normals;
+  normals->DeepCopy(torus->GetPointData()->GetNormals());
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    const double scale[3] = { 3.0, 0.0, 1e200 };
+    for (int c = 0; c < 3; ++c)
+    {
+      normals->SetComponent(i, c, normals->GetComponent(i, c) * scale[i % 3]);
+    }
+  }
+  torus->GetPointData()->SetNormals(normals);
+  ExpectFastPathIsGeneralPath(torus, "torus with unnormalised normals");
+  FilterRun run(torus);
+  EXPECT_EQ(run.Errors->Count, 0);
+  ExpectValidFrames(run.Output());
+}
+
 // Inputs at the edges of what the fast path's division-free tests see: the general path
 // (forced by a threshold below 180 degrees) drops a triangle's dP/ds when its length is not
 // above FLT_MIN, and leaves a projected edge unnormalised when all its components are that
