@@ -90,13 +90,16 @@ inline bool HaveAVX2()
 
 /// Whether this processor runs SURFACEDETAIL_TARGET_AVX512 code and SURFACEDETAIL_MAX_ISA
 /// allows it (asked once). AVX-512 implies FMA: files that use it are compiled with
-/// -ffp-contract=off, so that its build gives the same bits as the others.
+/// -ffp-contract=off, so that its build gives the same bits as the others. GCC's avx512f
+/// target also allows AVX2 and FMA instructions, so those are asked for too (a virtual
+/// machine may hide a feature that the real processor has).
 inline bool HaveAVX512()
 {
 #if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
   static const bool have = MaxISALevel() >= 2 && __builtin_cpu_supports("avx512f") &&
     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
-    __builtin_cpu_supports("avx512bw");
+    __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx2") &&
+    __builtin_cpu_supports("fma");
   return have;
 #else
   return false;
