@@ -1,7 +1,10 @@
 # Helpers that add SurfaceDetail's tests in one line each.
 #
-#   surfacedetail_add_gtest(<exe> SOURCES <src>... [MODULES <module>...])
-#     A GoogleTest program; every TEST in it becomes its own ctest test.
+#   surfacedetail_add_gtest(<exe> SOURCES <src>... [MODULES <module>...] [ISA_VARIANTS])
+#     A GoogleTest program; every TEST in it becomes its own ctest test. ISA_VARIANTS runs
+#     every TEST twice more, as <test>-avx2 and <test>-baseline, with SURFACEDETAIL_MAX_ISA
+#     set so (see vtkSurfaceDetailVectorize.h): a machine with AVX-512 also tests the
+#     narrower builds of the hot loops.
 #
 #   surfacedetail_add_image_test(<TestName> [SOURCES <src>...] [EXECUTABLE <exe>]
 #                                [MODULES <module>...] [ARGS <arg>...]
@@ -36,7 +39,8 @@ function(_surfacedetail_add_program exe)
 endfunction()
 
 function(surfacedetail_add_gtest exe)
-  cmake_parse_arguments(arg "" "LABELS;FIXTURES_REQUIRED" "SOURCES;MODULES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(arg "ISA_VARIANTS" "LABELS;FIXTURES_REQUIRED" "SOURCES;MODULES;LIBRARIES"
+    ${ARGN})
   _surfacedetail_add_program(${exe} SOURCES ${arg_SOURCES} MODULES ${arg_MODULES}
     LIBRARIES GTest::gtest GTest::gtest_main ${arg_LIBRARIES})
   # gtest_discover_tests flattens PROPERTIES into name/value pairs, so every value must be a
@@ -53,6 +57,15 @@ function(surfacedetail_add_gtest exe)
     DISCOVERY_MODE PRE_TEST
     DISCOVERY_TIMEOUT 60
     PROPERTIES ${properties})
+  if(arg_ISA_VARIANTS)
+    foreach(isa avx2 baseline)
+      gtest_discover_tests(${exe}
+        DISCOVERY_MODE PRE_TEST
+        DISCOVERY_TIMEOUT 60
+        TEST_SUFFIX -${isa}
+        PROPERTIES ${properties} ENVIRONMENT SURFACEDETAIL_MAX_ISA=${isa})
+    endforeach()
+  endif()
 endfunction()
 
 function(surfacedetail_add_image_test name)

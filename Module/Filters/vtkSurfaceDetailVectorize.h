@@ -16,13 +16,28 @@
  *   vtkSurfaceDetailVectorize::HaveAVX2() says so: for templates, where `target_clones` is
  *   not available. RunWidest() does that for a vtkSMPTools worker.
  *
- * Elsewhere (other compilers or processors) both macros are empty and HaveAVX2() is false.
+ * - SURFACEDETAIL_TARGET_AVX512 (GCC) likewise, run only when HaveAVX512() says so: eight
+ *   doubles to a vector. AVX-512 includes FMA, so a file using it must be compiled with
+ *   -ffp-contract=off to keep the bits of the other builds.
+ *
+ * Elsewhere (other compilers or processors) the macros are empty and HaveAVX2() and
+ * HaveAVX512() are false.
+ *
+ * The environment variable SURFACEDETAIL_MAX_ISA, read once, caps what HaveAVX2() and
+ * HaveAVX512() (and so RunWidest) report, so that a machine with the widest instructions
+ * can test the narrower builds: `avx2` (no AVX-512 build) or `baseline` (neither); unset or
+ * anything else: the processor's best. SURFACEDETAIL_WIDE_VECTORS ignores it (the loader
+ * picks those copies before main, from the processor alone).
+ *
  * Shared by the filters of this module; not installed.
  */
 #ifndef vtkSurfaceDetailVectorize_h
 #define vtkSurfaceDetailVectorize_h
 
 #include "vtkType.h"
+
+#include <cstdlib>
+#include <cstring>
 
 #if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
 #define SURFACEDETAIL_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
@@ -36,13 +51,55 @@
 #define SURFACEDETAIL_TARGET_AVX2
 #endif
 
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define SURFACEDETAIL_TARGET_AVX512                                                                \
+  __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,prefer-vector-width=512")))
+#else
+#define SURFACEDETAIL_TARGET_AVX512
+#endif
+
 namespace vtkSurfaceDetailVectorize
 {
-/// Whether this processor runs SURFACEDETAIL_TARGET_AVX2 code (asked once).
+/// The widest build the dispatch may pick, from SURFACEDETAIL_MAX_ISA (read once): 0 for
+/// `baseline`, 1 for `avx2`, 2 (no cap) otherwise.
+inline int MaxISALevel()
+{
+  static const int level = []
+  {
+    const char* isa = std::getenv("SURFACEDETAIL_MAX_ISA");
+    if (isa && std::strcmp(isa, "baseline") == 0)
+    {
+      return 0;
+    }
+    return isa && std::strcmp(isa, "avx2") == 0 ? 1 : 2;
+  }();
+  return level;
+}
+
+/// Whether this processor runs SURFACEDETAIL_TARGET_AVX2 code and SURFACEDETAIL_MAX_ISA
+/// allows it (asked once).
 inline bool HaveAVX2()
 {
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-  static const bool have = __builtin_cpu_supports("avx2");
+  static const bool have = MaxISALevel() >= 1 && __builtin_cpu_supports("avx2");
+  return have;
+#else
+  return false;
+#endif
+}
+
+/// Whether this processor runs SURFACEDETAIL_TARGET_AVX512 code and SURFACEDETAIL_MAX_ISA
+/// allows it (asked once). AVX-512 implies FMA: files that use it are compiled with
+/// -ffp-contract=off, so that its build gives the same bits as the others. GCC's avx512f
+/// target also allows AVX2 and FMA instructions, so those are asked for too (a virtual
+/// machine may hide a feature that the real processor has).
+inline bool HaveAVX512()
+{
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+  static const bool have = MaxISALevel() >= 2 && __builtin_cpu_supports("avx512f") &&
+    __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
+    __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx2") &&
+    __builtin_cpu_supports("fma");
   return have;
 #else
   return false;

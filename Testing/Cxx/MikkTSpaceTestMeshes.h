@@ -26,6 +26,12 @@
 #include <string>
 #include <vector>
 
+#ifdef _WIN32
+#include <process.h> // _getpid
+#else
+#include <unistd.h> // getpid
+#endif
+
 namespace mikktest
 {
 constexpr double Pi = 3.14159265358979323846;
@@ -299,8 +305,17 @@ struct Corners
 inline std::vector<float> ReferenceTangents(
   const Corners& corners, const std::string& tag, int repetitions = 0)
 {
-  const std::string in = std::string(MIKKTSPACE_WORK_DIR) + "/" + tag + ".in.bin";
-  const std::string out = std::string(MIKKTSPACE_WORK_DIR) + "/" + tag + ".out.bin";
+  // The process id keeps apart the same test's runs that ctest may start at once (its
+  // -avx2 and -baseline registrations).
+#ifdef _WIN32
+  const std::string base =
+    std::string(MIKKTSPACE_WORK_DIR) + "/" + tag + "-" + std::to_string(_getpid());
+#else
+  const std::string base =
+    std::string(MIKKTSPACE_WORK_DIR) + "/" + tag + "-" + std::to_string(getpid());
+#endif
+  const std::string in = base + ".in.bin";
+  const std::string out = base + ".out.bin";
   {
     std::ofstream f(in, std::ios::binary);
     const std::uint32_t n = static_cast<std::uint32_t>(corners.Size());
@@ -320,7 +335,11 @@ inline std::vector<float> ReferenceTangents(
   std::vector<float> result(4 * corners.Size());
   std::ifstream f(out, std::ios::binary);
   f.read(reinterpret_cast<char*>(result.data()), result.size() * sizeof(float));
-  if (static_cast<size_t>(f.gcount()) != result.size() * sizeof(float))
+  const bool complete = static_cast<size_t>(f.gcount()) == result.size() * sizeof(float);
+  f.close();
+  std::remove(in.c_str());
+  std::remove(out.c_str());
+  if (!complete)
   {
     return {};
   }

@@ -27,10 +27,18 @@
 
 #include <gtest/gtest.h>
 
+#ifdef __linux__
+#include <unistd.h> // getpid
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -341,6 +349,91 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
   }
 }
 
+namespace
+{
+// The tangents of the fast path's test meshes, end to end: single and double precision,
+// welded (every vertex a fan of six) and unwelded (the weld's hash finds the twins).
+std::vector<float> FastPathTangents()
+{
+  auto torus = MakeTorus(300, 150);
+  auto unwelded = Unweld(MakeTorus(60, 30));
+  vtkNew<vtkPolyData> doubleTorus;
+  doubleTorus->DeepCopy(MakeTorus(90, 45));
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(doubleTorus->GetPoints());
+  doubleTorus->SetPoints(points);
+  vtkNew<vtkDoubleArray> normals, tcoords;
+  normals->DeepCopy(doubleTorus->GetPointData()->GetNormals());
+  tcoords->DeepCopy(doubleTorus->GetPointData()->GetTCoords());
+  doubleTorus->GetPointData()->SetNormals(normals);
+  doubleTorus->GetPointData()->SetTCoords(tcoords);
+  std::vector<float> all;
+  for (vtkPolyData* input : { torus.Get(), unwelded.Get(), doubleTorus.Get() })
+  {
+    FilterRun run(input);
+    auto* t = vtkFloatArray::SafeDownCast(run.Output()->GetPointData()->GetArray("Tangents"));
+    if (!t)
+    {
+      ADD_FAILURE() << "no tangents";
+      return {};
+    }
+    all.insert(all.end(), t->GetPointer(0), t->GetPointer(0) + t->GetNumberOfValues());
+  }
+  return all;
+}
+} // namespace
+
+// The AVX-512, AVX2 and baseline builds of the fast path (vtkSurfaceDetailVectorize.h)
+// must give the same bits: none may contract into fused multiply-adds or reorder sums. The
+// build is picked once per process, so this test runs itself once per build
+// (SURFACEDETAIL_MAX_ISA) and compares what the runs write; where the processor lacks a
+// build, that run takes the next narrower one.
+TEST(vtkMikkTSpaceTangents, SameBitsInEveryBuild)
+{
+  if (const char* dump = std::getenv("SURFACEDETAIL_TEST_TANGENTS_DUMP"))
+  {
+    const std::vector<float> t = FastPathTangents();
+    std::ofstream file(dump, std::ios::binary);
+    file.write(reinterpret_cast<const char*>(t.data()), std::streamsize(t.size() * sizeof(float)));
+    ASSERT_TRUE(file.good());
+    return;
+  }
+#ifdef __linux__
+  // The program's own path: a shell that ran /proc/self/exe would run itself.
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  std::vector<std::vector<float>> results;
+  for (const char* isa : { "widest", "avx2", "baseline" })
+  {
+    // ctest may run this test's -avx2 and -baseline registrations at the same time.
+    const std::string path = std::string(SURFACEDETAIL_TEMP_DIR) + "/MikkTSpaceTangents-" +
+      std::to_string(getpid()) + "-" + isa;
+    const std::string command = std::string("SURFACEDETAIL_MAX_ISA=") + isa +
+      " SURFACEDETAIL_TEST_TANGENTS_DUMP='" + path + "' '" + self +
+      "' --gtest_filter=vtkMikkTSpaceTangents.SameBitsInEveryBuild >/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << isa;
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    ASSERT_TRUE(file.good()) << isa;
+    std::vector<float> t(static_cast<std::size_t>(file.tellg()) / sizeof(float));
+    file.seekg(0);
+    file.read(reinterpret_cast<char*>(t.data()), std::streamsize(t.size() * sizeof(float)));
+    file.close();
+    std::remove(path.c_str());
+    ASSERT_GT(t.size(), 4u * 301 * 151) << isa;
+    results.push_back(std::move(t));
+  }
+  for (std::size_t r = 1; r < results.size(); ++r)
+  {
+    ASSERT_EQ(results[r].size(), results[0].size());
+    EXPECT_EQ(
+      0, std::memcmp(results[r].data(), results[0].data(), results[0].size() * sizeof(float)))
+      << (r == 1 ? "avx2" : "baseline") << " differs from the widest build";
+  }
+#else
+  GTEST_SKIP() << "runs itself through /proc/self/exe";
+#endif
+}
+
 // The default (fast path where it applies) against the general algorithm, which a
 // threshold below 180 degrees forces: same handedness, directions within 1e-4 degrees.
 void ExpectFastPathIsGeneralPath(vtkPolyData* input, const char* name)
@@ -382,6 +475,30 @@ TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPath)
   ExpectFastPathIsGeneralPath(torus, "torus");
   ExpectFastPathIsGeneralPath(unwelded, "unwelded torus");
   ExpectFastPathIsGeneralPath(plane, "plane");
+}
+
+// The fast path normalises every point's normal in a pass of its own, without branches;
+// the general path normalises it where it needs it. Normals of length 3, 0 and past the
+// square's range (1e200: the length overflows, so neither path scales them) must give the
+// same frames both ways.
+TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPathOnUnnormalisedNormals)
+{
+  auto torus = MakeTorus(40, 20);
+  vtkNew<vtkDoubleArray> normals;
+  normals->DeepCopy(torus->GetPointData()->GetNormals());
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    const double scale[3] = { 3.0, 0.0, 1e200 };
+    for (int c = 0; c < 3; ++c)
+    {
+      normals->SetComponent(i, c, normals->GetComponent(i, c) * scale[i % 3]);
+    }
+  }
+  torus->GetPointData()->SetNormals(normals);
+  ExpectFastPathIsGeneralPath(torus, "torus with unnormalised normals");
+  FilterRun run(torus);
+  EXPECT_EQ(run.Errors->Count, 0);
+  ExpectValidFrames(run.Output());
 }
 
 // Inputs at the edges of what the fast path's division-free tests see: the general path
