@@ -1896,24 +1896,6 @@ private:
   bool Weld(const Block<std::int32_t>& weld)
   {
     const std::int32_t n = this->NumberOfPoints;
-    Block<std::uint64_t> hashes(n);
-    std::atomic<bool> fail(false);
-    vtkSMPTools::For(0, vtkIdType(n),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        const bool finite = vtkSurfaceDetailVectorize::HaveAVX512()
-          ? HashRangeAVX512(*this, b, e, hashes.Get())
-          : vtkSurfaceDetailVectorize::HaveAVX2() ? HashRangeAVX2(*this, b, e, hashes.Get())
-                                                  : this->HashRange(b, e, hashes.Get());
-        if (!finite)
-        {
-          fail.store(true, std::memory_order_relaxed);
-        }
-      });
-    if (fail)
-    {
-      return false;
-    }
     int bucketBits = 0;
     while (bucketBits < 16 && (std::int64_t(1024) << bucketBits) < n)
     {
@@ -1921,11 +1903,56 @@ private:
     }
     const std::uint64_t buckets = std::uint64_t(1) << bucketBits;
     const std::uint64_t bucketMask = buckets - 1;
-    std::vector<std::int32_t> bucketFirst(buckets + 1, 0);
-    for (std::int32_t i = 0; i < n; ++i)
+    // The counting sort runs on fixed chunks of points, not on the threads' ranges: chunk c's
+    // points of bucket k go after those of chunks before c, so each bucket lists its points
+    // in increasing order whatever the number of threads.
+    const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, n / 16384));
+    const vtkIdType chunkSize = (n + chunks - 1) / chunks;
+    Block<std::uint64_t> hashes(n);
+    // Per (chunk, bucket): the chunk's count of the bucket's points, then where they go.
+    std::vector<std::int32_t> cursor(static_cast<std::size_t>(chunks) * buckets, 0);
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(n, b + chunkSize);
+          const bool finite = vtkSurfaceDetailVectorize::HaveAVX512()
+            ? HashRangeAVX512(*this, b, e, hashes.Get())
+            : vtkSurfaceDetailVectorize::HaveAVX2() ? HashRangeAVX2(*this, b, e, hashes.Get())
+                                                    : this->HashRange(b, e, hashes.Get());
+          if (!finite)
+          {
+            fail.store(true, std::memory_order_relaxed);
+          }
+          std::int32_t* count = cursor.data() + c * buckets;
+          for (vtkIdType i = b; i < e; ++i)
+          {
+            ++count[hashes[i] & bucketMask];
+          }
+        }
+      });
+    if (fail)
     {
-      ++bucketFirst[(hashes[i] & bucketMask) + 1];
+      return false;
     }
+    std::vector<std::int32_t> bucketFirst(buckets + 1, 0);
+    vtkSMPTools::For(0, vtkIdType(buckets),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          std::int32_t sum = 0;
+          for (vtkIdType c = 0; c < chunks; ++c)
+          {
+            const std::int32_t count = cursor[c * buckets + k];
+            cursor[c * buckets + k] = sum;
+            sum += count;
+          }
+          bucketFirst[k + 1] = sum;
+        }
+      });
     for (std::uint64_t k = 0; k < buckets; ++k)
     {
       bucketFirst[k + 1] += bucketFirst[k];
@@ -1938,13 +1965,20 @@ private:
       std::int32_t Id;
     };
     Block<Entry> order(n);
-    {
-      std::vector<std::int32_t> fill(bucketFirst.begin(), bucketFirst.end() - 1);
-      for (std::int32_t i = 0; i < n; ++i)
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
       {
-        order[fill[hashes[i] & bucketMask]++] = Entry{ hashes[i], i };
-      }
-    }
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          std::int32_t* at = cursor.data() + c * buckets;
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(n, b + chunkSize);
+          for (vtkIdType i = b; i < e; ++i)
+          {
+            const std::uint64_t k = hashes[i] & bucketMask;
+            order[bucketFirst[k] + at[k]++] = Entry{ hashes[i], static_cast<std::int32_t>(i) };
+          }
+        }
+      });
     std::atomic<bool> welded(false);
     vtkSMPTools::For(0, vtkIdType(buckets),
       [&](vtkIdType b, vtkIdType e)
@@ -2169,30 +2203,60 @@ private:
     const std::size_t nv = static_cast<std::size_t>(this->NumberOfPoints);
     const vtkIdType half = 3 * (nTris / 2), end = 3 * nTris;
     Block<std::int32_t> count0(nv), count1(nv);
-    std::memset(count0.Get(), 0, nv * sizeof(std::int32_t));
-    std::memset(count1.Get(), 0, nv * sizeof(std::int32_t));
     vtkSMPTools::For(0, 2, 1,
       [&](vtkIdType b, vtkIdType e)
       {
         for (vtkIdType part = b; part < e; ++part)
         {
           std::int32_t* count = part == 0 ? count0.Get() : count1.Get();
+          std::memset(count, 0, nv * sizeof(std::int32_t));
           for (vtkIdType c = part == 0 ? 0 : half; c < (part == 0 ? half : end); ++c)
           {
             ++count[w[c]];
           }
         }
       });
-    std::int32_t sum = 0;
-    for (std::size_t v = 0; v < nv; ++v)
+    // The prefix sum in two parallel passes over fixed chunks of vertices: each chunk's
+    // total, then the chunk's sums from the totals of the chunks before it.
+    const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, vtkIdType(nv) / 16384));
+    const vtkIdType chunkSize = (vtkIdType(nv) + chunks - 1) / chunks;
+    std::vector<std::int32_t> chunkFirst(static_cast<std::size_t>(chunks) + 1, 0);
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
+          std::int32_t sum = 0;
+          for (vtkIdType v = b; v < e; ++v)
+          {
+            sum += count0[v] + count1[v];
+          }
+          chunkFirst[c + 1] = sum;
+        }
+      });
+    for (vtkIdType c = 0; c < chunks; ++c)
     {
-      const std::int32_t n0 = count0[v], n1 = count1[v];
-      first[v] = sum;
-      count0[v] = sum; // the front cursor
-      sum += n0 + n1;
-      count1[v] = sum; // the back cursor
+      chunkFirst[c + 1] += chunkFirst[c];
     }
-    first[nv] = sum;
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
+          std::int32_t sum = chunkFirst[c];
+          for (vtkIdType v = b; v < e; ++v)
+          {
+            const std::int32_t n0 = count0[v], n1 = count1[v];
+            first[v] = sum;
+            count0[v] = sum; // the front cursor
+            sum += n0 + n1;
+            count1[v] = sum; // the back cursor
+          }
+        }
+      });
+    first[nv] = chunkFirst[chunks];
     vtkSMPTools::For(0, 2, 1,
       [&](vtkIdType b, vtkIdType e)
       {
