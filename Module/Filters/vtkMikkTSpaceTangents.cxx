@@ -2108,7 +2108,14 @@ private:
         }
         for (int k = 0; k < 3; ++k)
         {
-          const std::int32_t p = static_cast<std::int32_t>(conn[3 * t + k]);
+          // RequestData leaves the ids' range to this pass, which reads them anyway.
+          const IdT id = conn[3 * t + k];
+          if (static_cast<std::make_unsigned_t<IdT>>(id) >=
+            static_cast<std::make_unsigned_t<IdT>>(this->NumberOfPoints))
+          {
+            return false;
+          }
+          const std::int32_t p = static_cast<std::int32_t>(id);
           w[3 * t + k] = this->Welded ? weld[p] : p;
           if (referenced)
           {
@@ -2754,11 +2761,25 @@ int vtkMikkTSpaceTangents::RequestData(
     vtkErrorMacro("The input has no polygons or triangle strips; tangents need a surface.");
     return 0;
   }
-  if (!vtkSurfaceDetailCells::PointIdsInRange(input->GetPolys(), nPts) ||
-    !vtkSurfaceDetailCells::PointIdsInRange(input->GetStrips(), nPts))
+  auto idsInRange = [&]()
   {
+    if (vtkSurfaceDetailCells::PointIdsInRange(input->GetPolys(), nPts) &&
+      vtkSurfaceDetailCells::PointIdsInRange(input->GetStrips(), nPts))
+    {
+      return true;
+    }
     vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
       << nPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+    return false;
+  };
+  // The fast path checks the ids as it reads them, which saves a pass over the connectivity;
+  // it goes first only with given normals (computing them reads the ids) and no strips, and
+  // if it gives up, the ids are checked before anything else reads them.
+  vtkDataArray* givenNormals = input->GetPointData()->GetNormals();
+  const bool fastFirst = this->AngularThreshold >= 180.0 && input->GetNumberOfStrips() == 0 &&
+    givenNormals && givenNormals->GetNumberOfComponents() == 3;
+  if (!fastFirst && !idsInRange())
+  {
     return 0;
   }
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
@@ -2825,6 +2846,10 @@ int vtkMikkTSpaceTangents::RequestData(
     }
   }
 
+  if (fastFirst && !idsInRange())
+  {
+    return 0;
+  }
   MikkMesh mesh;
   mesh.NumberOfPoints = nPts;
   {
