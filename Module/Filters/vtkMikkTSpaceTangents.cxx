@@ -1708,23 +1708,10 @@ private:
     Block<std::int32_t> nextIds(3 * nt + 8), prevIds(3 * nt + 8);
     std::fill_n(nextIds.Get() + 3 * nt, 8, 0);
     std::fill_n(prevIds.Get() + 3 * nt, 8, 0);
-    this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get());
-    // A pole (a fan too large for the fast path) is found here at the cost of one scan,
+    // A pole (a fan too large for the fast path) is found while the vertex lists are sized,
     // rather than in the per-vertex pass, which may have done most of its work by then.
-    std::atomic<bool> largeFan(false);
-    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType v = b; v < e; ++v)
-        {
-          if (first[v + 1] - first[v] > MaxFastFan)
-          {
-            largeFan.store(true, std::memory_order_relaxed);
-            return;
-          }
-        }
-      });
-    if (largeFan)
+    if (!this->VertexCorners(
+          w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get()))
     {
       return false;
     }
@@ -2203,8 +2190,9 @@ private:
   // each corner the (welded) points after and before it in its triangle. Two tasks: the
   // first half of the triangles counts into one array and fills each list from its front,
   // the second half into another and fills from the back, walking backwards; no atomics,
-  // and the order does not depend on the number of threads.
-  void VertexCorners(const std::int32_t* w, vtkIdType nTris, std::int32_t* first,
+  // and the order does not depend on the number of threads. False, with no lists, if a
+  // vertex has more than MaxFastFan corners.
+  bool VertexCorners(const std::int32_t* w, vtkIdType nTris, std::int32_t* first,
     std::int32_t* corners, std::int32_t* nextIds, std::int32_t* prevIds) const
   {
     const std::size_t nv = static_cast<std::size_t>(this->NumberOfPoints);
@@ -2228,20 +2216,31 @@ private:
     const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, vtkIdType(nv) / 16384));
     const vtkIdType chunkSize = (vtkIdType(nv) + chunks - 1) / chunks;
     std::vector<std::int32_t> chunkFirst(static_cast<std::size_t>(chunks) + 1, 0);
+    std::atomic<bool> largeFan(false);
     vtkSMPTools::For(0, chunks, 1,
       [&](vtkIdType cb, vtkIdType ce)
       {
         for (vtkIdType c = cb; c < ce; ++c)
         {
           const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
-          std::int32_t sum = 0;
+          std::int32_t sum = 0, largest = 0;
           for (vtkIdType v = b; v < e; ++v)
           {
-            sum += count0[v] + count1[v];
+            const std::int32_t k = count0[v] + count1[v];
+            sum += k;
+            largest = std::max(largest, k);
           }
           chunkFirst[c + 1] = sum;
+          if (largest > MaxFastFan)
+          {
+            largeFan.store(true, std::memory_order_relaxed);
+          }
         }
       });
+    if (largeFan)
+    {
+      return false;
+    }
     for (vtkIdType c = 0; c < chunks; ++c)
     {
       chunkFirst[c + 1] += chunkFirst[c];
@@ -2297,6 +2296,7 @@ private:
           }
         }
       });
+    return true;
   }
 
   bool Vertices(const std::int32_t* nextIds, const std::int32_t* prevIds,
