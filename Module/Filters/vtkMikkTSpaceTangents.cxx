@@ -1708,23 +1708,10 @@ private:
     Block<std::int32_t> nextIds(3 * nt + 8), prevIds(3 * nt + 8);
     std::fill_n(nextIds.Get() + 3 * nt, 8, 0);
     std::fill_n(prevIds.Get() + 3 * nt, 8, 0);
-    this->VertexCorners(w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get());
-    // A pole (a fan too large for the fast path) is found here at the cost of one scan,
+    // A pole (a fan too large for the fast path) is found while the vertex lists are sized,
     // rather than in the per-vertex pass, which may have done most of its work by then.
-    std::atomic<bool> largeFan(false);
-    vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType v = b; v < e; ++v)
-        {
-          if (first[v + 1] - first[v] > MaxFastFan)
-          {
-            largeFan.store(true, std::memory_order_relaxed);
-            return;
-          }
-        }
-      });
-    if (largeFan)
+    if (!this->VertexCorners(
+          w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get()))
     {
       return false;
     }
@@ -1896,24 +1883,6 @@ private:
   bool Weld(const Block<std::int32_t>& weld)
   {
     const std::int32_t n = this->NumberOfPoints;
-    Block<std::uint64_t> hashes(n);
-    std::atomic<bool> fail(false);
-    vtkSMPTools::For(0, vtkIdType(n),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        const bool finite = vtkSurfaceDetailVectorize::HaveAVX512()
-          ? HashRangeAVX512(*this, b, e, hashes.Get())
-          : vtkSurfaceDetailVectorize::HaveAVX2() ? HashRangeAVX2(*this, b, e, hashes.Get())
-                                                  : this->HashRange(b, e, hashes.Get());
-        if (!finite)
-        {
-          fail.store(true, std::memory_order_relaxed);
-        }
-      });
-    if (fail)
-    {
-      return false;
-    }
     int bucketBits = 0;
     while (bucketBits < 16 && (std::int64_t(1024) << bucketBits) < n)
     {
@@ -1921,11 +1890,56 @@ private:
     }
     const std::uint64_t buckets = std::uint64_t(1) << bucketBits;
     const std::uint64_t bucketMask = buckets - 1;
-    std::vector<std::int32_t> bucketFirst(buckets + 1, 0);
-    for (std::int32_t i = 0; i < n; ++i)
+    // The counting sort runs on fixed chunks of points, not on the threads' ranges: chunk c's
+    // points of bucket k go after those of chunks before c, so each bucket lists its points
+    // in increasing order whatever the number of threads.
+    const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, n / 16384));
+    const vtkIdType chunkSize = (n + chunks - 1) / chunks;
+    Block<std::uint64_t> hashes(n);
+    // Per (chunk, bucket): the chunk's count of the bucket's points, then where they go.
+    std::vector<std::int32_t> cursor(static_cast<std::size_t>(chunks) * buckets, 0);
+    std::atomic<bool> fail(false);
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(n, b + chunkSize);
+          const bool finite = vtkSurfaceDetailVectorize::HaveAVX512()
+            ? HashRangeAVX512(*this, b, e, hashes.Get())
+            : vtkSurfaceDetailVectorize::HaveAVX2() ? HashRangeAVX2(*this, b, e, hashes.Get())
+                                                    : this->HashRange(b, e, hashes.Get());
+          if (!finite)
+          {
+            fail.store(true, std::memory_order_relaxed);
+          }
+          std::int32_t* count = cursor.data() + c * buckets;
+          for (vtkIdType i = b; i < e; ++i)
+          {
+            ++count[hashes[i] & bucketMask];
+          }
+        }
+      });
+    if (fail)
     {
-      ++bucketFirst[(hashes[i] & bucketMask) + 1];
+      return false;
     }
+    std::vector<std::int32_t> bucketFirst(buckets + 1, 0);
+    vtkSMPTools::For(0, vtkIdType(buckets),
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          std::int32_t sum = 0;
+          for (vtkIdType c = 0; c < chunks; ++c)
+          {
+            const std::int32_t count = cursor[c * buckets + k];
+            cursor[c * buckets + k] = sum;
+            sum += count;
+          }
+          bucketFirst[k + 1] = sum;
+        }
+      });
     for (std::uint64_t k = 0; k < buckets; ++k)
     {
       bucketFirst[k + 1] += bucketFirst[k];
@@ -1938,13 +1952,20 @@ private:
       std::int32_t Id;
     };
     Block<Entry> order(n);
-    {
-      std::vector<std::int32_t> fill(bucketFirst.begin(), bucketFirst.end() - 1);
-      for (std::int32_t i = 0; i < n; ++i)
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
       {
-        order[fill[hashes[i] & bucketMask]++] = Entry{ hashes[i], i };
-      }
-    }
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          std::int32_t* at = cursor.data() + c * buckets;
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(n, b + chunkSize);
+          for (vtkIdType i = b; i < e; ++i)
+          {
+            const std::uint64_t k = hashes[i] & bucketMask;
+            order[bucketFirst[k] + at[k]++] = Entry{ hashes[i], static_cast<std::int32_t>(i) };
+          }
+        }
+      });
     std::atomic<bool> welded(false);
     vtkSMPTools::For(0, vtkIdType(buckets),
       [&](vtkIdType b, vtkIdType e)
@@ -2074,7 +2095,14 @@ private:
         }
         for (int k = 0; k < 3; ++k)
         {
-          const std::int32_t p = static_cast<std::int32_t>(conn[3 * t + k]);
+          // RequestData leaves the ids' range to this pass, which reads them anyway.
+          const IdT id = conn[3 * t + k];
+          if (static_cast<std::make_unsigned_t<IdT>>(id) >=
+            static_cast<std::make_unsigned_t<IdT>>(this->NumberOfPoints))
+          {
+            return false;
+          }
+          const std::int32_t p = static_cast<std::int32_t>(id);
           w[3 * t + k] = this->Welded ? weld[p] : p;
           if (referenced)
           {
@@ -2162,37 +2190,79 @@ private:
   // each corner the (welded) points after and before it in its triangle. Two tasks: the
   // first half of the triangles counts into one array and fills each list from its front,
   // the second half into another and fills from the back, walking backwards; no atomics,
-  // and the order does not depend on the number of threads.
-  void VertexCorners(const std::int32_t* w, vtkIdType nTris, std::int32_t* first,
+  // and the order does not depend on the number of threads. False, with no lists, if a
+  // vertex has more than MaxFastFan corners.
+  bool VertexCorners(const std::int32_t* w, vtkIdType nTris, std::int32_t* first,
     std::int32_t* corners, std::int32_t* nextIds, std::int32_t* prevIds) const
   {
     const std::size_t nv = static_cast<std::size_t>(this->NumberOfPoints);
     const vtkIdType half = 3 * (nTris / 2), end = 3 * nTris;
     Block<std::int32_t> count0(nv), count1(nv);
-    std::memset(count0.Get(), 0, nv * sizeof(std::int32_t));
-    std::memset(count1.Get(), 0, nv * sizeof(std::int32_t));
     vtkSMPTools::For(0, 2, 1,
       [&](vtkIdType b, vtkIdType e)
       {
         for (vtkIdType part = b; part < e; ++part)
         {
           std::int32_t* count = part == 0 ? count0.Get() : count1.Get();
+          std::memset(count, 0, nv * sizeof(std::int32_t));
           for (vtkIdType c = part == 0 ? 0 : half; c < (part == 0 ? half : end); ++c)
           {
             ++count[w[c]];
           }
         }
       });
-    std::int32_t sum = 0;
-    for (std::size_t v = 0; v < nv; ++v)
+    // The prefix sum in two parallel passes over fixed chunks of vertices: each chunk's
+    // total, then the chunk's sums from the totals of the chunks before it.
+    const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, vtkIdType(nv) / 16384));
+    const vtkIdType chunkSize = (vtkIdType(nv) + chunks - 1) / chunks;
+    std::vector<std::int32_t> chunkFirst(static_cast<std::size_t>(chunks) + 1, 0);
+    std::atomic<bool> largeFan(false);
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
+          std::int32_t sum = 0, largest = 0;
+          for (vtkIdType v = b; v < e; ++v)
+          {
+            const std::int32_t k = count0[v] + count1[v];
+            sum += k;
+            largest = std::max(largest, k);
+          }
+          chunkFirst[c + 1] = sum;
+          if (largest > MaxFastFan)
+          {
+            largeFan.store(true, std::memory_order_relaxed);
+          }
+        }
+      });
+    if (largeFan)
     {
-      const std::int32_t n0 = count0[v], n1 = count1[v];
-      first[v] = sum;
-      count0[v] = sum; // the front cursor
-      sum += n0 + n1;
-      count1[v] = sum; // the back cursor
+      return false;
     }
-    first[nv] = sum;
+    for (vtkIdType c = 0; c < chunks; ++c)
+    {
+      chunkFirst[c + 1] += chunkFirst[c];
+    }
+    vtkSMPTools::For(0, chunks, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
+          std::int32_t sum = chunkFirst[c];
+          for (vtkIdType v = b; v < e; ++v)
+          {
+            const std::int32_t n0 = count0[v], n1 = count1[v];
+            first[v] = sum;
+            count0[v] = sum; // the front cursor
+            sum += n0 + n1;
+            count1[v] = sum; // the back cursor
+          }
+        }
+      });
+    first[nv] = chunkFirst[chunks];
     vtkSMPTools::For(0, 2, 1,
       [&](vtkIdType b, vtkIdType e)
       {
@@ -2226,6 +2296,7 @@ private:
           }
         }
       });
+    return true;
   }
 
   bool Vertices(const std::int32_t* nextIds, const std::int32_t* prevIds,
@@ -2690,11 +2761,25 @@ int vtkMikkTSpaceTangents::RequestData(
     vtkErrorMacro("The input has no polygons or triangle strips; tangents need a surface.");
     return 0;
   }
-  if (!vtkSurfaceDetailCells::PointIdsInRange(input->GetPolys(), nPts) ||
-    !vtkSurfaceDetailCells::PointIdsInRange(input->GetStrips(), nPts))
+  auto idsInRange = [&]()
   {
+    if (vtkSurfaceDetailCells::PointIdsInRange(input->GetPolys(), nPts) &&
+      vtkSurfaceDetailCells::PointIdsInRange(input->GetStrips(), nPts))
+    {
+      return true;
+    }
     vtkErrorMacro("A polygon or triangle strip of the input names a point id outside [0, "
       << nPts << "); fix the connectivity (e.g. with vtkCleanPolyData) first.");
+    return false;
+  };
+  // The fast path checks the ids as it reads them, which saves a pass over the connectivity;
+  // it goes first only with given normals (computing them reads the ids) and no strips, and
+  // if it gives up, the ids are checked before anything else reads them.
+  vtkDataArray* givenNormals = input->GetPointData()->GetNormals();
+  const bool fastFirst = this->AngularThreshold >= 180.0 && input->GetNumberOfStrips() == 0 &&
+    givenNormals && givenNormals->GetNumberOfComponents() == 3;
+  if (!fastFirst && !idsInRange())
+  {
     return 0;
   }
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
@@ -2761,6 +2846,10 @@ int vtkMikkTSpaceTangents::RequestData(
     }
   }
 
+  if (fastFirst && !idsInRange())
+  {
+    return 0;
+  }
   MikkMesh mesh;
   mesh.NumberOfPoints = nPts;
   {
