@@ -1594,6 +1594,38 @@ VTK_ALWAYS_INLINE bool FanIsOneRun(const std::int32_t* next, const std::int32_t*
   return LargeFanIsOneRun(next, prev, k);
 }
 
+// A range [0, n) cut into a fixed number of chunks that depends on n alone (at most 64, at
+// least 16384 items each, or one): passes whose results depend on the order of the items
+// (counting sorts, running sums) run per chunk in parallel and stay the same whatever the
+// number of threads. For(f) calls f(chunk, begin, end) for every chunk.
+struct FixedChunks
+{
+  explicit FixedChunks(vtkIdType n)
+    : N(n)
+    , Count(std::max<vtkIdType>(1, std::min<vtkIdType>(64, n / 16384)))
+    , Size((n + this->Count - 1) / this->Count)
+  {
+  }
+
+  template <typename F>
+  void For(F&& f) const
+  {
+    vtkSMPTools::For(0, this->Count, 1,
+      [&](vtkIdType cb, vtkIdType ce)
+      {
+        for (vtkIdType c = cb; c < ce; ++c)
+        {
+          const vtkIdType b = c * this->Size;
+          f(c, b, std::min<vtkIdType>(this->N, b + this->Size));
+        }
+      });
+  }
+
+  const vtkIdType N;
+  const vtkIdType Count;
+  const vtkIdType Size;
+};
+
 // Margins of the fast path's checks: squared sine of ~0.06 degrees for projections onto
 // the tangent plane, cosine of 89.94 degrees for directions within a quarter turn.
 constexpr double FastProjection2 = 1e-6;
@@ -1893,31 +1925,26 @@ private:
     // The counting sort runs on fixed chunks of points, not on the threads' ranges: chunk c's
     // points of bucket k go after those of chunks before c, so each bucket lists its points
     // in increasing order whatever the number of threads.
-    const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, n / 16384));
-    const vtkIdType chunkSize = (n + chunks - 1) / chunks;
+    const FixedChunks chunks(n);
     Block<std::uint64_t> hashes(n);
     // Per (chunk, bucket): the chunk's count of the bucket's points, then where they go.
-    std::vector<std::int32_t> cursor(static_cast<std::size_t>(chunks) * buckets, 0);
+    std::vector<std::int32_t> cursor(static_cast<std::size_t>(chunks.Count) * buckets, 0);
     std::atomic<bool> fail(false);
-    vtkSMPTools::For(0, chunks, 1,
-      [&](vtkIdType cb, vtkIdType ce)
+    chunks.For(
+      [&](vtkIdType c, vtkIdType b, vtkIdType e)
       {
-        for (vtkIdType c = cb; c < ce; ++c)
+        const bool finite = vtkSurfaceDetailVectorize::HaveAVX512()
+          ? HashRangeAVX512(*this, b, e, hashes.Get())
+          : vtkSurfaceDetailVectorize::HaveAVX2() ? HashRangeAVX2(*this, b, e, hashes.Get())
+                                                  : this->HashRange(b, e, hashes.Get());
+        if (!finite)
         {
-          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(n, b + chunkSize);
-          const bool finite = vtkSurfaceDetailVectorize::HaveAVX512()
-            ? HashRangeAVX512(*this, b, e, hashes.Get())
-            : vtkSurfaceDetailVectorize::HaveAVX2() ? HashRangeAVX2(*this, b, e, hashes.Get())
-                                                    : this->HashRange(b, e, hashes.Get());
-          if (!finite)
-          {
-            fail.store(true, std::memory_order_relaxed);
-          }
-          std::int32_t* count = cursor.data() + c * buckets;
-          for (vtkIdType i = b; i < e; ++i)
-          {
-            ++count[hashes[i] & bucketMask];
-          }
+          fail.store(true, std::memory_order_relaxed);
+        }
+        std::int32_t* count = cursor.data() + c * buckets;
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          ++count[hashes[i] & bucketMask];
         }
       });
     if (fail)
@@ -1931,7 +1958,7 @@ private:
         for (vtkIdType k = b; k < e; ++k)
         {
           std::int32_t sum = 0;
-          for (vtkIdType c = 0; c < chunks; ++c)
+          for (vtkIdType c = 0; c < chunks.Count; ++c)
           {
             const std::int32_t count = cursor[c * buckets + k];
             cursor[c * buckets + k] = sum;
@@ -1952,18 +1979,14 @@ private:
       std::int32_t Id;
     };
     Block<Entry> order(n);
-    vtkSMPTools::For(0, chunks, 1,
-      [&](vtkIdType cb, vtkIdType ce)
+    chunks.For(
+      [&](vtkIdType c, vtkIdType b, vtkIdType e)
       {
-        for (vtkIdType c = cb; c < ce; ++c)
+        std::int32_t* at = cursor.data() + c * buckets;
+        for (vtkIdType i = b; i < e; ++i)
         {
-          std::int32_t* at = cursor.data() + c * buckets;
-          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(n, b + chunkSize);
-          for (vtkIdType i = b; i < e; ++i)
-          {
-            const std::uint64_t k = hashes[i] & bucketMask;
-            order[bucketFirst[k] + at[k]++] = Entry{ hashes[i], static_cast<std::int32_t>(i) };
-          }
+          const std::uint64_t k = hashes[i] & bucketMask;
+          order[bucketFirst[k] + at[k]++] = Entry{ hashes[i], static_cast<std::int32_t>(i) };
         }
       });
     std::atomic<bool> welded(false);
@@ -2213,56 +2236,47 @@ private:
       });
     // The prefix sum in two parallel passes over fixed chunks of vertices: each chunk's
     // total, then the chunk's sums from the totals of the chunks before it.
-    const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(64, vtkIdType(nv) / 16384));
-    const vtkIdType chunkSize = (vtkIdType(nv) + chunks - 1) / chunks;
-    std::vector<std::int32_t> chunkFirst(static_cast<std::size_t>(chunks) + 1, 0);
+    const FixedChunks chunks(static_cast<vtkIdType>(nv));
+    std::vector<std::int32_t> chunkFirst(static_cast<std::size_t>(chunks.Count) + 1, 0);
     std::atomic<bool> largeFan(false);
-    vtkSMPTools::For(0, chunks, 1,
-      [&](vtkIdType cb, vtkIdType ce)
+    chunks.For(
+      [&](vtkIdType c, vtkIdType b, vtkIdType e)
       {
-        for (vtkIdType c = cb; c < ce; ++c)
+        std::int32_t sum = 0, largest = 0;
+        for (vtkIdType v = b; v < e; ++v)
         {
-          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
-          std::int32_t sum = 0, largest = 0;
-          for (vtkIdType v = b; v < e; ++v)
-          {
-            const std::int32_t k = count0[v] + count1[v];
-            sum += k;
-            largest = std::max(largest, k);
-          }
-          chunkFirst[c + 1] = sum;
-          if (largest > MaxFastFan)
-          {
-            largeFan.store(true, std::memory_order_relaxed);
-          }
+          const std::int32_t k = count0[v] + count1[v];
+          sum += k;
+          largest = std::max(largest, k);
+        }
+        chunkFirst[c + 1] = sum;
+        if (largest > MaxFastFan)
+        {
+          largeFan.store(true, std::memory_order_relaxed);
         }
       });
     if (largeFan)
     {
       return false;
     }
-    for (vtkIdType c = 0; c < chunks; ++c)
+    for (vtkIdType c = 0; c < chunks.Count; ++c)
     {
       chunkFirst[c + 1] += chunkFirst[c];
     }
-    vtkSMPTools::For(0, chunks, 1,
-      [&](vtkIdType cb, vtkIdType ce)
+    chunks.For(
+      [&](vtkIdType c, vtkIdType b, vtkIdType e)
       {
-        for (vtkIdType c = cb; c < ce; ++c)
+        std::int32_t sum = chunkFirst[c];
+        for (vtkIdType v = b; v < e; ++v)
         {
-          const vtkIdType b = c * chunkSize, e = std::min<vtkIdType>(nv, b + chunkSize);
-          std::int32_t sum = chunkFirst[c];
-          for (vtkIdType v = b; v < e; ++v)
-          {
-            const std::int32_t n0 = count0[v], n1 = count1[v];
-            first[v] = sum;
-            count0[v] = sum; // the front cursor
-            sum += n0 + n1;
-            count1[v] = sum; // the back cursor
-          }
+          const std::int32_t n0 = count0[v], n1 = count1[v];
+          first[v] = sum;
+          count0[v] = sum; // the front cursor
+          sum += n0 + n1;
+          count1[v] = sum; // the back cursor
         }
       });
-    first[nv] = chunkFirst[chunks];
+    first[nv] = chunkFirst[chunks.Count];
     vtkSMPTools::For(0, 2, 1,
       [&](vtkIdType b, vtkIdType e)
       {
