@@ -463,6 +463,17 @@ inline double Finite(double x)
     std::max(x, -std::numeric_limits<double>::max()), std::numeric_limits<double>::max());
 }
 
+// Finite for float lanes: NaN becomes 0 and infinity the largest float.
+inline float Finite(float x)
+{
+  if (std::isnan(x))
+  {
+    return 0.0f;
+  }
+  return std::min(
+    std::max(x, -std::numeric_limits<float>::max()), std::numeric_limits<float>::max());
+}
+
 inline void ScaleToUnitMax(double v[3])
 {
   const double mx = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
@@ -719,6 +730,11 @@ inline bool IsFinite(double x)
   return std::abs(x) <= std::numeric_limits<double>::max();
 }
 
+inline bool IsFinite(float x)
+{
+  return std::abs(x) <= std::numeric_limits<float>::max();
+}
+
 // FastNormalize and its check for one lane of a block, free of branches so that block loops
 // vectorise (bitwise & rather than a short circuit, which GCC splits the loop on): x, y, z
 // scaled to unit length where their length is positive and finite, else left as they are;
@@ -750,16 +766,47 @@ inline R ToReal(double v)
 // The block loops are also compiled for AVX2 and that copy runs where the processor has it
 // (vtkSurfaceDetailVectorize::RunWidest: the same bits either way).
 
+// Squared lengths that float lanes take as they come: within them a float vector's length, its
+// inverse and the unit vector keep float's relative precision (no overflow, no subnormals).
+constexpr float FloatLength2Min = 0x1p-100f;
+constexpr float FloatLength2Max = 0x1p100f;
+
+// UnitLane for float lanes: scales x, y, z to unit length and tells whether the squared length
+// was within [FloatLength2Min, FloatLength2Max] (false for NaN and infinities too).
+VTK_ALWAYS_INLINE bool UnitLaneFloat(float& x, float& y, float& z)
+{
+  const float len2 = x * x + y * y + z * z;
+  const float inv = 1.0f / std::sqrt(len2);
+  x *= inv;
+  y *= inv;
+  z *= inv;
+  return (len2 >= FloatLength2Min) & (len2 <= FloatLength2Max);
+}
+
 // The per-block steps that pass 1 and Mesh's point normals share: points in blocks of Block,
-// held as structure of arrays in lanes of double.
-template <typename R>
+// held as structure of arrays in lanes of L.
+//
+// Double lanes (L = double, the only kind for double arrays) keep the operations of the per-point
+// helpers above, so their results are those helpers' to the bit. Float lanes (L = float, for
+// float arrays) hold twice as many values per vector: the inputs and outputs have float's
+// precision anyway, and what needs more stays in double (texture coordinates and height samples,
+// whose texel positions in a big map need more than float's 24 bits; the fits' sums, which
+// cancel; Mesh's polygon normals). Float's range and precision are short for some points: the
+// steps flag them in Redo (a value beyond 2^32, a length outside [2^-50, 2^50], derivatives within
+// 0.6 degrees of parallel, a tangent or a new normal that mostly cancels), and the workers redo
+// those points, one by one, with double lanes. Every flag depends on the point alone, so that
+// the results never depend on the blocks (on the threads).
+template <typename R, typename L = R>
 struct BlockOps
 {
   static constexpr int Block = 64;
-  using Lanes = double[Block];
+  static constexpr bool Float = std::is_same<L, float>::value;
+  using Lanes = L[Block];
+  using Flags = int[Block];
   const Context<R>& C;
 
-  // Interleaved values of R to lanes, and back (for R float, clamped to float's range).
+  // Interleaved values of R to lanes, and back (for R float from double lanes, clamped to
+  // float's range; float lanes are finite).
   template <int NC>
   static VTK_ALWAYS_INLINE void Gather(const R* in, int count, Lanes* lanes)
   {
@@ -767,7 +814,7 @@ struct BlockOps
     {
       for (int j = 0; j < NC; ++j)
       {
-        lanes[j][k] = in[NC * k + j];
+        lanes[j][k] = static_cast<L>(in[NC * k + j]);
       }
     }
   }
@@ -779,40 +826,69 @@ struct BlockOps
     {
       for (int j = 0; j < NC; ++j)
       {
-        out[NC * k + j] = ToReal<R>(lanes[j][k]);
+        if constexpr (Float)
+        {
+          out[NC * k + j] = lanes[j][k];
+        }
+        else
+        {
+          out[NC * k + j] = ToReal<R>(lanes[j][k]);
+        }
       }
     }
   }
 
   // InputNormal for the block, and WriteNormal's fallback: that normal, or +z where it has none.
+  // Float lanes: sets @a redo (the first step of a block).
   VTK_ALWAYS_INLINE void UnitNormals(
-    vtkIdType first, int count, Lanes n[3], Lanes fallback[3]) const
+    vtkIdType first, int count, Lanes n[3], Lanes fallback[3], [[maybe_unused]] Flags redo) const
   {
     Gather<3>(this->C.Normals->P + 3 * first, count, n);
     for (int k = 0; k < count; ++k)
     {
       // No re-read of what the loop stored: GCC would re-read masked stores (a
       // store-forwarding stall per block).
-      double sx = n[0][k], sy = n[1][k], sz = n[2][k];
-      const bool keep = UnitLane(sx, sy, sz);
-      const double ux = keep ? sx : 0.0, uy = keep ? sy : 0.0;
+      L sx = n[0][k], sy = n[1][k], sz = n[2][k];
+      bool keep;
+      if constexpr (Float)
+      {
+        keep = UnitLaneFloat(sx, sy, sz);
+        redo[k] = !keep;
+      }
+      else
+      {
+        keep = UnitLane(sx, sy, sz);
+      }
+      const L ux = keep ? sx : L(0), uy = keep ? sy : L(0);
       n[0][k] = ux;
       n[1][k] = uy;
-      n[2][k] = keep ? sz : 0.0;
+      n[2][k] = keep ? sz : L(0);
       fallback[0][k] = ux;
       fallback[1][k] = uy;
-      fallback[2][k] = keep ? sz : 1.0;
+      fallback[2][k] = keep ? sz : L(1);
     }
   }
 
-  // WriteNormal for the block: normalises m in place and writes it.
-  VTK_ALWAYS_INLINE void Normals(
-    vtkIdType first, int count, const Lanes fallback[3], Lanes m[3]) const
+  // WriteNormal for the block: normalises m in place and writes it. Float lanes flag where the
+  // length is out of range or, when it came from a sum of a unit vector and others, below
+  // @a minLength2 (the sum mostly cancelled, and lost float's relative precision).
+  VTK_ALWAYS_INLINE void Normals(vtkIdType first, int count, const Lanes fallback[3], Lanes m[3],
+    [[maybe_unused]] Flags redo, [[maybe_unused]] float minLength2 = 0.0f) const
   {
     for (int k = 0; k < count; ++k)
     {
-      double sx = m[0][k], sy = m[1][k], sz = m[2][k];
-      const bool keep = UnitLane(sx, sy, sz);
+      L sx = m[0][k], sy = m[1][k], sz = m[2][k];
+      bool keep;
+      if constexpr (Float)
+      {
+        const float len2 = sx * sx + sy * sy + sz * sz;
+        keep = UnitLaneFloat(sx, sy, sz);
+        redo[k] |= !keep | (len2 < minLength2);
+      }
+      else
+      {
+        keep = UnitLane(sx, sy, sz);
+      }
       m[0][k] = keep ? sx : fallback[0][k];
       m[1][k] = keep ? sy : fallback[1][k];
       m[2][k] = keep ? sz : fallback[2][k];
@@ -828,10 +904,13 @@ struct BlockOps
     }
   }
 
-  // WriteTangent for the block (@a t is scratch); a block with a tangent left without
-  // direction is redone by WriteTangent itself (same results for the others).
+  // WriteTangent for the block (@a t is scratch). Double lanes: a block with a tangent left
+  // without direction is redone by WriteTangent itself (same results for the others). Float
+  // lanes: flags a tangent that is out of range or lies within 0.6 degrees of the normal (its
+  // part across the normal would keep too few bits).
   template <int NC>
-  VTK_ALWAYS_INLINE void Tangents(vtkIdType first, int count, const Lanes m[3], Lanes t[4]) const
+  VTK_ALWAYS_INLINE void Tangents(
+    vtkIdType first, int count, const Lanes m[3], Lanes t[4], [[maybe_unused]] Flags redo) const
   {
     const Context<R>& c = this->C;
     Gather<NC>(c.Tangents->P + NC * first, count, t);
@@ -839,19 +918,35 @@ struct BlockOps
     int bad = 0;
     for (int k = 0; k < count; ++k)
     {
-      double x = t[0][k], y = t[1][k], z = t[2][k];
-      const double along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
-      x -= along * m[0][k];
-      y -= along * m[1][k];
-      z -= along * m[2][k];
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = (len > 0.0) & IsFinite(len);
-      const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
-      bad |= static_cast<int>((len == 0.0) | !IsFinite(sx + sy + sz));
-      t[0][k] = sx;
-      t[1][k] = sy;
-      t[2][k] = sz;
+      L x = t[0][k], y = t[1][k], z = t[2][k];
+      const L along = m[0][k] * x + m[1][k] * y + m[2][k] * z;
+      if constexpr (Float)
+      {
+        const float before2 = x * x + y * y + z * z;
+        x -= along * m[0][k];
+        y -= along * m[1][k];
+        z -= along * m[2][k];
+        const float len2 = x * x + y * y + z * z;
+        const bool keep = UnitLaneFloat(x, y, z);
+        redo[k] |= !keep | !(len2 > 1e-4f * before2);
+        t[0][k] = x;
+        t[1][k] = y;
+        t[2][k] = z;
+      }
+      else
+      {
+        x -= along * m[0][k];
+        y -= along * m[1][k];
+        z -= along * m[2][k];
+        const double len = std::sqrt(x * x + y * y + z * z);
+        const double inv = 1.0 / len;
+        const bool scale = (len > 0.0) & IsFinite(len);
+        const double sx = scale ? x * inv : x, sy = scale ? y * inv : y, sz = scale ? z * inv : z;
+        bad |= static_cast<int>((len == 0.0) | !IsFinite(sx + sy + sz));
+        t[0][k] = sx;
+        t[1][k] = sy;
+        t[2][k] = sz;
+      }
     }
     R* out = c.OutTangents->P + NC * first;
     for (int k = 0; k < count; ++k)
@@ -871,21 +966,36 @@ struct BlockOps
       WriteTangent(c, first + k, mk);
     }
   }
+
+  // Whether any point of the block is flagged.
+  static VTK_ALWAYS_INLINE bool Any(int count, const Flags redo)
+  {
+    int any = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      any |= redo[k];
+    }
+    return any != 0;
+  }
 };
 
 // Pass 1: displacement, and the analytic normals (Approximate, Exact). The points go in blocks
 // held as structure of arrays: the height samples and the fits (gathers) run point by point,
 // everything else in short branch-free loops over the block that the compiler vectorises; the
 // rare points that need a fallback (a tangent with no direction left) are redone afterwards
-// with the general code. Each loop keeps the operations and their order of the per-point
-// helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the results are
-// theirs to the bit.
-template <int Interp, typename T, typename R>
-struct DisplaceWorker : BlockOps<R>
+// with the general code. With double lanes each loop keeps the operations and their order of
+// the per-point helpers above (InputNormal, WritePoint, WriteNormal, WriteTangent), so the
+// results are theirs to the bit; with float lanes (float arrays) the points they flag are redone
+// with double lanes (BlockOps).
+template <int Interp, typename T, typename R, typename L = R>
+struct DisplaceWorker : BlockOps<R, L>
 {
-  using Base = BlockOps<R>;
+  using Base = BlockOps<R, L>;
   using Base::Block;
+  using Base::Float;
+  using typename Base::Flags;
   using typename Base::Lanes;
+  using DoubleLanes = double[Block];
   const Texels<T>& Tex;
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -902,52 +1012,97 @@ struct DisplaceWorker : BlockOps<R>
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
     alignas(64) Lanes n[3], fallback[3], d, ds, dt, ps[3], pt[3], ns[3], nt[3], m[3], x[4];
+    alignas(64) Flags redo;
     for (vtkIdType first = begin; first < end; first += Block)
     {
       const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
-      this->UnitNormals(first, count, n, fallback);
-      this->Heights(first, count, d, ds, dt);
+      this->UnitNormals(first, count, n, fallback, redo);
+      this->Heights(first, count, d, ds, dt, redo);
       this->Points(first, count, n, d, x);
-      if (!analytic)
+      if (analytic)
       {
-        continue;
+        this->Derivatives(first, count, exact, ps, pt, ns, nt);
+        if (exact)
+        {
+          this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m, redo);
+        }
+        else
+        {
+          this->template Directions<false>(count, n, d, ds, dt, ps, pt, ns, nt, m, redo);
+        }
+        // Exact's new normal is n plus a change: one much shorter than n cancelled it.
+        this->Normals(first, count, fallback, m, redo, exact ? 1e-4f : 0.0f);
+        if (c.OutTangents && c.OutTangents->NC == 4)
+        {
+          this->template Tangents<4>(first, count, m, x, redo);
+        }
+        else if (c.OutTangents)
+        {
+          this->template Tangents<3>(first, count, m, x, redo);
+        }
       }
-      this->Derivatives(first, count, exact, ps, pt, ns, nt);
-      if (exact)
+      if constexpr (Float)
       {
-        this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m);
-      }
-      else
-      {
-        this->template Directions<false>(count, n, d, ds, dt, ps, pt, ns, nt, m);
-      }
-      this->Normals(first, count, fallback, m);
-      if (c.OutTangents && c.OutTangents->NC == 4)
-      {
-        this->template Tangents<4>(first, count, m, x);
-      }
-      else if (c.OutTangents)
-      {
-        this->template Tangents<3>(first, count, m, x);
+        if (Base::Any(count, redo))
+        {
+          const DisplaceWorker<Interp, T, R, double> again{ { c }, this->Tex };
+          for (int k = 0; k < count; ++k)
+          {
+            if (redo[k])
+            {
+              again(first + k, first + k + 1);
+            }
+          }
+        }
       }
     }
   }
 
-  VTK_ALWAYS_INLINE void Heights(vtkIdType first, int count, Lanes d, Lanes ds, Lanes dt) const
+  // The displacement and its derivatives in (s,t), sampled and scaled in double (float lanes:
+  // then rounded to float, and flagged beyond 2^32, where products of them and the derivatives
+  // could leave float's range).
+  VTK_ALWAYS_INLINE void Heights(
+    vtkIdType first, int count, Lanes d, Lanes ds, Lanes dt, [[maybe_unused]] Flags redo) const
+  {
+    const Context<R>& c = this->C;
+    if constexpr (Float)
+    {
+      alignas(64) DoubleLanes h, hs, ht;
+      this->Samples(first, count, h, hs, ht);
+      for (int k = 0; k < count; ++k)
+      {
+        const double dk = Finite(c.Scale * (h[k] - c.Midlevel));
+        const double dsk = Finite(c.Scale * hs[k]);
+        const double dtk = Finite(c.Scale * ht[k]);
+        const double largest = std::max(std::max(std::abs(dk), std::abs(dsk)), std::abs(dtk));
+        redo[k] |= !(largest <= 0x1p32);
+        d[k] = static_cast<float>(dk);
+        ds[k] = static_cast<float>(dsk);
+        dt[k] = static_cast<float>(dtk);
+      }
+    }
+    else
+    {
+      this->Samples(first, count, d, ds, dt);
+      // Displacement's arithmetic, in a loop of its own that vectorises.
+      for (int k = 0; k < count; ++k)
+      {
+        d[k] = Finite(c.Scale * (d[k] - c.Midlevel));
+        ds[k] = Finite(c.Scale * ds[k]);
+        dt[k] = Finite(c.Scale * dt[k]);
+      }
+    }
+  }
+
+  VTK_ALWAYS_INLINE void Samples(
+    vtkIdType first, int count, DoubleLanes h, DoubleLanes hs, DoubleLanes ht) const
   {
     const Context<R>& c = this->C;
     for (int k = 0; k < count; ++k)
     {
       const vtkIdType i = first + k;
       SampleHeight<Interp>(
-        this->Tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), d[k], ds[k], dt[k]);
-    }
-    // Displacement's arithmetic, in a loop of its own that vectorises.
-    for (int k = 0; k < count; ++k)
-    {
-      d[k] = Finite(c.Scale * (d[k] - c.Midlevel));
-      ds[k] = Finite(c.Scale * ds[k]);
-      dt[k] = Finite(c.Scale * dt[k]);
+        this->Tex, c.Wrap, c.TCoords->Get(i, 0), c.TCoords->Get(i, 1), h[k], hs[k], ht[k]);
     }
   }
 
@@ -960,7 +1115,7 @@ struct DisplaceWorker : BlockOps<R>
     {
       for (int k = 0; k < count; ++k)
       {
-        const double offset = d[k] * n[j][k];
+        const L offset = d[k] * n[j][k];
         x[j][k] = offset == 0.0 ? x[j][k] : Finite(x[j][k] + offset);
       }
     }
@@ -976,12 +1131,14 @@ struct DisplaceWorker : BlockOps<R>
     {
       this->template Gather<3>(c.DPdu->P + 3 * first, count, ps);
       this->template Gather<3>(c.DPdv->P + 3 * first, count, pt);
+      const L scaleS = static_cast<L>(c.DerivativeScale[0]);
+      const L scaleT = static_cast<L>(c.DerivativeScale[1]);
       for (int j = 0; j < 3; ++j)
       {
         for (int k = 0; k < count; ++k)
         {
-          ps[j][k] *= c.DerivativeScale[0];
-          pt[j][k] *= c.DerivativeScale[1];
+          ps[j][k] *= scaleS;
+          pt[j][k] *= scaleT;
         }
       }
     }
@@ -1014,8 +1171,8 @@ struct DisplaceWorker : BlockOps<R>
       {
         for (int j = 0; j < 3; ++j)
         {
-          ps[j][k] = kept[stride * k + j];
-          pt[j][k] = kept[stride * k + 3 + j];
+          ps[j][k] = static_cast<L>(kept[stride * k + j]);
+          pt[j][k] = static_cast<L>(kept[stride * k + 3 + j]);
         }
       }
       kept += 6;
@@ -1026,8 +1183,8 @@ struct DisplaceWorker : BlockOps<R>
       {
         for (int j = 0; j < 3; ++j)
         {
-          ns[j][k] = kept[stride * k + j];
-          nt[j][k] = kept[stride * k + 3 + j];
+          ns[j][k] = static_cast<L>(kept[stride * k + j]);
+          nt[j][k] = static_cast<L>(kept[stride * k + 3 + j]);
         }
       }
     }
@@ -1042,8 +1199,40 @@ struct DisplaceWorker : BlockOps<R>
   VTK_ALWAYS_INLINE void Fit(
     vtkIdType first, int count, Lanes ps[3], Lanes pt[3], Lanes ns[3], Lanes nt[3]) const
   {
+    if constexpr (Float)
+    {
+      // Solved and kept in double (re-executions read the kept values: the same lanes).
+      alignas(64) DoubleLanes fps[3], fpt[3], fns[3], fnt[3];
+      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt);
+      for (int q = 0; q < 3; ++q)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          if (WantP)
+          {
+            ps[q][k] = static_cast<float>(fps[q][k]);
+            pt[q][k] = static_cast<float>(fpt[q][k]);
+          }
+          if (WantN)
+          {
+            ns[q][k] = static_cast<float>(fns[q][k]);
+            nt[q][k] = static_cast<float>(fnt[q][k]);
+          }
+        }
+      }
+    }
+    else
+    {
+      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt);
+    }
+  }
+
+  template <bool WantP, bool WantN>
+  VTK_ALWAYS_INLINE void FitDouble(vtkIdType first, int count, DoubleLanes ps[3], DoubleLanes pt[3],
+    DoubleLanes ns[3], DoubleLanes nt[3]) const
+  {
     const Context<R>& c = this->C;
-    alignas(64) Lanes m[3], bp[6], bn[6], near, far;
+    alignas(64) DoubleLanes m[3], bp[6], bn[6], near, far;
     for (int k = 0; k < count; ++k)
     {
       double pk[8], nk[8];
@@ -1116,7 +1305,22 @@ struct DisplaceWorker : BlockOps<R>
   template <bool Exact>
   VTK_ALWAYS_INLINE void Directions(int count, const Lanes n[3], const Lanes d, const Lanes ds,
     const Lanes dt, const Lanes ps[3], const Lanes pt[3], const Lanes ns[3], const Lanes nt[3],
-    Lanes m[3]) const
+    Lanes m[3], [[maybe_unused]] Flags redo) const
+  {
+    if constexpr (Float)
+    {
+      this->template DirectionsFloat<Exact>(count, n, d, ds, dt, ps, pt, ns, nt, m, redo);
+    }
+    else
+    {
+      this->template DirectionsDouble<Exact>(count, n, d, ds, dt, ps, pt, ns, nt, m);
+    }
+  }
+
+  template <bool Exact>
+  VTK_ALWAYS_INLINE void DirectionsDouble(int count, const Lanes n[3], const Lanes d,
+    const Lanes ds, const Lanes dt, const Lanes ps[3], const Lanes pt[3], const Lanes ns[3],
+    const Lanes nt[3], Lanes m[3]) const
   {
     for (int k = 0; k < count; ++k)
     {
@@ -1174,6 +1378,89 @@ struct DisplaceWorker : BlockOps<R>
         // Negation, not a product with the sign: -0 stays what WriteNormal would get.
         const double flipped = sign < 0.0 ? -mk[j] : mk[j];
         m[j][k] = degenerate ? nk[j] : flipped;
+      }
+    }
+  }
+
+  // Directions in float lanes. Where P_s and P_t (across n) lie within 0.6 degrees of parallel,
+  // or out of float's range, the point is flagged: its redo in double also decides, as the
+  // per-point code does, whether the surface is degenerate there. Exact: the cross product of the
+  // displaced surface's derivatives, (P_s + a_s) x (P_t + a_t) with a_s = d_s n + d n_s and
+  // a_t = d_t n + d n_t, is P_s x P_t = area n plus D = a_s x P_t + P_s x a_t + a_s x a_t, taken
+  // as n + D / area (oriented by the sign of area): no difference of two large cross products, so
+  // that float keeps its relative precision in the change of the normal.
+  template <bool Exact>
+  VTK_ALWAYS_INLINE void DirectionsFloat(int count, const Lanes n[3], const Lanes d, const Lanes ds,
+    const Lanes dt, const Lanes ps[3], const Lanes pt[3], const Lanes ns[3], const Lanes nt[3],
+    Lanes m[3], Flags redo) const
+  {
+    auto cross = [](const float a[3], const float b[3], float c[3])
+    {
+      c[0] = a[1] * b[2] - a[2] * b[1];
+      c[1] = a[2] * b[0] - a[0] * b[2];
+      c[2] = a[0] * b[1] - a[1] * b[0];
+    };
+    auto across = [](const float nk[3], float v[3])
+    {
+      const float along = nk[0] * v[0] + nk[1] * v[1] + nk[2] * v[2];
+      v[0] -= along * nk[0];
+      v[1] -= along * nk[1];
+      v[2] -= along * nk[2];
+    };
+    for (int k = 0; k < count; ++k)
+    {
+      const float nk[3] = { n[0][k], n[1][k], n[2][k] };
+      float Ps[3] = { ps[0][k], ps[1][k], ps[2][k] }, Pt[3] = { pt[0][k], pt[1][k], pt[2][k] };
+      across(nk, Ps);
+      across(nk, Pt);
+      float base[3];
+      cross(Ps, Pt, base);
+      const float area = nk[0] * base[0] + nk[1] * base[1] + nk[2] * base[2];
+      const float size2 = (Ps[0] * Ps[0] + Ps[1] * Ps[1] + Ps[2] * Ps[2]) *
+        (Pt[0] * Pt[0] + Pt[1] * Pt[1] + Pt[2] * Pt[2]);
+      redo[k] |= !(area * area > 1e-4f * size2) | !IsFinite(size2);
+      float mk[3];
+      if (Exact)
+      {
+        float Ns[3] = { ns[0][k], ns[1][k], ns[2][k] }, Nt[3] = { nt[0][k], nt[1][k], nt[2][k] };
+        across(nk, Ns);
+        across(nk, Nt);
+        float as[3], at[3];
+        for (int j = 0; j < 3; ++j)
+        {
+          as[j] = ds[k] * nk[j] + d[k] * Ns[j];
+          at[j] = dt[k] * nk[j] + d[k] * Nt[j];
+        }
+        float c1[3], c2[3], c3[3];
+        cross(as, Pt, c1);
+        cross(Ps, at, c2);
+        cross(as, at, c3);
+        const float inv = 1.0f / area;
+        for (int j = 0; j < 3; ++j)
+        {
+          mk[j] = nk[j] + (c1[j] + c2[j] + c3[j]) * inv;
+        }
+      }
+      else
+      {
+        float nxPs[3], nxPt[3];
+        cross(nk, Ps, nxPs);
+        cross(nk, Pt, nxPt);
+        const float largest =
+          std::max(std::max(std::max(std::abs(area), std::abs(ds[k])), std::abs(dt[k])),
+            std::numeric_limits<float>::min());
+        const float inv = 1.0f / largest;
+        const float a = area * inv, bs = ds[k] * inv, bt = dt[k] * inv;
+        const bool flip = area < 0.0f;
+        for (int j = 0; j < 3; ++j)
+        {
+          const float v = a * nk[j] + bs * nxPt[j] - bt * nxPs[j];
+          mk[j] = flip ? -v : v;
+        }
+      }
+      for (int j = 0; j < 3; ++j)
+      {
+        m[j][k] = mk[j];
       }
     }
   }
@@ -1278,15 +1565,31 @@ struct MeshPolygonNormalWorker
   }
 };
 
-// Each point's normal: the sum of its polygons' in increasing polygon order, then normalised and
-// its tangent re-orthogonalised in blocks (BlockOps: WriteNormalAndTangent's bits).
-template <typename R>
-struct MeshPointNormalWorker : BlockOps<R>
+// Each point's normal: the sum of its polygons' in increasing polygon order (in double), then
+// normalised and its tangent re-orthogonalised in blocks (BlockOps: with double lanes
+// WriteNormalAndTangent's bits; with float lanes, flagged points redone by it).
+template <typename R, typename L = R>
+struct MeshPointNormalWorker : BlockOps<R, L>
 {
-  using Base = BlockOps<R>;
+  using Base = BlockOps<R, L>;
   using Base::Block;
+  using Base::Float;
+  using typename Base::Flags;
   using typename Base::Lanes;
   const double* CellNormals;
+
+  VTK_ALWAYS_INLINE void Sum(vtkIdType i, double sum[3]) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    sum[0] = sum[1] = sum[2] = 0.0;
+    for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+    {
+      const double* p = this->CellNormals + 3 * mesh.Links[l];
+      sum[0] += p[0];
+      sum[1] += p[1];
+      sum[2] += p[2];
+    }
+  }
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
@@ -1296,35 +1599,43 @@ struct MeshPointNormalWorker : BlockOps<R>
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     const Context<R>& c = this->C;
-    const PolyLinks& mesh = *c.Polys;
     alignas(64) Lanes n[3], fallback[3], m[3], x[4];
+    alignas(64) Flags redo;
     for (vtkIdType first = begin; first < end; first += Block)
     {
       const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
       for (int k = 0; k < count; ++k)
       {
-        const vtkIdType i = first + k;
-        double sum[3] = { 0.0, 0.0, 0.0 };
-        for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
-        {
-          const double* p = this->CellNormals + 3 * mesh.Links[l];
-          sum[0] += p[0];
-          sum[1] += p[1];
-          sum[2] += p[2];
-        }
-        m[0][k] = sum[0];
-        m[1][k] = sum[1];
-        m[2][k] = sum[2];
+        double sum[3];
+        this->Sum(first + k, sum);
+        m[0][k] = static_cast<L>(sum[0]);
+        m[1][k] = static_cast<L>(sum[1]);
+        m[2][k] = static_cast<L>(sum[2]);
       }
-      this->UnitNormals(first, count, n, fallback);
-      this->Normals(first, count, fallback, m);
+      this->UnitNormals(first, count, n, fallback, redo);
+      this->Normals(first, count, fallback, m, redo);
       if (c.OutTangents && c.OutTangents->NC == 4)
       {
-        this->template Tangents<4>(first, count, m, x);
+        this->template Tangents<4>(first, count, m, x, redo);
       }
       else if (c.OutTangents)
       {
-        this->template Tangents<3>(first, count, m, x);
+        this->template Tangents<3>(first, count, m, x, redo);
+      }
+      if constexpr (Float)
+      {
+        if (Base::Any(count, redo))
+        {
+          for (int k = 0; k < count; ++k)
+          {
+            if (redo[k])
+            {
+              double sum[3];
+              this->Sum(first + k, sum);
+              WriteNormalAndTangent(c, first + k, sum);
+            }
+          }
+        }
       }
     }
   }
