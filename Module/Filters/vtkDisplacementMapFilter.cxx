@@ -351,6 +351,12 @@ public:
     }
     this->N = n;
   }
+  void Free()
+  {
+    vtkSurfaceDetailMemory::Release(this->P);
+    this->P = nullptr;
+    this->N = 0;
+  }
   V* data() const { return this->P; }
   size_t size() const { return this->N; }
   V& operator[](size_t i) const { return this->P[i]; }
@@ -519,8 +525,10 @@ struct Context
   const double* FitNormals = nullptr;
   // The fitted derivatives, which depend on the input alone: per point FitStride values, P_s and
   // P_t when fitted (no dPdu/dPdv), then n_s and n_t (Exact). Written by pass 1, or (FitsKnown)
-  // read instead of fitting again.
-  double* Fits = nullptr;
+  // read instead of fitting again. Kept in R: float arrays' fits go to float lanes (and, rounded
+  // the same way, to the double lanes of the points redone), so float halves what re-executions
+  // read and changes nothing else.
+  R* Fits = nullptr;
   int FitStride = 0;
   bool FitsKnown = false;
 };
@@ -1148,7 +1156,7 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     const bool wantP = !c.DPdu;
     const int stride = c.FitStride;
-    const double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    const R* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
     if (!c.FitsKnown)
     {
       if (wantP && exact)
@@ -1261,28 +1269,28 @@ struct DisplaceWorker : BlockOps<R, L>
         {
           const double fs = (m[2][k] * bp[q][k] - m[1][k] * bp[3 + q][k]) / divisor;
           const double ft = (m[0][k] * bp[3 + q][k] - m[1][k] * bp[q][k]) / divisor;
-          ps[q][k] = distinct ? fs : 0.0;
-          pt[q][k] = distinct ? ft : 0.0;
+          ps[q][k] = static_cast<R>(distinct ? fs : 0.0);
+          pt[q][k] = static_cast<R>(distinct ? ft : 0.0);
         }
         if (WantN)
         {
           const double fs = (m[2][k] * bn[q][k] - m[1][k] * bn[3 + q][k]) / divisor;
           const double ft = (m[0][k] * bn[3 + q][k] - m[1][k] * bn[q][k]) / divisor;
-          ns[q][k] = spans ? fs : 0.0;
-          nt[q][k] = spans ? ft : 0.0;
+          ns[q][k] = static_cast<R>(spans ? fs : 0.0);
+          nt[q][k] = static_cast<R>(spans ? ft : 0.0);
         }
       }
     }
     const int stride = c.FitStride;
-    double* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    R* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
     if (WantP)
     {
       for (int k = 0; k < count; ++k)
       {
         for (int q = 0; q < 3; ++q)
         {
-          kept[stride * k + q] = ps[q][k];
-          kept[stride * k + 3 + q] = pt[q][k];
+          kept[stride * k + q] = static_cast<R>(ps[q][k]);
+          kept[stride * k + 3 + q] = static_cast<R>(pt[q][k]);
         }
       }
       kept += 6;
@@ -1293,8 +1301,8 @@ struct DisplaceWorker : BlockOps<R, L>
       {
         for (int q = 0; q < 3; ++q)
         {
-          kept[stride * k + q] = ns[q][k];
-          kept[stride * k + 3 + q] = nt[q][k];
+          kept[stride * k + q] = static_cast<R>(ns[q][k]);
+          kept[stride * k + 3 + q] = static_cast<R>(nt[q][k]);
         }
       }
     }
@@ -1984,11 +1992,13 @@ struct vtkDisplacementMapFilter::MeshCache
   bool HaveSigns = false;
 
   // The fitted derivatives (Context::Fits): from the polygons, points, normals and texture
-  // coordinates; Layout says which were fitted (1: P_s and P_t, 2: n_s and n_t).
+  // coordinates; Layout says which were fitted (1: P_s and P_t, 2: n_s and n_t) and in which
+  // type (4: float, in FitsFloat).
   Key FitsKey;
   vtkTimeStamp FitsTime;
   int FitsLayout = 0;
   Buffer<double> Fits;
+  Buffer<float> FitsFloat;
   bool HaveFits = false;
 
   // The polygons' and strips' point ids were found in range: from them and the point count.
@@ -2001,7 +2011,8 @@ struct vtkDisplacementMapFilter::MeshCache
   {
     return sizeof(vtkIdType) * (this->Links.Offsets.size() + this->Links.Links.size()) +
       sizeof(this->Groups[0]) * this->Groups.capacity() +
-      sizeof(double) * (this->FitNormals.size() + this->Fits.size()) + this->Signs.size();
+      sizeof(double) * (this->FitNormals.size() + this->Fits.size()) +
+      sizeof(float) * this->FitsFloat.size() + this->Signs.size();
   }
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
@@ -2385,6 +2396,7 @@ int vtkDisplacementMapFilter::RequestData(
     }
     const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
       (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
+    const int floatFits = std::is_same<R, float>::value ? 4 : 0;
     MeshCache::Key fitsKey = groupsKey;
     fitsKey.Objects[5] = normals;
     fitsKey.Objects[6] = tcoords;
@@ -2393,16 +2405,36 @@ int vtkDisplacementMapFilter::RequestData(
     {
       const vtkMTimeType fitsChanged =
         std::max({ groupsChanged, pointDataChanged, normals->GetMTime(), tcoords->GetMTime() });
-      ctx.FitsKnown = cache.HaveFits && cache.FitsLayout == fitsLayout &&
+      ctx.FitsKnown = cache.HaveFits && cache.FitsLayout == (fitsLayout | floatFits) &&
         MeshCache::Fresh(cache.FitsKey, fitsKey, fitsChanged, cache.FitsTime);
       ctx.FitStride = ((fitsLayout & 1) ? 6 : 0) + ((fitsLayout & 2) ? 6 : 0);
+      auto& fits = [&]() -> Buffer<R>&
+      {
+        if constexpr (std::is_same<R, float>::value)
+        {
+          return cache.FitsFloat;
+        }
+        else
+        {
+          return cache.Fits;
+        }
+      }();
       if (!ctx.FitsKnown)
       {
         cache.HaveFits = false;
-        cache.Fits.Resize(static_cast<size_t>(ctx.FitStride) * numPts);
+        // Only one of the two types is kept.
+        if constexpr (std::is_same<R, float>::value)
+        {
+          cache.Fits.Free();
+        }
+        else
+        {
+          cache.FitsFloat.Free();
+        }
+        fits.Resize(static_cast<size_t>(ctx.FitStride) * numPts);
         keepFits = true;
       }
-      ctx.Fits = cache.Fits.data();
+      ctx.Fits = fits.data();
     }
     // Coincident points (seams, poles; from the input points alone) as groups of (representative,
     // member) in increasing order, so that every sum over a group has one order whatever the thread
@@ -2594,7 +2626,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (keepFits)
     {
       cache.FitsKey = fitsKey;
-      cache.FitsLayout = fitsLayout;
+      cache.FitsLayout = fitsLayout | floatFits;
       cache.FitsTime.Modified();
       cache.HaveFits = true;
     }
