@@ -477,21 +477,39 @@ TEST(DisplacementMapFilter, BowtieSeamPointMerges)
 TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
 {
   const Surface s = Torus();
-  auto mesh = MakeMesh(s, 96, 48, false);
   auto image = MakeHeightImage(s.Height, 128, 64);
-  for (int mode : AllModes)
+  // Double arrays, and float ones (float lanes, whose flagged points are redone in double lanes):
+  // a mesh big enough to be split between threads, with points that are redone (a zero and a
+  // NaN normal, a tangent along the normal) near the start and the middle.
+  for (bool floatPoints : { false, true })
   {
-    vtkSMPTools::Initialize(1);
-    auto one = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
-    vtkSMPTools::Initialize(2);
-    ASSERT_EQ(vtkSMPTools::GetEstimatedNumberOfThreads(), 2);
-    auto two = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
-    EXPECT_TRUE(SameBits(one->GetPoints()->GetData(), two->GetPoints()->GetData())) << mode;
-    EXPECT_TRUE(SameBits(one->GetPointData()->GetNormals(), two->GetPointData()->GetNormals()))
-      << mode;
-    EXPECT_TRUE(SameBits(
-      one->GetPointData()->GetArray("Tangents"), two->GetPointData()->GetArray("Tangents")))
-      << mode;
+    auto mesh = MakeMesh(s, 256, 128, false, floatPoints);
+    vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+    vtkDataArray* tangents = mesh->GetPointData()->GetArray("Tangents");
+    const vtkIdType middle = mesh->GetNumberOfPoints() / 2;
+    normals->SetTuple3(5, 0.0, 0.0, 0.0);
+    normals->SetTuple3(middle, std::nan(""), 0.0, 1.0);
+    double n[3];
+    normals->GetTuple(middle + 1, n);
+    tangents->SetTuple4(middle + 1, n[0], n[1], n[2], 1.0);
+    for (int mode : AllModes)
+    {
+      vtkSMPTools::Initialize(1);
+      auto one = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+      vtkSMPTools::Initialize(2);
+      ASSERT_EQ(vtkSMPTools::GetEstimatedNumberOfThreads(), 2);
+      auto two = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+      EXPECT_TRUE(SameBits(one->GetPoints()->GetData(), two->GetPoints()->GetData()))
+        << mode << " " << floatPoints;
+      EXPECT_TRUE(SameBits(one->GetPointData()->GetNormals(), two->GetPointData()->GetNormals()))
+        << mode << " " << floatPoints;
+      EXPECT_TRUE(SameBits(
+        one->GetPointData()->GetArray("Tangents"), two->GetPointData()->GetArray("Tangents")))
+        << mode << " " << floatPoints;
+      // (None passes the NaN normal through.)
+      EXPECT_TRUE(mode == vtkDisplacementMapFilter::None || AllFinite(one))
+        << mode << " " << floatPoints;
+    }
   }
   // Back to every core (VTK 9.1 keeps 1 thread on Initialize(0) after Initialize(1)).
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
