@@ -800,7 +800,7 @@ VTK_ALWAYS_INLINE bool UnitLaneFloat(float& x, float& y, float& z)
 // precision anyway, and what needs more stays in double (texture coordinates and height samples,
 // whose texel positions in a big map need more than float's 24 bits; the fits' sums, which
 // cancel; Mesh's polygon normals). Float's range and precision are short for some points: the
-// steps flag them in Redo (a value beyond 2^32, a length outside [2^-50, 2^50], derivatives within
+// steps flag them (Flags: a value beyond 2^32, a length outside [2^-50, 2^50], derivatives within
 // 0.6 degrees of parallel, a tangent or a new normal that mostly cancels), and the workers redo
 // those points, one by one, with double lanes. Every flag depends on the point alone, so that
 // the results never depend on the blocks (on the threads).
