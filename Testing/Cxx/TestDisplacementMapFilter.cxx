@@ -1496,3 +1496,179 @@ TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
     EXPECT_NE(os.str().find(key), std::string::npos) << key;
   }
 }
+
+namespace
+{
+// A copy of @a mesh with its points and point arrays multiplied: coordinates and dPdu/dPdv by
+// @a f, texture coordinates by @a g; in float or double.
+vtkSmartPointer<vtkPolyData> Rescaled(vtkPolyData* mesh, double f, double g, bool floatArrays)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->CopyStructure(mesh);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(floatArrays ? VTK_FLOAT : VTK_DOUBLE);
+  points->SetNumberOfPoints(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    points->SetPoint(i, f * p[0], f * p[1], f * p[2]);
+  }
+  out->SetPoints(points);
+  vtkPointData* in = mesh->GetPointData();
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* src = in->GetArray(a);
+    vtkSmartPointer<vtkDataArray> dst;
+    if (floatArrays)
+    {
+      dst = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    else
+    {
+      dst = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    dst->SetName(src->GetName());
+    dst->SetNumberOfComponents(src->GetNumberOfComponents());
+    dst->SetNumberOfTuples(src->GetNumberOfTuples());
+    const std::string name = src->GetName();
+    const double by = (name == "dPdu" || name == "dPdv") ? f : (name == "TCoords" ? g : 1.0);
+    for (vtkIdType i = 0; i < src->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < src->GetNumberOfComponents(); ++c)
+      {
+        dst->SetComponent(i, c, by * src->GetComponent(i, c));
+      }
+    }
+    if (src == in->GetNormals())
+    {
+      out->GetPointData()->SetNormals(dst);
+    }
+    else if (src == in->GetTCoords())
+    {
+      out->GetPointData()->SetTCoords(dst);
+    }
+    else
+    {
+      out->GetPointData()->AddArray(dst);
+    }
+  }
+  return out;
+}
+
+// Finite points, unit normals and unit tangents; the largest angle between the normals of
+// @a a and @a b.
+double CheckAndCompare(vtkPolyData* a, vtkPolyData* b, const std::string& what)
+{
+  double worst = 0.0;
+  for (vtkPolyData* out : { a, b })
+  {
+    EXPECT_TRUE(AllFinite(out)) << what;
+    vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double n[3], x[4];
+      out->GetPointData()->GetNormals()->GetTuple(i, n);
+      t->GetTuple(i, x);
+      const double nl = vtkMath::Norm(n), tl = vtkMath::Norm(x);
+      if (!(std::abs(nl - 1.0) < 1e-5) || !(std::abs(tl - 1.0) < 1e-5))
+      {
+        ADD_FAILURE() << what << " point " << i << " |n| " << nl << " |t| " << tl;
+        return 1e300;
+      }
+    }
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double na[3], nb[3];
+    a->GetPointData()->GetNormals()->GetTuple(i, na);
+    b->GetPointData()->GetNormals()->GetTuple(i, nb);
+    double c[3];
+    vtkMath::Cross(na, nb, c);
+    worst = std::max(worst, std::atan2(vtkMath::Norm(c), vtkMath::Dot(na, nb)));
+  }
+  return worst;
+}
+} // namespace
+
+// Float arrays go through float lanes, whose range and precision are short at extreme scales:
+// the points they cannot take must be redone in double. Whatever the scale of the coordinates
+// (with heights scaled alike), the normals of float arrays stay within float's error of those of
+// the same mesh in double arrays, and everything stays finite and unit.
+TEST(DisplacementMapFilter, FloatArraysAtExtremeScalesAgreeWithDouble)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  for (bool derivatives : { false, true })
+  {
+    auto mesh = MakeMesh(s, 48, 24, derivatives);
+    for (double f : { 1.0, 1e-30, 1e-18, 1e-12, 1e-6, 1e6, 1e12, 1e18, 1e30, 1e36 })
+    {
+      auto d = Rescaled(mesh, f, 1.0, false), fl = Rescaled(mesh, f, 1.0, true);
+      for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
+             vtkDisplacementMapFilter::Mesh })
+      {
+        auto outD = Displace(d, image, mode, 0.1 * f, 0.5, vtkDisplacementMapFilter::Cubic);
+        auto outF = Displace(fl, image, mode, 0.1 * f, 0.5, vtkDisplacementMapFilter::Cubic);
+        std::ostringstream what;
+        what << "f " << f << " mode " << mode << " derivatives " << derivatives;
+        const double angle = CheckAndCompare(outD, outF, what.str());
+        EXPECT_LT(angle, 2e-5) << what.str();
+      }
+    }
+  }
+}
+
+// Float arrays whose fitted derivatives leave float's range (huge coordinates over texture
+// coordinates that barely change), or vanish (every point at one texture coordinate), or whose
+// heights are NaN or infinite: everything stays finite and unit.
+TEST(DisplacementMapFilter, FloatArraysAdversarialStayFinite)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  auto bad = MakeHeightImage(s.Height, 64, 32);
+  auto* h = static_cast<double*>(bad->GetScalarPointer());
+  for (int k = 0; k < 64 * 32; k += 7)
+  {
+    h[k] = k % 2 ? std::nan("") : std::numeric_limits<double>::infinity();
+  }
+  auto mesh = MakeMesh(s, 48, 24, false);
+  struct Case
+  {
+    double f, g;
+  };
+  for (const Case& c : { Case{ 1e33, 1e-6 }, Case{ 1e36, 1e-3 }, Case{ 1e-30, 1e6 },
+         Case{ 1.0, 0.0 }, Case{ 1e30, 0.0 } })
+  {
+    auto d = Rescaled(mesh, c.f, c.g, false), fl = Rescaled(mesh, c.f, c.g, true);
+    for (vtkImageData* im : { image.Get(), bad.Get() })
+    {
+      for (double scale : { 0.1 * c.f, 1e30, 1e38 })
+      {
+        for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
+               vtkDisplacementMapFilter::Mesh })
+        {
+          std::ostringstream what;
+          what << "f " << c.f << " g " << c.g << " scale " << scale << " mode " << mode
+               << (im == bad ? " bad heights" : "");
+          auto run = [&](vtkPolyData* mesh)
+          {
+            vtkNew<vtkDisplacementMapFilter> filter;
+            auto obs = Watch(filter);
+            filter->SetInputData(0, mesh);
+            filter->SetInputData(1, im);
+            filter->SetNormalMode(mode);
+            filter->SetScale(scale);
+            filter->SetInterpolation(vtkDisplacementMapFilter::Cubic);
+            filter->Update();
+            EXPECT_EQ(obs->Errors, 0) << what.str();
+            auto out = vtkSmartPointer<vtkPolyData>::New();
+            out->DeepCopy(filter->GetOutput());
+            return out;
+          };
+          CheckAndCompare(run(d), run(fl), what.str());
+        }
+      }
+    }
+  }
+}
