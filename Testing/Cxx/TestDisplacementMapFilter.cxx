@@ -811,6 +811,14 @@ TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
           tangents->DeepCopy(mesh->GetPointData()->GetArray("Tangents"));
           mesh->GetPointData()->AddArray(tangents);
         });
+      // Back to float: the fits kept in double must not be taken for float ones.
+      ExpectFreshAfter(f, "double input made float again by a float tangent array",
+        [&]()
+        {
+          vtkNew<vtkFloatArray> tangents;
+          tangents->DeepCopy(mesh->GetPointData()->GetArray("Tangents"));
+          mesh->GetPointData()->AddArray(tangents);
+        });
     }
     ExpectFreshAfter(f, "another thread count",
       [&]()
