@@ -366,14 +366,21 @@ TEST(DisplacementMapFilter, SeamsAndPolesAreWatertight)
     }
     return differing;
   };
-  for (int wrap : { vtkDisplacementMapFilter::Repeat, vtkDisplacementMapFilter::ClampToEdge })
+  // Float arrays too: their float lanes redo some points in double lanes, the seam twins not
+  // necessarily alike (their fits differ).
+  for (bool floatPoints : { false, true })
   {
-    for (int mode : AllModes)
+    mesh = MakeMesh(s, 24, 16, false, floatPoints);
+    for (int wrap : { vtkDisplacementMapFilter::Repeat, vtkDisplacementMapFilter::ClampToEdge })
     {
-      SCOPED_TRACE(std::string("mode ") + std::to_string(mode) + " wrap " + std::to_string(wrap));
-      auto out = Displace(mesh, image, mode, 0.2, 0.5, vtkDisplacementMapFilter::Cubic, wrap);
-      check(out, mode != vtkDisplacementMapFilter::None, true);
-      EXPECT_TRUE(AllFinite(out));
+      for (int mode : AllModes)
+      {
+        SCOPED_TRACE(std::string("mode ") + std::to_string(mode) + " wrap " + std::to_string(wrap) +
+          (floatPoints ? " float" : " double"));
+        auto out = Displace(mesh, image, mode, 0.2, 0.5, vtkDisplacementMapFilter::Cubic, wrap);
+        check(out, mode != vtkDisplacementMapFilter::None, true);
+        EXPECT_TRUE(AllFinite(out));
+      }
     }
   }
   // The same with MergeSeams off shows cracks: the test can fail.
