@@ -1653,7 +1653,7 @@ TEST(DisplacementMapFilter, FloatArraysAdversarialStayFinite)
     double f, g;
   };
   for (const Case& c : { Case{ 1e33, 1e-6 }, Case{ 1e36, 1e-3 }, Case{ 1e-30, 1e6 },
-         Case{ 1.0, 0.0 }, Case{ 1e30, 0.0 } })
+         Case{ 1.0, 0.0 }, Case{ 1e30, 0.0 }, Case{ 1.0, 1e-40 }, Case{ 1e-30, 1e-40 } })
   {
     auto d = Rescaled(mesh, c.f, c.g, false), fl = Rescaled(mesh, c.f, c.g, true);
     for (vtkImageData* im : { image.Get(), bad.Get() })
