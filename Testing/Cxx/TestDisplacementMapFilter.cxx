@@ -11,6 +11,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -1709,6 +1710,101 @@ TEST(DisplacementMapFilter, FloatArraysAgreeWithDoubleAtLargeScale)
         auto outD = Displace(d, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
         auto outF = Displace(fl, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
         EXPECT_LT(CheckAndCompare(outD, outF, what.str()), 2e-5) << what.str();
+      }
+    }
+  }
+}
+
+// Each point's result depends on its own data and neighbours alone, not on where it falls in a
+// block of the lanes (nor on the block's other points, some of them redone in double lanes): one
+// unused point put first shifts every point by one lane, and the outputs shift with it, bit for
+// bit, in float and double arrays.
+TEST(DisplacementMapFilter, ResultsDoNotDependOnBlockPosition)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  for (bool floatPoints : { false, true })
+  {
+    for (bool derivatives : { false, true })
+    {
+      auto mesh = MakeMesh(s, 96, 48, derivatives, floatPoints);
+      vtkPointData* pd = mesh->GetPointData();
+      // Points that float lanes redo: a zero normal, a tangent along the normal.
+      pd->GetNormals()->SetTuple3(70, 0.0, 0.0, 0.0);
+      double n[3];
+      pd->GetNormals()->GetTuple(200, n);
+      pd->GetArray("Tangents")->SetTuple4(200, n[0], n[1], n[2], 1.0);
+      const vtkIdType count = mesh->GetNumberOfPoints();
+      auto shifted = vtkSmartPointer<vtkPolyData>::New();
+      vtkNew<vtkPoints> points;
+      points->SetDataType(mesh->GetPoints()->GetDataType());
+      points->SetNumberOfPoints(count + 1);
+      points->SetPoint(0, 5.0, 5.0, 5.0);
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        points->SetPoint(i + 1, mesh->GetPoint(i));
+      }
+      shifted->SetPoints(points);
+      for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+      {
+        vtkDataArray* src = pd->GetArray(a);
+        vtkSmartPointer<vtkDataArray> dst;
+        dst.TakeReference(src->NewInstance());
+        dst->SetName(src->GetName());
+        dst->SetNumberOfComponents(src->GetNumberOfComponents());
+        dst->SetNumberOfTuples(count + 1);
+        dst->SetTuple(0, 0, src);
+        for (vtkIdType i = 0; i < count; ++i)
+        {
+          dst->SetTuple(i + 1, i, src);
+        }
+        if (src == pd->GetNormals())
+        {
+          shifted->GetPointData()->SetNormals(dst);
+        }
+        else if (src == pd->GetTCoords())
+        {
+          shifted->GetPointData()->SetTCoords(dst);
+        }
+        else
+        {
+          shifted->GetPointData()->AddArray(dst);
+        }
+      }
+      vtkNew<vtkCellArray> polys;
+      vtkNew<vtkIdList> ids;
+      for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+      {
+        mesh->GetCellPoints(c, ids);
+        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        {
+          ids->SetId(k, ids->GetId(k) + 1);
+        }
+        polys->InsertNextCell(ids);
+      }
+      shifted->SetPolys(polys);
+      for (int mode : AllModes)
+      {
+        auto a = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+        auto b = Displace(shifted, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
+        for (const char* name : { "", "Normals", "Tangents" })
+        {
+          vtkDataArray* x = *name ? a->GetPointData()->GetArray(name) : a->GetPoints()->GetData();
+          vtkDataArray* y = *name ? b->GetPointData()->GetArray(name) : b->GetPoints()->GetData();
+          if (!*name || mode != vtkDisplacementMapFilter::None)
+          {
+            ASSERT_TRUE(x && y) << name << " mode " << mode;
+          }
+          if (!x || !y)
+          {
+            continue;
+          }
+          const int nc = x->GetNumberOfComponents();
+          const size_t bytes = static_cast<size_t>(x->GetDataTypeSize()) * nc;
+          EXPECT_EQ(0, std::memcmp(x->GetVoidPointer(0), y->GetVoidPointer(nc), bytes * count))
+            << (*name ? name : "Points") << " mode " << mode << " float " << floatPoints
+            << " derivatives " << derivatives;
+        }
       }
     }
   }
