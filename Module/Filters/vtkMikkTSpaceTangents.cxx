@@ -2688,15 +2688,16 @@ private:
     int ok = 1;
     for (int j = 0; j < nv; ++j)
     {
-      const double r0[3] = { fb.R[0][j], fb.R[1][j], fb.R[2][j] };
-      const double r1[3] = { fb.R[3][j], fb.R[4][j], fb.R[5][j] };
+      // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
+      const Real r0[3] = { Real(fb.R[0][j]), Real(fb.R[1][j]), Real(fb.R[2][j]) };
+      const Real r1[3] = { Real(fb.R[3][j]), Real(fb.R[4][j]), Real(fb.R[5][j]) };
       Real sum[3] = { 0, 0, 0 };
       for (int c = fb.First[j]; c < fb.First[j + 1]; ++c)
       {
         const auto& d = dir[fb.Triangle[c]];
-        const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
-        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > FastCos;
-        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > FastCos;
+        const Real os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
+        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > Real(FastCos);
+        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > Real(FastCos);
         sum[0] += fb.WeightedOs[0][c];
         sum[1] += fb.WeightedOs[1][c];
         sum[2] += fb.WeightedOs[2][c];
