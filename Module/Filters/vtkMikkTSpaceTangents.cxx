@@ -2577,9 +2577,9 @@ private:
     constexpr bool Single = std::is_same<Real, float>::value;
     constexpr int Lanes = FanBlock<Real>::Lanes;
     const int nc = (fb.NumberOfCorners + Lanes - 1) & ~(Lanes - 1);
-    for (int c = fb.NumberOfCorners; c < nc; ++c)
+    const int last = fb.NumberOfCorners - 1;
+    for (int c = last + 1; c < nc; ++c)
     {
-      const int last = fb.NumberOfCorners - 1;
       fb.Triangle[c] = fb.Triangle[last];
       fb.Self[c] = fb.Self[last];
       fb.Next[c] = fb.Next[last];
