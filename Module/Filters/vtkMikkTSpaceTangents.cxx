@@ -2620,14 +2620,18 @@ private:
       {
         // The general path normalises a projected edge only when some component is above
         // FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer than
-        // 2^-50, and (as the float rounding of l - n^2 is ~1e-7 l) its squared length
-        // above 1e-4 of the edge's (the edge 0.57 degrees or more off the normal), so that
-        // it is that long in the general path's double arithmetic too, and the angle
-        // keeps the reference's single-precision accuracy. dP/ds is projected explicitly:
-        // d.d - (d.n)^2 would lose the length of a short projection to cancellation.
-        projected = (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 1e-4f * l1) & (pl2 > 1e-4f * l2);
+        // 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
+        // edges' lengths, so the angle between projected edges keeps the general path's
+        // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
+        // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
+        // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
+        // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
+        // longer than 0.1: the general path projects it in double.
         const Real px = osx - on * nx[c], py = osy - on * ny[c], pz = osz - on * nz[c];
-        osLength = std::sqrt(px * px + py * py + pz * pz);
+        const Real pos2 = px * px + py * py + pz * pz;
+        projected =
+          (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) & (pos2 > 1e-2f);
+        osLength = std::sqrt(pos2);
       }
       else
       {
