@@ -31,8 +31,13 @@
 #include <unistd.h> // getpid
 #endif
 
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+#include <xmmintrin.h> // _mm_getcsr
+#endif
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -864,6 +869,41 @@ TEST(vtkMikkTSpaceTangents, FastPathInSinglePrecisionAgreesOnAdversarialMeshes)
       });
     ExpectFastPathIsGeneralPath(sliver, "slivers");
   }
+}
+
+// The fast path flushes subnormals to zero (x86: MXCSR's FTZ and DAZ) while it weighs the
+// corners of float meshes, on whichever threads run it: afterwards neither the caller's
+// thread nor the pool's may keep that mode, or other work on them would silently lose
+// its subnormals.
+TEST(vtkMikkTSpaceTangents, FlushToZeroDoesNotOutliveTheFilter)
+{
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+  constexpr unsigned int FlushBits = 0x8040u; // FTZ | DAZ
+  auto torus = MakeTorus(120, 60);
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    const unsigned int before = _mm_getcsr();
+    FilterRun run(torus);
+    EXPECT_EQ(_mm_getcsr() & FlushBits, before & FlushBits) << threads << " threads";
+    std::atomic<int> flushing(0);
+    vtkSMPTools::For(0, 64, 1,
+      [&](vtkIdType, vtkIdType)
+      {
+        if (_mm_getcsr() & FlushBits)
+        {
+          ++flushing;
+        }
+      });
+    EXPECT_EQ(flushing.load(), 0) << threads << " threads";
+    volatile float tiny = 1e-38f;
+    EXPECT_GT(tiny * 0.01f, 0.0f) << "subnormal results flushed after the filter";
+    ExpectValidFrames(run.Output());
+  }
+  vtkSMPTools::Initialize(0);
+#else
+  GTEST_SKIP() << "no MXCSR";
+#endif
 }
 
 // vtkParametricSurfaceSource's analytic frames (T = dP/ds made orthogonal to N, w from
