@@ -44,7 +44,7 @@
 #include <utility>
 #include <vector>
 
-#if defined(__SSE__) || defined(__x86_64__)
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
 #include <xmmintrin.h>
 #endif
 
@@ -1351,7 +1351,7 @@ class FlushSubnormals
 public:
   explicit FlushSubnormals(bool enable)
   {
-#if defined(__SSE__) || defined(__x86_64__)
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
     this->Saved = _mm_getcsr();
     if (enable)
     {
@@ -1363,7 +1363,7 @@ public:
   }
   ~FlushSubnormals()
   {
-#if defined(__SSE__) || defined(__x86_64__)
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
     _mm_setcsr(this->Saved);
 #endif
   }
