@@ -793,7 +793,7 @@ TEST(vtkMikkTSpaceTangents, FastPathInSinglePrecisionAgreesOnAdversarialMeshes)
 
   // Subnormal components (1e-39 .. 1e-45) in the points, normals and texture coordinates of
   // a bumpy plane, where they stand for zeros: in its height, the normals' tilt, and the
-  // texture coordinates of the first row and column.
+  // texture coordinates of its corner (0, 0).
   {
     auto plane = MakeGrid(8, 8,
       [](double u, double v)
@@ -802,7 +802,8 @@ TEST(vtkMikkTSpaceTangents, FastPathInSinglePrecisionAgreesOnAdversarialMeshes)
         const bool flat = u < 0.3 || v < 0.3;
         return Sample{ { 2 * u - 1, 2 * v - 1, flat ? tiny : 0.1 * (u - 0.3) * (v - 0.3) },
           Normalized({ flat ? tiny : -0.05 * (v - 0.3), flat ? -tiny : -0.05 * (u - 0.3), 1.0 }),
-          { u == 0 ? tiny : u + 0.3 * v * v, v == 0 ? -tiny : v - 0.2 * u } };
+          { u + 0.3 * v * v + (u + v == 0 ? 1e-39 : 0.0),
+            v - 0.2 * u - (u + v == 0 ? 3e-41 : 0.0) } };
       });
     ExpectFastPathIsGeneralPath(plane, "plane with subnormal components");
     FilterRun run(plane);
