@@ -44,6 +44,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
+
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
 
 namespace
@@ -1313,26 +1317,62 @@ private:
 // decisions wherever the fast one finishes.
 
 // The angle between two plane vectors whose dot product is c and the absolute value of
-// whose cross product is s, as atan2(s, c) with an absolute error below 1.2e-8 rad: atan on
-// [0, 1] is q times a degree-8 polynomial in q^2 (a Chebyshev fit of atan(q)/q). Unlike
-// acos of normalised vectors it needs no square root, and it stays accurate near 0 and pi;
-// as a corner weight its relative error is far below what the reference's single
-// precision leaves. Inlined and free of branches, so that loops over it vectorise.
-[[gnu::always_inline]] inline double FastAngle(double s, double c)
+// whose cross product is s, as atan2(s, c) with an absolute error below 1.2e-8 rad in
+// double (in float, a few units of its last place more): atan on [0, 1] is q times a
+// degree-8 polynomial in q^2 (a Chebyshev fit of atan(q)/q). Unlike acos of normalised
+// vectors it needs no square root, and it stays accurate near 0 and pi; as a corner weight
+// its relative error is far below what the reference's single precision leaves. Inlined
+// and free of branches, so that loops over it vectorise.
+template <typename Real>
+[[gnu::always_inline]] inline Real FastAngle(Real s, Real c)
 {
-  const double ac = std::abs(c);
+  const Real ac = std::abs(c);
   const bool steep = s > ac;
-  const double q = (steep ? ac : s) / (steep ? s : ac);
-  const double u = q * q, u2 = u * u, u4 = u2 * u2;
-  const double p01 = 0.9999999842426364 - 0.3333306678069164 * u;
-  const double p23 = 0.1999248357850966 - 0.1420257051178519 * u;
-  const double p45 = 0.1063675409849997 - 0.07495445444194075 * u;
-  const double p67 = 0.04258760747628684 - 0.016005030510568757 * u;
-  const double p = (p01 + p23 * u2) + (p45 + p67 * u2) * u4 + 0.002834064300823229 * (u4 * u4);
-  double r = q * p;
-  r = steep ? 0.5 * vtkMath::Pi() - r : r;
-  return c < 0.0 ? vtkMath::Pi() - r : r;
+  const Real q = (steep ? ac : s) / (steep ? s : ac);
+  const Real u = q * q, u2 = u * u, u4 = u2 * u2;
+  const Real p01 = Real(0.9999999842426364) - Real(0.3333306678069164) * u;
+  const Real p23 = Real(0.1999248357850966) - Real(0.1420257051178519) * u;
+  const Real p45 = Real(0.1063675409849997) - Real(0.07495445444194075) * u;
+  const Real p67 = Real(0.04258760747628684) - Real(0.016005030510568757) * u;
+  const Real p = (p01 + p23 * u2) + (p45 + p67 * u2) * u4 + Real(0.002834064300823229) * (u4 * u4);
+  Real r = q * p;
+  r = steep ? Real(0.5 * vtkMath::Pi()) - r : r;
+  return c < Real(0) ? Real(vtkMath::Pi()) - r : r;
 }
+
+// While it lives, this thread's floating-point arithmetic flushes subnormal results and
+// operands to zero (x86: MXCSR's FTZ and DAZ bits; elsewhere nothing). In float, squares
+// and products of tiny components (a direction's 1e-20 part) are subnormal, and each such
+// operation takes a slow microcode path (10% of the filter's cycles on the 1M torus); the
+// values flushed are below 1.2e-38, far under the rounding of the sums they enter. Every
+// instruction set build runs under the same mode, so they keep giving the same bits.
+class FlushSubnormals
+{
+public:
+  explicit FlushSubnormals(bool enable)
+  {
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+    this->Saved = _mm_getcsr();
+    if (enable)
+    {
+      _mm_setcsr(this->Saved | 0x8040u); // FTZ | DAZ
+    }
+#else
+    (void)enable;
+#endif
+  }
+  ~FlushSubnormals()
+  {
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+    _mm_setcsr(this->Saved);
+#endif
+  }
+  FlushSubnormals(const FlushSubnormals&) = delete;
+  FlushSubnormals& operator=(const FlushSubnormals&) = delete;
+
+private:
+  unsigned int Saved = 0;
+};
 
 inline void PrefetchForWrite(const void* p)
 {
@@ -1633,11 +1673,15 @@ constexpr double FastCos = 1e-3;
 
 // The fans of a run of vertices are done in blocks, in three phases: checking each fan and
 // listing its corners, weighing all the block's corners in one loop of plain arithmetic
-// (which the compiler vectorises), and summing each fan.
+// (which the compiler vectorises), and summing each fan. Real: the corner loop's precision.
+template <typename Real>
 struct FanBlock
 {
   static constexpr int MaxVertices = 128;
   static constexpr int MaxCorners = 512;
+  // The corner loop runs to a multiple of this, on copies of the last corner: a remainder
+  // would run in narrower vectors and scalar code, which cost as much as many full vectors.
+  static constexpr int Lanes = 16;
   static_assert(MaxCorners >= MaxFastFan, "a fan fits in a block");
   int NumberOfVertices = 0;
   int NumberOfCorners = 0;
@@ -1656,17 +1700,21 @@ struct FanBlock
   // Per corner: its triangle, the point ids of the corner and of its next and previous
   // corners (times 3: offsets of their coordinates), its vertex's unit normal, its weighted
   // dP/ds.
-  alignas(32) std::int32_t Triangle[MaxCorners];
-  alignas(32) std::int32_t Self[MaxCorners];
-  alignas(32) std::int32_t Next[MaxCorners];
-  alignas(32) std::int32_t Prev[MaxCorners];
-  alignas(32) double N[3][MaxCorners];
-  alignas(32) double WeightedOs[3][MaxCorners];
+  alignas(64) std::int32_t Triangle[MaxCorners + Lanes];
+  alignas(64) std::int32_t Self[MaxCorners + Lanes];
+  alignas(64) std::int32_t Next[MaxCorners + Lanes];
+  alignas(64) std::int32_t Prev[MaxCorners + Lanes];
+  alignas(64) Real N[3][MaxCorners + Lanes];
+  alignas(64) Real WeightedOs[3][MaxCorners + Lanes];
 };
 
 template <typename PT, typename NT, typename TT>
 class FastMikk
 {
+  // The corners are weighed in the precision of the points: in single precision for float
+  // points (sixteen lanes to an AVX-512 vector, no conversions), as the reference does.
+  using Real = std::conditional_t<std::is_same<PT, float>::value, float, double>;
+
 public:
   FastMikk(const PT* p, const NT* n, const TT* t, int tcStride, vtkIdType nPts)
     : P(p)
@@ -2326,6 +2374,7 @@ private:
         {
           return;
         }
+        const FlushSubnormals flush(std::is_same<Real, float>::value);
         const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
           ? FansAVX512(*this, std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
               first, corners, weld, out)
@@ -2426,21 +2475,21 @@ private:
     const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
     float* out) const
   {
-    std::unique_ptr<FanBlock> block(new FanBlock);
-    FanBlock& fb = *block;
+    std::unique_ptr<FanBlock<Real>> block(new FanBlock<Real>);
+    FanBlock<Real>& fb = *block;
     for (std::int32_t v = b; v < e;)
     {
       fb.NumberOfVertices = 0;
       fb.NumberOfCorners = 0;
       fb.First[0] = 0;
-      for (; v < e && fb.NumberOfVertices < FanBlock::MaxVertices; ++v)
+      for (; v < e && fb.NumberOfVertices < FanBlock<Real>::MaxVertices; ++v)
       {
         if (this->Welded && weld[v] != v)
         {
           continue; // a copy of a smaller point, filled later
         }
         const int k = first[v + 1] - first[v];
-        if (k > FanBlock::MaxCorners - fb.NumberOfCorners)
+        if (k > FanBlock<Real>::MaxCorners - fb.NumberOfCorners)
         {
           break;
         }
@@ -2465,7 +2514,7 @@ private:
   template <bool Wide>
   VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, FanBlock& fb, float* out) const
+    const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
   {
     const double* u = this->UnitNormals + 3 * std::size_t(v);
     const V3 n{ u[0], u[1], u[2] };
@@ -2507,9 +2556,9 @@ private:
       fb.Self[c] = 3 * v;
       fb.Next[c] = 3 * next[a];
       fb.Prev[c] = 3 * prev[a];
-      fb.N[0][c] = n[0];
-      fb.N[1][c] = n[1];
-      fb.N[2][c] = n[2];
+      fb.N[0][c] = static_cast<Real>(n[0]);
+      fb.N[1][c] = static_cast<Real>(n[1]);
+      fb.N[2][c] = static_cast<Real>(n[2]);
     }
     fb.Handedness[fb.NumberOfVertices] = o != 0 ? 1.0f : -1.0f;
     fb.Vertex[fb.NumberOfVertices++] = v;
@@ -2523,41 +2572,77 @@ private:
   // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
   // One loop over the block's corners, which the compiler vectorises (with gathers in the
   // AVX2 build).
-  VTK_ALWAYS_INLINE void WeighCorners(FanBlock& fb, const std::array<float, 6>* dir) const
+  VTK_ALWAYS_INLINE void WeighCorners(FanBlock<Real>& fb, const std::array<float, 6>* dir) const
   {
-    const int nc = fb.NumberOfCorners;
+    constexpr bool Single = std::is_same<Real, float>::value;
+    constexpr int Lanes = FanBlock<Real>::Lanes;
+    const int nc = (fb.NumberOfCorners + Lanes - 1) & ~(Lanes - 1);
+    const int last = fb.NumberOfCorners - 1;
+    for (int c = last + 1; c < nc; ++c)
+    {
+      fb.Triangle[c] = fb.Triangle[last];
+      fb.Self[c] = fb.Self[last];
+      fb.Next[c] = fb.Next[last];
+      fb.Prev[c] = fb.Prev[last];
+      fb.N[0][c] = fb.N[0][last];
+      fb.N[1][c] = fb.N[1][last];
+      fb.N[2][c] = fb.N[2][last];
+    }
     const PT* __restrict p = this->P;
     const float* __restrict d = dir[0].data();
     const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
-    const double* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
-    double* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
+    const Real* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
+    Real* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
     for (int c = 0; c < nc; ++c)
     {
       const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
-      const double pv[3] = { double(p[x0]), double(p[x0 + 1]), double(p[x0 + 2]) };
-      const double e1x = double(p[x1]) - pv[0], e1y = double(p[x1 + 1]) - pv[1],
-                   e1z = double(p[x1 + 2]) - pv[2];
-      const double e2x = double(p[x2]) - pv[0], e2y = double(p[x2 + 1]) - pv[1],
-                   e2z = double(p[x2 + 2]) - pv[2];
-      const double osx = d[t], osy = d[t + 1], osz = d[t + 2];
-      const double n1 = e1x * nx[c] + e1y * ny[c] + e1z * nz[c];
-      const double n2 = e2x * nx[c] + e2y * ny[c] + e2z * nz[c];
-      // The general path normalises a projected edge only when some component is above
-      // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
-      // margin of 4), so shorter projections (an edge along the normal) go that way.
-      const double pl1 = e1x * e1x + e1y * e1y + e1z * e1z - n1 * n1;
-      const double pl2 = e2x * e2x + e2y * e2y + e2z * e2z - n2 * n2;
-      const double x = e1y * e2z - e1z * e2y;
-      const double y = e1z * e2x - e1x * e2z;
-      const double z = e1x * e2y - e1y * e2x;
-      const double angle = FastAngle(
+      const Real pv[3] = { Real(p[x0]), Real(p[x0 + 1]), Real(p[x0 + 2]) };
+      const Real e1x = Real(p[x1]) - pv[0], e1y = Real(p[x1 + 1]) - pv[1],
+                 e1z = Real(p[x1 + 2]) - pv[2];
+      const Real e2x = Real(p[x2]) - pv[0], e2y = Real(p[x2 + 1]) - pv[1],
+                 e2z = Real(p[x2 + 2]) - pv[2];
+      const Real osx = d[t], osy = d[t + 1], osz = d[t + 2];
+      const Real n1 = e1x * nx[c] + e1y * ny[c] + e1z * nz[c];
+      const Real n2 = e2x * nx[c] + e2y * ny[c] + e2z * nz[c];
+      const Real l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+      const Real l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+      const Real pl1 = l1 - n1 * n1;
+      const Real pl2 = l2 - n2 * n2;
+      const Real x = e1y * e2z - e1z * e2y;
+      const Real y = e1z * e2x - e1x * e2z;
+      const Real z = e1x * e2y - e1y * e2x;
+      const Real angle = FastAngle<Real>(
         std::abs(x * nx[c] + y * ny[c] + z * nz[c]), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
-      const double on = osx * nx[c] + osy * ny[c] + osz * nz[c];
+      const Real on = osx * nx[c] + osy * ny[c] + osz * nz[c];
+      bool projected;
+      Real osLength;
+      if constexpr (Single)
+      {
+        // The general path normalises a projected edge only when some component is above
+        // FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer than
+        // 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
+        // edges' lengths, so the angle between projected edges keeps the general path's
+        // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
+        // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
+        // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
+        // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
+        // longer than 0.1: the general path projects it in double.
+        const Real px = osx - on * nx[c], py = osy - on * ny[c], pz = osz - on * nz[c];
+        const Real pos2 = px * px + py * py + pz * pz;
+        projected =
+          (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) & (pos2 > 1e-2f);
+        osLength = std::sqrt(pos2);
+      }
+      else
+      {
+        // The general path normalises a projected edge only when some component is above
+        // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+        // margin of 4), so shorter projections (an edge along the normal) go that way.
+        projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
+        osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+      }
       // A failed check makes the weight NaN, which fails the fan's final test.
-      const double weight =
-        (std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN ? angle
-                                                       : std::numeric_limits<double>::quiet_NaN()) /
-        std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+      const Real weight = (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
       wx[c] = weight * osx;
       wy[c] = weight * osy;
       wz[c] = weight * osz;
@@ -2568,7 +2653,7 @@ private:
   // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
   // directions, and with every direction within a quarter turn of these (with a margin),
   // no two are.
-  VTK_ALWAYS_INLINE static void References(FanBlock& fb, const std::array<float, 6>* dir)
+  VTK_ALWAYS_INLINE static void References(FanBlock<Real>& fb, const std::array<float, 6>* dir)
   {
     const int nv = fb.NumberOfVertices;
     const float* __restrict d = dir[0].data();
@@ -2600,21 +2685,23 @@ private:
 
   // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
   // in corner order, then the rest in one loop over the block's vertices.
-  VTK_ALWAYS_INLINE static bool SumFans(FanBlock& fb, const std::array<float, 6>* dir, float* out)
+  VTK_ALWAYS_INLINE static bool SumFans(
+    FanBlock<Real>& fb, const std::array<float, 6>* dir, float* out)
   {
     const int nv = fb.NumberOfVertices;
     int ok = 1;
     for (int j = 0; j < nv; ++j)
     {
-      const double r0[3] = { fb.R[0][j], fb.R[1][j], fb.R[2][j] };
-      const double r1[3] = { fb.R[3][j], fb.R[4][j], fb.R[5][j] };
-      double sum[3] = { 0.0, 0.0, 0.0 };
+      // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
+      const Real r0[3] = { Real(fb.R[0][j]), Real(fb.R[1][j]), Real(fb.R[2][j]) };
+      const Real r1[3] = { Real(fb.R[3][j]), Real(fb.R[4][j]), Real(fb.R[5][j]) };
+      Real sum[3] = { 0, 0, 0 };
       for (int c = fb.First[j]; c < fb.First[j + 1]; ++c)
       {
         const auto& d = dir[fb.Triangle[c]];
-        const double os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
-        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > FastCos;
-        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > FastCos;
+        const Real os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
+        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > Real(FastCos);
+        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > Real(FastCos);
         sum[0] += fb.WeightedOs[0][c];
         sum[1] += fb.WeightedOs[1][c];
         sum[2] += fb.WeightedOs[2][c];

@@ -31,8 +31,13 @@
 #include <unistd.h> // getpid
 #endif
 
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+#include <xmmintrin.h> // _mm_getcsr
+#endif
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -714,6 +719,192 @@ TEST(vtkMikkTSpaceTangents, FastPathOneRunFansOfEverySizeAgreeWithGeneralPath)
       ExpectFastPathIsGeneralPath(FansAroundOrigin(ring, tris), what.c_str());
     }
   }
+}
+
+namespace
+{
+// A copy of a float mesh with every point coordinate times s (the normals and texture
+// coordinates kept).
+vtkSmartPointer<vtkPolyData> ScaledCopy(vtkPolyData* in, double s)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(in);
+  vtkPoints* points = out->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    points->SetPoint(i, s * x[0], s * x[1], s * x[2]);
+  }
+  return out;
+}
+
+// An open fan of k triangles at the tip of a cone of height 1 and radius r, a fifth of it
+// round, the normals nearly along the axis: for a small r, every edge at the tip is nearly
+// along the normal. t runs up the cone and s round it, so that dP/ds (along the triangles'
+// outer edges) lies in the tangent plane, and differs between triangles: the corners'
+// weights matter.
+vtkSmartPointer<vtkPolyData> ConeTip(int k, double r)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetName("Normals");
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetName("TCoords");
+  double n[3] = { 0.011, -0.017, 1.0 };
+  vtkMath::Normalize(n);
+  points->InsertNextPoint(0, 0, 0);
+  normals->InsertNextTuple(n);
+  tcoords->InsertNextTuple2(0.5, 0.0);
+  for (int i = 0; i <= k; ++i)
+  {
+    const double a = 0.4 * vtkMath::Pi() * (i + 0.3 * std::sin(1.7 * i)) / k;
+    points->InsertNextPoint(r * std::cos(a), r * std::sin(a), 1.0 + 0.2 * r * std::sin(2.3 * i));
+    normals->InsertNextTuple(n);
+    tcoords->InsertNextTuple2(double(i) / k + 0.02 * std::sin(3.1 * i), 1.0);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < k; ++i)
+  {
+    const vtkIdType t[3] = { 0, vtkIdType(1 + i), vtkIdType(2 + i) };
+    polys->InsertNextCell(3, t);
+  }
+  return MakeSurface(points, polys, normals, tcoords);
+}
+} // namespace
+
+// The fast path weighs the corners of float meshes in single precision, with subnormals
+// flushed to zero: a float square overflows past 1.8e19 and underflows below 1e-19, a
+// subnormal component reads as zero, and the projection of an edge nearly along the
+// normal cancels. On such meshes it must hand over to the general path or give its frames.
+TEST(vtkMikkTSpaceTangents, FastPathInSinglePrecisionAgreesOnAdversarialMeshes)
+{
+  auto torus = MakeTorus(24, 12);
+  for (double s : { 1e-30, 1e-20, 1e-17, 1e-15, 1e15, 1e18, 1e19, 1e20, 1e30 })
+  {
+    const std::string what = "torus scaled by " + std::to_string(s);
+    auto scaled = ScaledCopy(torus, s);
+    ExpectFastPathIsGeneralPath(scaled, what.c_str());
+    FilterRun run(scaled);
+    ExpectValidFrames(run.Output());
+  }
+
+  // Subnormal components (1e-39 .. 1e-45) in the points, normals and texture coordinates of
+  // a bumpy plane, where they stand for zeros: in its height, the normals' tilt, and the
+  // texture coordinates of its corner (0, 0).
+  {
+    auto plane = MakeGrid(8, 8,
+      [](double u, double v)
+      {
+        const double tiny = 1e-39 * std::sin(40 * u + 17 * v);
+        const bool flat = u < 0.3 || v < 0.3;
+        return Sample{ { 2 * u - 1, 2 * v - 1, flat ? tiny : 0.1 * (u - 0.3) * (v - 0.3) },
+          Normalized({ flat ? tiny : -0.05 * (v - 0.3), flat ? -tiny : -0.05 * (u - 0.3), 1.0 }),
+          { u + 0.3 * v * v + (u + v == 0 ? 1e-39 : 0.0),
+            v - 0.2 * u - (u + v == 0 ? 3e-41 : 0.0) } };
+      });
+    ExpectFastPathIsGeneralPath(plane, "plane with subnormal components");
+    FilterRun run(plane);
+    ExpectValidFrames(run.Output());
+  }
+
+  // Cone tips, ever sharper: edges 45 to 0.6 degrees off the normal. In float, the angle
+  // at the tip cancels (1 - 1e-3 in e1.e2 - (e1.n)(e2.n)); edges 1.8 to 3 degrees off gave
+  // frames up to 1.6e-3 degrees off the general path's.
+  for (double r : { 1.0, 0.6, 0.3, 0.1, 0.05, 0.04, 0.035, 0.03, 0.02, 0.0105 })
+  {
+    for (int k : { 5, 8, 12 })
+    {
+      const std::string what = "cone tip of " + std::to_string(k) + ", radius " + std::to_string(r);
+      ExpectFastPathIsGeneralPath(ConeTip(k, r), what.c_str());
+    }
+  }
+
+  // A flat fan whose vertex normal lies nearly in its plane, along its dP/ds: the
+  // projections of dP/ds onto the tangent plane are short (down to 1e-3), and their float
+  // lengths lose digits (frames 4e-5 degrees off with the normal 0.17 degrees off the plane).
+  for (double delta : { 0.003, 0.01, 0.03, 0.1, 0.3 })
+  {
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkFloatArray> normals;
+    normals->SetNumberOfComponents(3);
+    normals->SetName("Normals");
+    vtkNew<vtkFloatArray> tcoords;
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetName("TCoords");
+    double n[3] = { 1.0, 0.0, delta };
+    vtkMath::Normalize(n);
+    points->InsertNextPoint(0, 0, 0);
+    normals->InsertNextTuple(n);
+    tcoords->InsertNextTuple2(0.5, 0.5);
+    const int k = 4;
+    for (int i = 0; i < k; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * (i + 0.5 + 0.07 * std::sin(2.9 * i)) / k;
+      const double x = (1.0 + 0.3 * std::cos(1.3 * i)) * std::cos(a);
+      const double y = (1.0 + 0.3 * std::cos(1.3 * i)) * std::sin(a);
+      points->InsertNextPoint(x, y, 0.0);
+      normals->InsertNextTuple3(0, 0, 1);
+      tcoords->InsertNextTuple2(
+        0.5 + 0.4 * x, 0.5 + 0.4 * y + 0.09 * (0.5 + 0.5 * std::sin(4.1 * i)));
+    }
+    vtkNew<vtkCellArray> polys;
+    for (int i = 0; i < k; ++i)
+    {
+      const vtkIdType t[3] = { 0, vtkIdType(1 + i), vtkIdType(1 + (i + 1) % k) };
+      polys->InsertNextCell(3, t);
+    }
+    const std::string what = "normal " + std::to_string(delta) + " off the plane";
+    ExpectFastPathIsGeneralPath(MakeSurface(points, polys, normals, tcoords), what.c_str());
+  }
+
+  // Slivers: a grid 1e4 times longer than wide.
+  {
+    auto sliver = MakeGrid(6, 6,
+      [](double u, double v)
+      {
+        return Sample{ { 1e4 * u + 0.3 * v, 1e-0 * v + 0.2 * std::sin(5 * u), 0.1 * u * v },
+          { 0.0, 0.0, 1.0 }, { u + 0.1 * v, v + 0.05 * u } };
+      });
+    ExpectFastPathIsGeneralPath(sliver, "slivers");
+  }
+}
+
+// The fast path flushes subnormals to zero (x86: MXCSR's FTZ and DAZ) while it weighs the
+// corners of float meshes, on whichever threads run it: afterwards neither the caller's
+// thread nor the pool's may keep that mode, or other work on them would silently lose
+// its subnormals.
+TEST(vtkMikkTSpaceTangents, FlushToZeroDoesNotOutliveTheFilter)
+{
+#if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
+  constexpr unsigned int FlushBits = 0x8040u; // FTZ | DAZ
+  auto torus = MakeTorus(120, 60);
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    const unsigned int before = _mm_getcsr();
+    FilterRun run(torus);
+    EXPECT_EQ(_mm_getcsr() & FlushBits, before & FlushBits) << threads << " threads";
+    std::atomic<int> flushing(0);
+    vtkSMPTools::For(0, 64, 1,
+      [&](vtkIdType, vtkIdType)
+      {
+        if (_mm_getcsr() & FlushBits)
+        {
+          ++flushing;
+        }
+      });
+    EXPECT_EQ(flushing.load(), 0) << threads << " threads";
+    volatile float tiny = 1e-38f;
+    EXPECT_GT(tiny * 0.01f, 0.0f) << "subnormal results flushed after the filter";
+    ExpectValidFrames(run.Output());
+  }
+  vtkSMPTools::Initialize(0);
+#else
+  GTEST_SKIP() << "no MXCSR";
+#endif
 }
 
 // vtkParametricSurfaceSource's analytic frames (T = dP/ds made orthogonal to N, w from
