@@ -32,13 +32,19 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <unistd.h> // getpid
 
 using namespace DisplacementTest;
 
@@ -1808,4 +1814,89 @@ TEST(DisplacementMapFilter, ResultsDoNotDependOnBlockPosition)
       }
     }
   }
+}
+
+namespace
+{
+// The outputs (points, normals, tangents) of float and double tori, with and without
+// dPdu/dPdv, with points that the float lanes redo in double lanes, in every mode and
+// interpolation, as one byte string.
+std::string AllOutputBytes()
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  std::string bytes;
+  for (bool floatPoints : { false, true })
+  {
+    for (bool derivatives : { false, true })
+    {
+      auto mesh = MakeMesh(s, 96, 48, derivatives, floatPoints);
+      vtkPointData* pd = mesh->GetPointData();
+      pd->GetNormals()->SetTuple3(70, 0.0, 0.0, 0.0);
+      double n[3];
+      pd->GetNormals()->GetTuple(200, n);
+      pd->GetArray("Tangents")->SetTuple4(200, n[0], n[1], n[2], 1.0);
+      for (int mode : AllModes)
+      {
+        for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
+               vtkDisplacementMapFilter::Cubic })
+        {
+          auto out = Displace(mesh, image, mode, 0.1, 0.5, interp);
+          for (vtkDataArray* a : { out->GetPoints()->GetData(), out->GetPointData()->GetNormals(),
+                 out->GetPointData()->GetArray("Tangents") })
+          {
+            if (a)
+            {
+              bytes.append(static_cast<const char*>(a->GetVoidPointer(0)),
+                static_cast<std::size_t>(a->GetNumberOfValues() * a->GetDataTypeSize()));
+            }
+          }
+        }
+      }
+    }
+  }
+  return bytes;
+}
+}
+
+// The AVX-512, AVX2 and baseline builds of the block loops (SURFACEDETAIL_MAX_ISA limits
+// which one runs) give the same bits: each runs in a child process of this program, which
+// writes its outputs to a file.
+TEST(DisplacementMapFilter, SameBitsInEveryBuild)
+{
+  if (const char* dump = std::getenv("SURFACEDETAIL_TEST_DISPLACEMENT_DUMP"))
+  {
+    const std::string bytes = AllOutputBytes();
+    std::ofstream file(dump, std::ios::binary);
+    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    ASSERT_TRUE(file.good());
+    return;
+  }
+#ifdef __linux__
+  // The program's own path: a shell that ran /proc/self/exe would run itself.
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  std::vector<std::string> results;
+  for (const char* isa : { "widest", "avx2", "baseline" })
+  {
+    // ctest may run this test's -avx2 and -baseline registrations at the same time.
+    const std::string path = std::string(SURFACEDETAIL_TEMP_DIR) + "/DisplacementMapFilter-" +
+      std::to_string(getpid()) + "-" + isa;
+    const std::string command = std::string("SURFACEDETAIL_MAX_ISA=") + isa +
+      " SURFACEDETAIL_TEST_DISPLACEMENT_DUMP='" + path + "' '" + self +
+      "' --gtest_filter=DisplacementMapFilter.SameBitsInEveryBuild >/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << isa;
+    std::ifstream file(path, std::ios::binary);
+    ASSERT_TRUE(file.good()) << isa;
+    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    file.close();
+    std::remove(path.c_str());
+    // 4 meshes x 3 interpolations x (None: points; 3 modes: points, normals, tangents).
+    ASSERT_GT(bytes.size(), 4u * 3u * 97u * 49u * 3u * sizeof(float)) << isa;
+    results.push_back(std::move(bytes));
+  }
+  EXPECT_TRUE(results[1] == results[0]) << "avx2 differs from the widest build";
+  EXPECT_TRUE(results[2] == results[0]) << "baseline differs from the widest build";
+#else
+  GTEST_SKIP() << "runs itself through /proc/self/exe";
+#endif
 }
