@@ -759,7 +759,9 @@ VTK_ALWAYS_INLINE bool UnitLane(double& x, double& y, double& z)
   return (len != 0.0) & IsFinite(x + y + z);
 }
 
-// The value stored in an output array of R: for float, beyond float's range the largest float.
+// A double narrowed to R (an output value, or a float lane's input): for float, beyond float's
+// range the largest float (converting an out-of-range double to float is undefined in C++;
+// the float lanes flag such points and redo them in double).
 template <typename R>
 inline R ToReal(double v)
 {
@@ -1084,9 +1086,9 @@ struct DisplaceWorker : BlockOps<R, L>
         const double dtk = Finite(c.Scale * ht[k]);
         const double largest = std::max(std::max(std::abs(dk), std::abs(dsk)), std::abs(dtk));
         redo[k] |= !(largest <= 0x1p32);
-        d[k] = static_cast<float>(dk);
-        ds[k] = static_cast<float>(dsk);
-        dt[k] = static_cast<float>(dtk);
+        d[k] = ToReal<float>(dk);
+        ds[k] = ToReal<float>(dsk);
+        dt[k] = ToReal<float>(dtk);
       }
     }
     else
@@ -1139,8 +1141,8 @@ struct DisplaceWorker : BlockOps<R, L>
     {
       this->template Gather<3>(c.DPdu->P + 3 * first, count, ps);
       this->template Gather<3>(c.DPdv->P + 3 * first, count, pt);
-      const L scaleS = static_cast<L>(c.DerivativeScale[0]);
-      const L scaleT = static_cast<L>(c.DerivativeScale[1]);
+      const L scaleS = ToReal<L>(c.DerivativeScale[0]);
+      const L scaleT = ToReal<L>(c.DerivativeScale[1]);
       for (int j = 0; j < 3; ++j)
       {
         for (int k = 0; k < count; ++k)
@@ -1218,13 +1220,13 @@ struct DisplaceWorker : BlockOps<R, L>
         {
           if (WantP)
           {
-            ps[q][k] = static_cast<float>(fps[q][k]);
-            pt[q][k] = static_cast<float>(fpt[q][k]);
+            ps[q][k] = ToReal<float>(fps[q][k]);
+            pt[q][k] = ToReal<float>(fpt[q][k]);
           }
           if (WantN)
           {
-            ns[q][k] = static_cast<float>(fns[q][k]);
-            nt[q][k] = static_cast<float>(fnt[q][k]);
+            ns[q][k] = ToReal<float>(fns[q][k]);
+            nt[q][k] = ToReal<float>(fnt[q][k]);
           }
         }
       }
@@ -1621,9 +1623,9 @@ struct MeshPointNormalWorker : BlockOps<R, L>
       {
         double sum[3];
         this->Sum(first + k, sum);
-        m[0][k] = static_cast<L>(sum[0]);
-        m[1][k] = static_cast<L>(sum[1]);
-        m[2][k] = static_cast<L>(sum[2]);
+        m[0][k] = ToReal<L>(sum[0]);
+        m[1][k] = ToReal<L>(sum[1]);
+        m[2][k] = ToReal<L>(sum[2]);
       }
       this->UnitNormals(first, count, n, fallback, redo);
       this->Normals(first, count, fallback, m, redo);
