@@ -914,6 +914,20 @@ struct BlockOps
     }
   }
 
+  // The block's output tangents, if the output has them (3 or 4 components; @a t is scratch).
+  VTK_ALWAYS_INLINE void OutputTangents(
+    vtkIdType first, int count, const Lanes m[3], Lanes t[4], Flags redo) const
+  {
+    if (this->C.OutTangents && this->C.OutTangents->NC == 4)
+    {
+      this->template Tangents<4>(first, count, m, t, redo);
+    }
+    else if (this->C.OutTangents)
+    {
+      this->template Tangents<3>(first, count, m, t, redo);
+    }
+  }
+
   // WriteTangent for the block (@a t is scratch). Double lanes: a block with a tangent left
   // without direction is redone by WriteTangent itself (same results for the others). Float
   // lanes: flags a tangent that is out of range or lies within 0.6 degrees of the normal (its
@@ -1042,14 +1056,7 @@ struct DisplaceWorker : BlockOps<R, L>
         }
         // Exact's new normal is n plus a change: one much shorter than n cancelled it.
         this->Normals(first, count, fallback, m, redo, exact ? 1e-4f : 0.0f);
-        if (c.OutTangents && c.OutTangents->NC == 4)
-        {
-          this->template Tangents<4>(first, count, m, x, redo);
-        }
-        else if (c.OutTangents)
-        {
-          this->template Tangents<3>(first, count, m, x, redo);
-        }
+        this->OutputTangents(first, count, m, x, redo);
       }
       if constexpr (Float)
       {
@@ -1629,14 +1636,7 @@ struct MeshPointNormalWorker : BlockOps<R, L>
       }
       this->UnitNormals(first, count, n, fallback, redo);
       this->Normals(first, count, fallback, m, redo);
-      if (c.OutTangents && c.OutTangents->NC == 4)
-      {
-        this->template Tangents<4>(first, count, m, x, redo);
-      }
-      else if (c.OutTangents)
-      {
-        this->template Tangents<3>(first, count, m, x, redo);
-      }
+      this->OutputTangents(first, count, m, x, redo);
       if constexpr (Float)
       {
         if (Base::Any(count, redo))
