@@ -1521,6 +1521,24 @@ TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
 
 namespace
 {
+// Adds @a dst to @a out in the role @a src has in @a in: normals, texture coordinates or a
+// plain array.
+void AddInSameRole(vtkPointData* in, vtkDataArray* src, vtkPointData* out, vtkDataArray* dst)
+{
+  if (src == in->GetNormals())
+  {
+    out->SetNormals(dst);
+  }
+  else if (src == in->GetTCoords())
+  {
+    out->SetTCoords(dst);
+  }
+  else
+  {
+    out->AddArray(dst);
+  }
+}
+
 // A copy of @a mesh with its points and point arrays multiplied: coordinates and dPdu/dPdv by
 // @a f, texture coordinates by @a g; in float or double.
 vtkSmartPointer<vtkPolyData> Rescaled(vtkPolyData* mesh, double f, double g, bool floatArrays)
@@ -1562,18 +1580,7 @@ vtkSmartPointer<vtkPolyData> Rescaled(vtkPolyData* mesh, double f, double g, boo
         dst->SetComponent(i, c, by * src->GetComponent(i, c));
       }
     }
-    if (src == in->GetNormals())
-    {
-      out->GetPointData()->SetNormals(dst);
-    }
-    else if (src == in->GetTCoords())
-    {
-      out->GetPointData()->SetTCoords(dst);
-    }
-    else
-    {
-      out->GetPointData()->AddArray(dst);
-    }
+    AddInSameRole(in, src, out->GetPointData(), dst);
   }
   return out;
 }
@@ -1764,18 +1771,7 @@ TEST(DisplacementMapFilter, ResultsDoNotDependOnBlockPosition)
         {
           dst->SetTuple(i + 1, i, src);
         }
-        if (src == pd->GetNormals())
-        {
-          shifted->GetPointData()->SetNormals(dst);
-        }
-        else if (src == pd->GetTCoords())
-        {
-          shifted->GetPointData()->SetTCoords(dst);
-        }
-        else
-        {
-          shifted->GetPointData()->AddArray(dst);
-        }
+        AddInSameRole(pd, src, shifted->GetPointData(), dst);
       }
       vtkNew<vtkCellArray> polys;
       vtkNew<vtkIdList> ids;
