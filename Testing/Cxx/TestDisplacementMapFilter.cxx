@@ -1728,6 +1728,22 @@ TEST(DisplacementMapFilter, FloatArraysAgreeWithDoubleAtLargeScale)
   }
 }
 
+namespace
+{
+// A 96 x 48 mesh of @a s with two points that float lanes redo in double lanes: a zero
+// normal (point 70) and a tangent along the normal (point 200).
+vtkSmartPointer<vtkPolyData> MeshWithRedonePoints(const Surface& s, bool derivatives, bool floatPoints)
+{
+  auto mesh = MakeMesh(s, 96, 48, derivatives, floatPoints);
+  vtkPointData* pd = mesh->GetPointData();
+  pd->GetNormals()->SetTuple3(70, 0.0, 0.0, 0.0);
+  double n[3];
+  pd->GetNormals()->GetTuple(200, n);
+  pd->GetArray("Tangents")->SetTuple4(200, n[0], n[1], n[2], 1.0);
+  return mesh;
+}
+}
+
 // Each point's result depends on its own data and neighbours alone, not on where it falls in a
 // block of the lanes (nor on the block's other points, some of them redone in double lanes): one
 // unused point put first shifts every point by one lane, and the outputs shift with it, bit for
@@ -1740,13 +1756,8 @@ TEST(DisplacementMapFilter, ResultsDoNotDependOnBlockPosition)
   {
     for (bool derivatives : { false, true })
     {
-      auto mesh = MakeMesh(s, 96, 48, derivatives, floatPoints);
+      auto mesh = MeshWithRedonePoints(s, derivatives, floatPoints);
       vtkPointData* pd = mesh->GetPointData();
-      // Points that float lanes redo: a zero normal, a tangent along the normal.
-      pd->GetNormals()->SetTuple3(70, 0.0, 0.0, 0.0);
-      double n[3];
-      pd->GetNormals()->GetTuple(200, n);
-      pd->GetArray("Tangents")->SetTuple4(200, n[0], n[1], n[2], 1.0);
       const vtkIdType count = mesh->GetNumberOfPoints();
       auto shifted = vtkSmartPointer<vtkPolyData>::New();
       vtkNew<vtkPoints> points;
@@ -1826,12 +1837,7 @@ std::string AllOutputBytes()
   {
     for (bool derivatives : { false, true })
     {
-      auto mesh = MakeMesh(s, 96, 48, derivatives, floatPoints);
-      vtkPointData* pd = mesh->GetPointData();
-      pd->GetNormals()->SetTuple3(70, 0.0, 0.0, 0.0);
-      double n[3];
-      pd->GetNormals()->GetTuple(200, n);
-      pd->GetArray("Tangents")->SetTuple4(200, n[0], n[1], n[2], 1.0);
+      auto mesh = MeshWithRedonePoints(s, derivatives, floatPoints);
       for (int mode : AllModes)
       {
         for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
