@@ -469,6 +469,17 @@ inline double Finite(double x)
     std::max(x, -std::numeric_limits<double>::max()), std::numeric_limits<double>::max());
 }
 
+// Finite for float lanes: NaN becomes 0 and infinity the largest float.
+inline float Finite(float x)
+{
+  if (std::isnan(x))
+  {
+    return 0.0f;
+  }
+  return std::min(
+    std::max(x, -std::numeric_limits<float>::max()), std::numeric_limits<float>::max());
+}
+
 inline void ScaleToUnitMax(double v[3])
 {
   const double mx = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
@@ -725,6 +736,11 @@ VTK_ALWAYS_INLINE double Displacement(
 inline bool IsFinite(double x)
 {
   return std::abs(x) <= std::numeric_limits<double>::max();
+}
+
+inline bool IsFinite(float x)
+{
+  return std::abs(x) <= std::numeric_limits<float>::max();
 }
 
 // FastNormalize and its check for one lane of a block, free of branches so that block loops
