@@ -3,6 +3,7 @@
 // NaN height maps) and bad input.
 
 #include "DisplacementTestSurfaces.h"
+#include "EveryBuildTestHelpers.h"
 
 #include "vtkDisplacementMapFilter.h"
 
@@ -32,19 +33,13 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <unistd.h> // getpid
 
 using namespace DisplacementTest;
 
@@ -1866,36 +1861,17 @@ std::string AllOutputBytes()
 // writes its outputs to a file.
 TEST(DisplacementMapFilter, SameBitsInEveryBuild)
 {
-  if (const char* dump = std::getenv("SURFACEDETAIL_TEST_DISPLACEMENT_DUMP"))
+  if (const char* dump = EveryBuild::DumpPath())
   {
-    const std::string bytes = AllOutputBytes();
-    std::ofstream file(dump, std::ios::binary);
-    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    ASSERT_TRUE(file.good());
+    EveryBuild::WriteDump(dump, AllOutputBytes());
     return;
   }
 #ifdef __linux__
-  // The program's own path: a shell that ran /proc/self/exe would run itself.
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  std::vector<std::string> results;
-  for (const char* isa : { "widest", "avx2", "baseline" })
-  {
-    // ctest may run this test's -avx2 and -baseline registrations at the same time.
-    const std::string path = std::string(SURFACEDETAIL_TEMP_DIR) + "/DisplacementMapFilter-" +
-      std::to_string(getpid()) + "-" + isa;
-    const std::string command = std::string("SURFACEDETAIL_MAX_ISA=") + isa +
-      " SURFACEDETAIL_TEST_DISPLACEMENT_DUMP='" + path + "' '" + self +
-      "' --gtest_filter=DisplacementMapFilter.SameBitsInEveryBuild >/dev/null";
-    ASSERT_EQ(std::system(command.c_str()), 0) << isa;
-    std::ifstream file(path, std::ios::binary);
-    ASSERT_TRUE(file.good()) << isa;
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    file.close();
-    std::remove(path.c_str());
-    // 4 meshes x 3 interpolations x (None: points; 3 modes: points, normals, tangents).
-    ASSERT_GT(bytes.size(), 4u * 3u * 97u * 49u * 3u * sizeof(float)) << isa;
-    results.push_back(std::move(bytes));
-  }
+  const std::vector<std::string> results =
+    EveryBuild::OutputsOfEveryBuild("DisplacementMapFilter.SameBitsInEveryBuild");
+  ASSERT_EQ(results.size(), 3u);
+  // 4 meshes x 3 interpolations x (None: points; 3 modes: points, normals, tangents).
+  ASSERT_GT(results[0].size(), 4u * 3u * 97u * 49u * 3u * sizeof(float));
   EXPECT_TRUE(results[1] == results[0]) << "avx2 differs from the widest build";
   EXPECT_TRUE(results[2] == results[0]) << "baseline differs from the widest build";
 #else

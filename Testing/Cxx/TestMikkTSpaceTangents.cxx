@@ -1,5 +1,6 @@
 // vtkMikkTSpaceTangents: closed-form frames, bad input, degenerate input (stress), kept
 // arrays and cells, thread-count independence.
+#include "EveryBuildTestHelpers.h"
 #include "MikkTSpaceTestMeshes.h"
 
 #include "vtkCellArray.h"
@@ -27,10 +28,6 @@
 
 #include <gtest/gtest.h>
 
-#ifdef __linux__
-#include <unistd.h> // getpid
-#endif
-
 #if defined(__SSE__) || defined(__x86_64__) || defined(_M_X64)
 #include <xmmintrin.h> // _mm_getcsr
 #endif
@@ -39,11 +36,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -396,44 +389,20 @@ std::vector<float> FastPathTangents()
 // build, that run takes the next narrower one.
 TEST(vtkMikkTSpaceTangents, SameBitsInEveryBuild)
 {
-  if (const char* dump = std::getenv("SURFACEDETAIL_TEST_TANGENTS_DUMP"))
+  if (const char* dump = EveryBuild::DumpPath())
   {
     const std::vector<float> t = FastPathTangents();
-    std::ofstream file(dump, std::ios::binary);
-    file.write(reinterpret_cast<const char*>(t.data()), std::streamsize(t.size() * sizeof(float)));
-    ASSERT_TRUE(file.good());
+    EveryBuild::WriteDump(dump,
+      std::string(reinterpret_cast<const char*>(t.data()), t.size() * sizeof(float)));
     return;
   }
 #ifdef __linux__
-  // The program's own path: a shell that ran /proc/self/exe would run itself.
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  std::vector<std::vector<float>> results;
-  for (const char* isa : { "widest", "avx2", "baseline" })
-  {
-    // ctest may run this test's -avx2 and -baseline registrations at the same time.
-    const std::string path = std::string(SURFACEDETAIL_TEMP_DIR) + "/MikkTSpaceTangents-" +
-      std::to_string(getpid()) + "-" + isa;
-    const std::string command = std::string("SURFACEDETAIL_MAX_ISA=") + isa +
-      " SURFACEDETAIL_TEST_TANGENTS_DUMP='" + path + "' '" + self +
-      "' --gtest_filter=vtkMikkTSpaceTangents.SameBitsInEveryBuild >/dev/null";
-    ASSERT_EQ(std::system(command.c_str()), 0) << isa;
-    std::ifstream file(path, std::ios::binary | std::ios::ate);
-    ASSERT_TRUE(file.good()) << isa;
-    std::vector<float> t(static_cast<std::size_t>(file.tellg()) / sizeof(float));
-    file.seekg(0);
-    file.read(reinterpret_cast<char*>(t.data()), std::streamsize(t.size() * sizeof(float)));
-    file.close();
-    std::remove(path.c_str());
-    ASSERT_GT(t.size(), 4u * 301 * 151) << isa;
-    results.push_back(std::move(t));
-  }
-  for (std::size_t r = 1; r < results.size(); ++r)
-  {
-    ASSERT_EQ(results[r].size(), results[0].size());
-    EXPECT_EQ(
-      0, std::memcmp(results[r].data(), results[0].data(), results[0].size() * sizeof(float)))
-      << (r == 1 ? "avx2" : "baseline") << " differs from the widest build";
-  }
+  const std::vector<std::string> results =
+    EveryBuild::OutputsOfEveryBuild("vtkMikkTSpaceTangents.SameBitsInEveryBuild");
+  ASSERT_EQ(results.size(), 3u);
+  ASSERT_GT(results[0].size(), 4u * 301 * 151 * sizeof(float));
+  EXPECT_TRUE(results[1] == results[0]) << "avx2 differs from the widest build";
+  EXPECT_TRUE(results[2] == results[0]) << "baseline differs from the widest build";
 #else
   GTEST_SKIP() << "runs itself through /proc/self/exe";
 #endif
