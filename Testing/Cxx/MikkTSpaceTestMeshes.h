@@ -42,6 +42,16 @@ struct Sample
   std::array<double, 2> T;
 };
 
+// An empty float array named @a name with @a components components: the meshes' "Normals"
+// (3) and "TCoords" (2).
+inline vtkSmartPointer<vtkFloatArray> NewFloatArray(const char* name, int components)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  return a;
+}
+
 inline std::array<double, 3> Normalized(std::array<double, 3> v)
 {
   const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -75,11 +85,8 @@ inline vtkSmartPointer<vtkPolyData> MakeGrid(
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  vtkNew<vtkFloatArray> normals, tcoords;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  tcoords->SetName("TCoords");
-  tcoords->SetNumberOfComponents(2);
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
   for (int j = 0; j <= nv; ++j)
   {
     for (int i = 0; i <= nu; ++i)
@@ -142,11 +149,8 @@ inline vtkSmartPointer<vtkPolyData> MakeUVSphere(int nu, int nv)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  vtkNew<vtkFloatArray> normals, tcoords;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  tcoords->SetName("TCoords");
-  tcoords->SetNumberOfComponents(2);
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
   auto add = [&](const Sample& s)
   {
     points->InsertNextPoint(s.P.data());

@@ -490,12 +490,8 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverTinyDerivativesAndEdges)
     const double scale = 1e-34, tscale = 1e-3;
     vtkNew<vtkPoints> points;
     points->SetDataType(precision);
-    vtkNew<vtkFloatArray> normals;
-    normals->SetNumberOfComponents(3);
-    normals->SetName("Normals");
-    vtkNew<vtkFloatArray> tcoords;
-    tcoords->SetNumberOfComponents(2);
-    tcoords->SetName("TCoords");
+    auto normals = NewFloatArray("Normals", 3);
+    auto tcoords = NewFloatArray("TCoords", 2);
     for (int j = 0; j <= n; ++j)
     {
       for (int i = 0; i <= n; ++i)
@@ -565,12 +561,8 @@ vtkSmartPointer<vtkPolyData> FansAroundOrigin(
   const std::vector<std::array<double, 3>>& ring, const std::vector<std::array<vtkIdType, 3>>& tris)
 {
   vtkNew<vtkPoints> points;
-  vtkNew<vtkFloatArray> normals;
-  normals->SetNumberOfComponents(3);
-  normals->SetName("Normals");
-  vtkNew<vtkFloatArray> tcoords;
-  tcoords->SetNumberOfComponents(2);
-  tcoords->SetName("TCoords");
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
   points->InsertNextPoint(0, 0, 0);
   for (const auto& x : ring)
   {
@@ -716,12 +708,8 @@ vtkSmartPointer<vtkPolyData> ScaledCopy(vtkPolyData* in, double s)
 vtkSmartPointer<vtkPolyData> ConeTip(int k, double r)
 {
   vtkNew<vtkPoints> points;
-  vtkNew<vtkFloatArray> normals;
-  normals->SetNumberOfComponents(3);
-  normals->SetName("Normals");
-  vtkNew<vtkFloatArray> tcoords;
-  tcoords->SetNumberOfComponents(2);
-  tcoords->SetName("TCoords");
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
   double n[3] = { 0.011, -0.017, 1.0 };
   vtkMath::Normalize(n);
   points->InsertNextPoint(0, 0, 0);
@@ -797,12 +785,8 @@ TEST(vtkMikkTSpaceTangents, FastPathInSinglePrecisionAgreesOnAdversarialMeshes)
   for (double delta : { 0.003, 0.01, 0.03, 0.1, 0.3 })
   {
     vtkNew<vtkPoints> points;
-    vtkNew<vtkFloatArray> normals;
-    normals->SetNumberOfComponents(3);
-    normals->SetName("Normals");
-    vtkNew<vtkFloatArray> tcoords;
-    tcoords->SetNumberOfComponents(2);
-    tcoords->SetName("TCoords");
+    auto normals = NewFloatArray("Normals", 3);
+    auto tcoords = NewFloatArray("TCoords", 2);
     double n[3] = { 1.0, 0.0, delta };
     vtkMath::Normalize(n);
     points->InsertNextPoint(0, 0, 0);
