@@ -527,7 +527,8 @@ struct Context
   // P_t when fitted (no dPdu/dPdv), then n_s and n_t (Exact). Written by pass 1, or (FitsKnown)
   // read instead of fitting again. Kept in R: float arrays' fits go to float lanes (and, rounded
   // the same way, to the double lanes of the points redone), so float halves what re-executions
-  // read and changes nothing else.
+  // read and changes nothing else; a point whose fits float cannot hold keeps NaN and is fitted
+  // again, in double, whenever it is needed (FitDouble).
   R* Fits = nullptr;
   int FitStride = 0;
   bool FitsKnown = false;
@@ -1045,7 +1046,7 @@ struct DisplaceWorker : BlockOps<R, L>
       this->Points(first, count, n, d, x);
       if (analytic)
       {
-        this->Derivatives(first, count, exact, ps, pt, ns, nt);
+        this->Derivatives(first, count, exact, ps, pt, ns, nt, redo);
         if (exact)
         {
           this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m, redo);
@@ -1139,9 +1140,10 @@ struct DisplaceWorker : BlockOps<R, L>
     this->template Scatter<3>(x, count, this->C.OutPoints->P + 3 * first);
   }
 
-  // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t.
+  // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t. Float lanes
+  // flag the points whose fits float cannot hold (see FitDouble).
   VTK_ALWAYS_INLINE void Derivatives(vtkIdType first, int count, bool exact, Lanes ps[3],
-    Lanes pt[3], Lanes ns[3], Lanes nt[3]) const
+    Lanes pt[3], Lanes ns[3], Lanes nt[3], [[maybe_unused]] Flags redo) const
   {
     const Context<R>& c = this->C;
     if (c.DPdu)
@@ -1170,17 +1172,25 @@ struct DisplaceWorker : BlockOps<R, L>
     {
       if (wantP && exact)
       {
-        this->template Fit<true, true>(first, count, ps, pt, ns, nt);
+        this->template Fit<true, true>(first, count, ps, pt, ns, nt, redo);
       }
       else if (wantP)
       {
-        this->template Fit<true, false>(first, count, ps, pt, ns, nt);
+        this->template Fit<true, false>(first, count, ps, pt, ns, nt, redo);
       }
       else
       {
-        this->template Fit<false, true>(first, count, ps, pt, ns, nt);
+        this->template Fit<false, true>(first, count, ps, pt, ns, nt, redo);
       }
       return;
+    }
+    if constexpr (Float)
+    {
+      // A kept NaN: a point whose fits float cannot hold (FitDouble), redone in double lanes.
+      for (int k = 0; k < count; ++k)
+      {
+        redo[k] |= static_cast<int>(std::isnan(kept[stride * k]));
+      }
     }
     if (wantP)
     {
@@ -1205,6 +1215,51 @@ struct DisplaceWorker : BlockOps<R, L>
         }
       }
     }
+    if constexpr (std::is_same<R, float>::value && !Float)
+    {
+      // Over the NaNs just read: the point fitted again, as its first execution did.
+      for (int k = 0; k < count; ++k)
+      {
+        if (std::isnan(c.Fits[stride * (first + k)]))
+        {
+          this->RefitOne(first + k, wantP, exact, ps, pt, ns, nt, k);
+        }
+      }
+    }
+  }
+
+  // Lane @a k of the derivatives: point @a i fitted again, not kept (a re-execution's point
+  // whose fits float could not hold).
+  void RefitOne(vtkIdType i, bool wantP, bool exact, Lanes ps[3], Lanes pt[3], Lanes ns[3],
+    Lanes nt[3], int k) const
+  {
+    alignas(64) Lanes fps[3], fpt[3], fns[3], fnt[3];
+    alignas(64) Flags unkept;
+    if (wantP && exact)
+    {
+      this->template FitDouble<true, true>(i, 1, fps, fpt, fns, fnt, unkept, false);
+    }
+    else if (wantP)
+    {
+      this->template FitDouble<true, false>(i, 1, fps, fpt, fns, fnt, unkept, false);
+    }
+    else
+    {
+      this->template FitDouble<false, true>(i, 1, fps, fpt, fns, fnt, unkept, false);
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      if (wantP)
+      {
+        ps[j][k] = fps[j][0];
+        pt[j][k] = fpt[j][0];
+      }
+      if (exact)
+      {
+        ns[j][k] = fns[j][0];
+        nt[j][k] = fnt[j][0];
+      }
+    }
   }
 
   // The fitted P_s, P_t (WantP) and n_s, n_t (WantN) of the block, also written to the kept
@@ -1213,14 +1268,19 @@ struct DisplaceWorker : BlockOps<R, L>
   // directions, or (P) a neighbour sits at the point with other texture coordinates (a pole:
   // p(s,t) is singular there), the derivatives are 0 and the normal falls back on the input's.
   template <bool WantP, bool WantN>
-  VTK_ALWAYS_INLINE void Fit(
-    vtkIdType first, int count, Lanes ps[3], Lanes pt[3], Lanes ns[3], Lanes nt[3]) const
+  VTK_ALWAYS_INLINE void Fit(vtkIdType first, int count, Lanes ps[3], Lanes pt[3], Lanes ns[3],
+    Lanes nt[3], [[maybe_unused]] Flags redo) const
   {
+    alignas(64) Flags unkept;
     if constexpr (Float)
     {
-      // Solved and kept in double (re-executions read the kept values: the same lanes).
+      // Solved in double and kept (re-executions read the kept values: the same lanes).
       alignas(64) DoubleLanes fps[3], fpt[3], fns[3], fnt[3];
-      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt);
+      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, true);
+      for (int k = 0; k < count; ++k)
+      {
+        redo[k] |= unkept[k];
+      }
       for (int q = 0; q < 3; ++q)
       {
         for (int k = 0; k < count; ++k)
@@ -1240,13 +1300,17 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     else
     {
-      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt);
+      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt, unkept, true);
     }
   }
 
+  // With float arrays the fits are kept rounded to float and the lanes get the rounded values,
+  // which a re-execution reads back, except at points with a fitted value that float holds
+  // with less than its precision (beyond its range, or subnormal; flagged @a unkept): these
+  // keep NaN, and their lanes the double values.
   template <bool WantP, bool WantN>
   VTK_ALWAYS_INLINE void FitDouble(vtkIdType first, int count, DoubleLanes ps[3], DoubleLanes pt[3],
-    DoubleLanes ns[3], DoubleLanes nt[3]) const
+    DoubleLanes ns[3], DoubleLanes nt[3], Flags unkept, bool store) const
   {
     const Context<R>& c = this->C;
     alignas(64) DoubleLanes m[3], bp[6], bn[6], near, far;
@@ -1278,28 +1342,66 @@ struct DisplaceWorker : BlockOps<R, L>
         {
           const double fs = (m[2][k] * bp[q][k] - m[1][k] * bp[3 + q][k]) / divisor;
           const double ft = (m[0][k] * bp[3 + q][k] - m[1][k] * bp[q][k]) / divisor;
-          ps[q][k] = static_cast<R>(distinct ? fs : 0.0);
-          pt[q][k] = static_cast<R>(distinct ? ft : 0.0);
+          ps[q][k] = distinct ? fs : 0.0;
+          pt[q][k] = distinct ? ft : 0.0;
         }
         if (WantN)
         {
           const double fs = (m[2][k] * bn[q][k] - m[1][k] * bn[3 + q][k]) / divisor;
           const double ft = (m[0][k] * bn[3 + q][k] - m[1][k] * bn[q][k]) / divisor;
-          ns[q][k] = static_cast<R>(spans ? fs : 0.0);
-          nt[q][k] = static_cast<R>(spans ? ft : 0.0);
+          ns[q][k] = spans ? fs : 0.0;
+          nt[q][k] = spans ? ft : 0.0;
         }
       }
     }
+    std::fill_n(unkept, count, 0);
+    if constexpr (std::is_same<R, float>::value)
+    {
+      auto holds = [](double v)
+      {
+        const double a = std::abs(v);
+        return (a == 0.0) |
+          ((a >= std::numeric_limits<float>::min()) & (a <= std::numeric_limits<float>::max()));
+      };
+      for (int k = 0; k < count; ++k)
+      {
+        bool all = true;
+        for (int q = 0; q < 3; ++q)
+        {
+          all &= !WantP || (holds(ps[q][k]) & holds(pt[q][k]));
+          all &= !WantN || (holds(ns[q][k]) & holds(nt[q][k]));
+        }
+        unkept[k] = !all;
+        for (int q = 0; q < 3 && all; ++q)
+        {
+          if (WantP)
+          {
+            ps[q][k] = static_cast<float>(ps[q][k]);
+            pt[q][k] = static_cast<float>(pt[q][k]);
+          }
+          if (WantN)
+          {
+            ns[q][k] = static_cast<float>(ns[q][k]);
+            nt[q][k] = static_cast<float>(nt[q][k]);
+          }
+        }
+      }
+    }
+    if (!store)
+    {
+      return;
+    }
     const int stride = c.FitStride;
     R* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
+    constexpr R unkeptValue = std::numeric_limits<R>::quiet_NaN();
     if (WantP)
     {
       for (int k = 0; k < count; ++k)
       {
         for (int q = 0; q < 3; ++q)
         {
-          kept[stride * k + q] = static_cast<R>(ps[q][k]);
-          kept[stride * k + 3 + q] = static_cast<R>(pt[q][k]);
+          kept[stride * k + q] = unkept[k] ? unkeptValue : static_cast<R>(ps[q][k]);
+          kept[stride * k + 3 + q] = unkept[k] ? unkeptValue : static_cast<R>(pt[q][k]);
         }
       }
       kept += 6;
@@ -1310,8 +1412,8 @@ struct DisplaceWorker : BlockOps<R, L>
       {
         for (int q = 0; q < 3; ++q)
         {
-          kept[stride * k + q] = static_cast<R>(ns[q][k]);
-          kept[stride * k + 3 + q] = static_cast<R>(nt[q][k]);
+          kept[stride * k + q] = unkept[k] ? unkeptValue : static_cast<R>(ns[q][k]);
+          kept[stride * k + 3 + q] = unkept[k] ? unkeptValue : static_cast<R>(nt[q][k]);
         }
       }
     }

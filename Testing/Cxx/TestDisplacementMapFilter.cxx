@@ -1723,11 +1723,90 @@ TEST(DisplacementMapFilter, FloatArraysAgreeWithDoubleAtLargeScale)
   }
 }
 
+// Float arrays whose values float holds but whose results it does not: points near float's
+// largest value moved beyond it, and fitted derivatives beyond float's range (points near its
+// largest value, or texture coordinates near its smallest, with no dPdu/dPdv to use). Reference:
+// the same values in double arrays. An output coordinate that float cannot hold is the largest
+// float of its sign (never infinity); every other coordinate is the double computation's
+// rounded to float. The analytic modes' normals do not depend on the moved points and agree with
+// double's; Mesh's follow the clamped points and must only stay finite and unit. A
+// re-execution (a new Scale, fits kept) gives a fresh filter's bits.
+TEST(DisplacementMapFilter, FloatArraysBeyondFloatRangeAgreeWithDouble)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  constexpr double big = std::numeric_limits<float>::max();
+  struct Case
+  {
+    double f, g;
+    std::vector<double> scales;
+    bool overflows;
+  };
+  // 2e38 x (ring radius 1 + tube 0.35): coordinates up to 2.7e38 of float's 3.4e38, and dP/ds
+  // about 2 pi x 2.7e38. Texture coordinates of 1e-40: n_s about 1e40.
+  for (const Case& c : { Case{ 2e38, 1.0, { 4e38, -4e38, 1e39, 1e300 }, true },
+         Case{ 1.0, 1e-40, { 0.1, -0.1 }, false } })
+  {
+    for (bool derivatives : { false, true })
+    {
+      auto fl = Rescaled(MakeMesh(s, 48, 24, derivatives), c.f, c.g, true);
+      auto d = Rescaled(fl, 1.0, 1.0, false); // the same values, exactly
+      for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
+             vtkDisplacementMapFilter::Mesh })
+      {
+        vtkNew<vtkDisplacementMapFilter> again;
+        again->SetInputData(0, fl);
+        again->SetInputData(1, image);
+        again->SetNormalMode(mode);
+        again->SetInterpolation(vtkDisplacementMapFilter::Cubic);
+        again->SetMidlevel(0.5);
+        for (double scale : c.scales)
+        {
+          std::ostringstream what;
+          what << "f " << c.f << " g " << c.g << " scale " << scale << " mode " << mode
+               << " derivatives " << derivatives;
+          auto outD = Displace(d, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
+          auto outF = Displace(fl, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
+          const double angle = CheckAndCompare(outD, outF, what.str());
+          if (mode != vtkDisplacementMapFilter::Mesh || !c.overflows)
+          {
+            EXPECT_LT(angle, 2e-5) << what.str();
+          }
+          again->SetScale(scale);
+          again->Update();
+          EXPECT_TRUE(SameOutput(again->GetOutput(), outF)) << what.str() << " re-execution";
+          vtkIdType clamped = 0;
+          for (vtkIdType i = 0; i < outF->GetNumberOfPoints(); ++i)
+          {
+            double pd[3], pf[3];
+            outD->GetPoint(i, pd);
+            outF->GetPoint(i, pf);
+            for (int k = 0; k < 3; ++k)
+            {
+              const double expected = std::min(std::max(pd[k], -big), big);
+              clamped += std::abs(pd[k]) > big;
+              if (!(std::abs(pf[k] - expected) <= 1e-6 * std::abs(expected) + 1e-6 * c.f))
+              {
+                ADD_FAILURE() << what.str() << " point " << i << " component " << k << ": float "
+                              << pf[k] << ", double " << pd[k];
+                return;
+              }
+            }
+          }
+          // The first case is only tested if some coordinates did overflow.
+          EXPECT_EQ(clamped > 0, c.overflows) << what.str();
+        }
+      }
+    }
+  }
+}
+
 namespace
 {
 // A 96 x 48 mesh of @a s with two points that float lanes redo in double lanes: a zero
 // normal (point 70) and a tangent along the normal (point 200).
-vtkSmartPointer<vtkPolyData> MeshWithRedonePoints(const Surface& s, bool derivatives, bool floatPoints)
+vtkSmartPointer<vtkPolyData> MeshWithRedonePoints(
+  const Surface& s, bool derivatives, bool floatPoints)
 {
   auto mesh = MakeMesh(s, 96, 48, derivatives, floatPoints);
   vtkPointData* pd = mesh->GetPointData();
