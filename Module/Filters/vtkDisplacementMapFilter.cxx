@@ -1184,14 +1184,6 @@ struct DisplaceWorker : BlockOps<R, L>
       }
       return;
     }
-    if constexpr (Float)
-    {
-      // A kept NaN: a point whose fits float cannot hold (FitDouble), redone in double lanes.
-      for (int k = 0; k < count; ++k)
-      {
-        redo[k] |= static_cast<int>(std::isnan(kept[stride * k]));
-      }
-    }
     if (wantP)
     {
       for (int k = 0; k < count; ++k)
@@ -1213,6 +1205,15 @@ struct DisplaceWorker : BlockOps<R, L>
           ns[j][k] = static_cast<L>(kept[stride * k + j]);
           nt[j][k] = static_cast<L>(kept[stride * k + 3 + j]);
         }
+      }
+    }
+    if constexpr (Float)
+    {
+      // A kept NaN: a point whose fits float cannot hold (Fit), redone in double lanes.
+      const Lanes& firstRead = wantP ? ps[0] : ns[0];
+      for (int k = 0; k < count; ++k)
+      {
+        redo[k] |= static_cast<int>(std::isnan(firstRead[k]));
       }
     }
     if constexpr (std::is_same<R, float>::value && !Float)
@@ -1274,13 +1275,11 @@ struct DisplaceWorker : BlockOps<R, L>
     alignas(64) Flags unkept;
     if constexpr (Float)
     {
-      // Solved in double and kept (re-executions read the kept values: the same lanes).
+      // Solved in double, rounded to float and kept (re-executions read the kept values: the
+      // same lanes); the points whose fits float cannot hold keep NaN and are redone.
       alignas(64) DoubleLanes fps[3], fpt[3], fns[3], fnt[3];
-      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, true);
-      for (int k = 0; k < count; ++k)
-      {
-        redo[k] |= unkept[k];
-      }
+      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, false);
+      std::fill_n(unkept, count, 0);
       for (int q = 0; q < 3; ++q)
       {
         for (int k = 0; k < count; ++k)
@@ -1297,6 +1296,51 @@ struct DisplaceWorker : BlockOps<R, L>
           }
         }
       }
+      auto flag = [&](const Lanes* r)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          for (int k = 0; k < count; ++k)
+          {
+            unkept[k] |= FloatFitUnkept(r[q][k]);
+          }
+        }
+      };
+      if (WantP)
+      {
+        flag(ps);
+        flag(pt);
+      }
+      if (WantN)
+      {
+        flag(ns);
+        flag(nt);
+      }
+      for (int k = 0; k < count; ++k)
+      {
+        redo[k] |= unkept[k];
+      }
+      const int stride = this->C.FitStride;
+      R* kept = this->C.Fits + static_cast<vtkIdType>(stride) * first;
+      auto keep = [&](const Lanes* vs, const Lanes* vt, R* to)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          for (int q = 0; q < 3; ++q)
+          {
+            to[stride * k + q] = unkept[k] ? std::numeric_limits<float>::quiet_NaN() : vs[q][k];
+            to[stride * k + 3 + q] = unkept[k] ? std::numeric_limits<float>::quiet_NaN() : vt[q][k];
+          }
+        }
+      };
+      if (WantP)
+      {
+        keep(ps, pt, kept);
+      }
+      if (WantN)
+      {
+        keep(ns, nt, kept + (WantP ? 6 : 0));
+      }
     }
     else
     {
@@ -1304,10 +1348,21 @@ struct DisplaceWorker : BlockOps<R, L>
     }
   }
 
-  // With float arrays the fits are kept rounded to float and the lanes get the rounded values,
-  // which a re-execution reads back, except at points with a fitted value that float holds
-  // with less than its precision (beyond its range, or subnormal; flagged @a unkept): these
-  // keep NaN, and their lanes the double values.
+  // Whether float cannot hold a fitted value at its precision: @a r, the value rounded to float
+  // (clamped), is infinite, NaN, the largest float (perhaps clamped) or subnormal. Integer
+  // compares of the bits, which vectorise 8 to a register.
+  static VTK_ALWAYS_INLINE int FloatFitUnkept(float r)
+  {
+    std::uint32_t u;
+    std::memcpy(&u, &r, sizeof(u));
+    u &= 0x7fffffffu;
+    return static_cast<int>((u != 0) & (u - 0x00800000u >= 0x7f7fffffu - 0x00800000u));
+  }
+
+  // With float arrays (double lanes: the redone points) the fits are kept rounded to float and
+  // the lanes get the rounded values, which a re-execution reads back, except at points with a
+  // fitted value that float cannot hold at its precision (FloatFitUnkept; flagged @a unkept):
+  // these keep NaN, and their lanes the double values. Float lanes (Fit) round and keep alike.
   template <bool WantP, bool WantN>
   VTK_ALWAYS_INLINE void FitDouble(vtkIdType first, int count, DoubleLanes ps[3], DoubleLanes pt[3],
     DoubleLanes ns[3], DoubleLanes nt[3], Flags unkept, bool store) const
@@ -1355,36 +1410,49 @@ struct DisplaceWorker : BlockOps<R, L>
       }
     }
     std::fill_n(unkept, count, 0);
-    if constexpr (std::is_same<R, float>::value)
+    if constexpr (std::is_same<R, float>::value && !Float)
     {
-      auto holds = [](double v)
+      // The double lanes of float arrays' points (redone points): Fit's rounding and flags.
+      auto flag = [&](const DoubleLanes* f)
       {
-        const double a = std::abs(v);
-        return (a == 0.0) |
-          ((a >= std::numeric_limits<float>::min()) & (a <= std::numeric_limits<float>::max()));
-      };
-      for (int k = 0; k < count; ++k)
-      {
-        bool all = true;
         for (int q = 0; q < 3; ++q)
         {
-          all &= !WantP || (holds(ps[q][k]) & holds(pt[q][k]));
-          all &= !WantN || (holds(ns[q][k]) & holds(nt[q][k]));
+          for (int k = 0; k < count; ++k)
+          {
+            unkept[k] |= FloatFitUnkept(ToReal<float>(f[q][k]));
+          }
         }
-        unkept[k] = !all;
-        for (int q = 0; q < 3 && all; ++q)
+      };
+      auto round = [&](DoubleLanes* f)
+      {
+        for (int q = 0; q < 3; ++q)
         {
-          if (WantP)
+          for (int k = 0; k < count; ++k)
           {
-            ps[q][k] = static_cast<float>(ps[q][k]);
-            pt[q][k] = static_cast<float>(pt[q][k]);
-          }
-          if (WantN)
-          {
-            ns[q][k] = static_cast<float>(ns[q][k]);
-            nt[q][k] = static_cast<float>(nt[q][k]);
+            const double r = static_cast<double>(ToReal<float>(f[q][k]));
+            f[q][k] = unkept[k] ? f[q][k] : r;
           }
         }
+      };
+      if (WantP)
+      {
+        flag(ps);
+        flag(pt);
+      }
+      if (WantN)
+      {
+        flag(ns);
+        flag(nt);
+      }
+      if (WantP)
+      {
+        round(ps);
+        round(pt);
+      }
+      if (WantN)
+      {
+        round(ns);
+        round(nt);
       }
     }
     if (!store)
@@ -1393,15 +1461,15 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     const int stride = c.FitStride;
     R* kept = c.Fits + static_cast<vtkIdType>(stride) * first;
-    constexpr R unkeptValue = std::numeric_limits<R>::quiet_NaN();
+    constexpr double unkeptValue = std::numeric_limits<double>::quiet_NaN();
     if (WantP)
     {
       for (int k = 0; k < count; ++k)
       {
         for (int q = 0; q < 3; ++q)
         {
-          kept[stride * k + q] = unkept[k] ? unkeptValue : static_cast<R>(ps[q][k]);
-          kept[stride * k + 3 + q] = unkept[k] ? unkeptValue : static_cast<R>(pt[q][k]);
+          kept[stride * k + q] = static_cast<R>(unkept[k] ? unkeptValue : ps[q][k]);
+          kept[stride * k + 3 + q] = static_cast<R>(unkept[k] ? unkeptValue : pt[q][k]);
         }
       }
       kept += 6;
@@ -1412,8 +1480,8 @@ struct DisplaceWorker : BlockOps<R, L>
       {
         for (int q = 0; q < 3; ++q)
         {
-          kept[stride * k + q] = unkept[k] ? unkeptValue : static_cast<R>(ns[q][k]);
-          kept[stride * k + 3 + q] = unkept[k] ? unkeptValue : static_cast<R>(nt[q][k]);
+          kept[stride * k + q] = static_cast<R>(unkept[k] ? unkeptValue : ns[q][k]);
+          kept[stride * k + 3 + q] = static_cast<R>(unkept[k] ? unkeptValue : nt[q][k]);
         }
       }
     }
