@@ -86,8 +86,9 @@
  * Precision: when the points and every array the filter reads are float (as VTK's sources
  * make them), the work reads them in place and the output points, normals and tangents are
  * float; otherwise the inputs are converted and the outputs are double. With float outputs,
- * a point moved beyond float's range gets the largest float of that sign (never infinity);
- * normals and tangents are those of the same values in double arrays, to float's precision.
+ * a point moved beyond float's range gets the largest float of that sign (never infinity),
+ * and normals and tangents stay finite and unit; points whose derivatives float cannot hold
+ * are computed in double.
  *
  * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
  * recomputes the normals from the faces).
