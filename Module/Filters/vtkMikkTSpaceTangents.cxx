@@ -2225,7 +2225,6 @@ private:
       }
       this->TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
       int good = 1;
-      float* __restrict db = dir[t0].data();
       unsigned char* __restrict ob = orient + t0;
       for (int j = 0; j < m; ++j)
       {
@@ -2236,7 +2235,7 @@ private:
       {
         for (int i = 0; i < 6; ++i)
         {
-          db[6 * j + i] = cb.D[i][j];
+          dir[t0 + j][i] = cb.D[i][j];
         }
       }
       if (!good)
