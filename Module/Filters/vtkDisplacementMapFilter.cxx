@@ -1668,7 +1668,10 @@ struct MeshPointNormalWorker : BlockOps<R, L>
 // Inconsistent orientation or non-manifold edges only add candidates, which the position test then
 // discards. Points without polygons are candidates too. Serial, and integer sums commute: the flags
 // never depend on threads.
-std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
+// The sweep also checks every polygon's ids as it reads them (one pass over the connectivity
+// instead of two): @a idsInRange is false if a polygon names a point outside [0, numPts) (its
+// corners are then left out, and the candidates mean nothing).
+std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, bool& idsInRange)
 {
   // splitmix64's finaliser: sums of a few hashes of structured ids behave as random 64-bit values.
   // A multiply and one xor-shift cost a third less of this sweep but stay nearly additive (for
@@ -1681,32 +1684,70 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
   };
-  Buffer<std::uint64_t> sum(numPts);
-  Buffer<unsigned char> used(numPts);
-  std::fill_n(sum.data(), numPts, 0);
-  std::fill_n(used.data(), numPts, 0);
+  // Each point's hash made once and read per corner (on usual meshes from nearby entries, which
+  // the cache holds): fewer instructions than hashing every corner's next point.
+  Buffer<std::uint64_t> hashes(numPts), sums(numPts);
+  Buffer<unsigned char> marks(numPts);
+  const std::uint64_t* hashOf = hashes.data();
+  std::uint64_t* sum = sums.data();
+  unsigned char* used = marks.data();
+  for (vtkIdType i = 0; i < numPts; ++i)
+  {
+    hashes[i] = hash(i);
+    sum[i] = 0;
+    used[i] = 0;
+  }
+  const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
+  auto outside = [limit](vtkIdType id) { return static_cast<std::uint64_t>(id) >= limit; };
+  bool inRange = true;
   for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
   {
     const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
-    if (e - b < 2)
+    const vtkIdType* corner = mesh.Conn + b;
+    const vtkIdType n = e - b;
+    // Triangles (the usual polygons) unrolled: each corner adds the hash of its next point minus
+    // that of its previous one.
+    if (n == 3)
+    {
+      const vtkIdType p = corner[0], q = corner[1], r = corner[2];
+      if (outside(p) | outside(q) | outside(r))
+      {
+        inRange = false;
+        continue;
+      }
+      const std::uint64_t hp = hashOf[p], hq = hashOf[q], hr = hashOf[r];
+      sum[p] += hq - hr;
+      sum[q] += hr - hp;
+      sum[r] += hp - hq;
+      used[p] = used[q] = used[r] = 1;
+      continue;
+    }
+    bool bad = false;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      bad |= outside(corner[k]);
+    }
+    if (bad)
+    {
+      inRange = false;
+      continue;
+    }
+    if (n < 2)
     {
       continue;
     }
-    // The two edges at a corner (prev->k and k->next) at once: one update per corner, and
-    // no corner's update waits for the previous corner's store.
-    const vtkIdType* corner = mesh.Conn + b;
-    const vtkIdType n = e - b;
-    const std::uint64_t firstHash = hash(corner[0]);
-    std::uint64_t prevHash = hash(corner[n - 1]), hereHash = firstHash;
+    // The two edges at a corner (prev->k and k->next) at once: one update per corner.
+    std::uint64_t prevHash = hashOf[corner[n - 1]], hereHash = hashOf[corner[0]];
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const std::uint64_t nextHash = k + 1 < n ? hash(corner[k + 1]) : firstHash;
+      const std::uint64_t nextHash = hashOf[corner[k + 1 < n ? k + 1 : 0]];
       sum[corner[k]] += nextHash - prevHash;
       used[corner[k]] = 1;
       prevHash = hereHash;
       hereHash = nextHash;
     }
   }
+  idsInRange = inRange;
   std::vector<vtkIdType> candidates;
   for (vtkIdType i = 0; i < numPts; ++i)
   {
@@ -2173,25 +2214,29 @@ int vtkDisplacementMapFilter::RequestData(
 
   // Every pass reads points through the cells: an id outside the points must stop the filter
   // before a pass reads it. Checked once per change of the cells or of the point count: here, or
-  // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it before the seam
-  // search (the cells' other reader there but for the derivative-scale estimate, which skips ids
-  // outside the points).
+  // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it, by the seam sweep
+  // as it reads the polygons (the cells' other reader there but for the derivative-scale
+  // estimate, which skips ids outside the points) or before the seam search where none runs.
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
   MeshCache::Key idsKey;
   idsKey.Objects = { polys, polys->GetConnectivityArray(), strips, strips->GetConnectivityArray() };
   idsKey.NumPoints = numPts;
-  auto idsInRange = [&]()
+  auto idsChecked = [&]()
   {
     MeshCache& cache = *this->Cache;
+    cache.IdsKey = idsKey;
+    cache.IdsTime.Modified();
+    cache.IdsInRange = true;
+  };
+  auto idsInRange = [&]()
+  {
     if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
       !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
     {
       return false;
     }
-    cache.IdsKey = idsKey;
-    cache.IdsTime.Modified();
-    cache.IdsInRange = true;
+    idsChecked();
     return true;
   };
   auto idsError = [&]()
@@ -2449,15 +2494,21 @@ int vtkDisplacementMapFilter::RequestData(
     static const std::vector<std::pair<vtkIdType, vtkIdType>> noGroups;
     std::vector<std::pair<vtkIdType, vtkIdType>>& groups = cache.Groups;
     const bool findsGroups = this->MergeSeams && !haveGroups;
+    // False if a polygon names a point outside the input's (the seam sweep checks them).
     auto findGroups = [&]()
     {
       if (!findsGroups)
       {
-        return;
+        return true;
       }
       cache.HaveGroups = false;
       groups.clear();
-      const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
+      bool polygonIdsInRange = true;
+      const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts, polygonIdsInRange);
+      if (!polygonIdsInRange)
+      {
+        return false;
+      }
       if (candidates.size() > 1)
       {
         // The input's bounds here, beside pass 1, which reads no bounds.
@@ -2485,6 +2536,7 @@ int vtkDisplacementMapFilter::RequestData(
       cache.GroupsTolerance = this->SeamTolerance;
       cache.GroupsTime.Modified();
       cache.HaveGroups = true;
+      return true;
     };
     auto forEachGroup = [&](auto&& body)
     {
@@ -2550,13 +2602,19 @@ int vtkDisplacementMapFilter::RequestData(
                 }
                 vtkSMPTools::For(0, numPts, Grain, worker);
               }
-              else if (task == 1)
+              else if (task == 1 && checkIdsBeside && findsGroups)
               {
-                idsOk = !checkIdsBeside || idsInRange();
+                // The seam sweep checks the polygons' ids as it reads them: the strips' are
+                // left.
+                idsOk = vtkSurfaceDetailCells::PointIdsInRange(strips, numPts) && findGroups();
                 if (idsOk)
                 {
-                  findGroups();
+                  idsChecked();
                 }
+              }
+              else if (task == 1)
+              {
+                idsOk = (!checkIdsBeside || idsInRange()) && findGroups();
               }
               else if (linksAside)
               {
