@@ -429,7 +429,9 @@ struct PolyLinks
     this->Links = table.Links.data();
   }
 
-  void BuildLinks(vtkIdType numPts, LinkTable& table) const
+  // False if a polygon names a point outside [0, numPts) (the table is then unusable): the count
+  // pass checks every id as it reads it, so that no separate check reads the connectivity.
+  bool BuildLinks(vtkIdType numPts, LinkTable& table) const
   {
     // Counts, then their running sums (the end of each point's list), then the polygons
     // placed from the last one down: each list ends up in increasing order and the ends
@@ -438,9 +440,19 @@ struct PolyLinks
     vtkIdType* offsets = table.Offsets.data();
     std::fill_n(offsets, numPts + 1, 0);
     const vtkIdType nConn = this->Offsets[this->NumCells];
+    const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
+    bool bad = false;
     for (vtkIdType k = 0; k < nConn; ++k)
     {
-      ++offsets[this->Conn[k]];
+      // An id outside is counted in the last entry, which only a good table needs at 0.
+      const vtkIdType id = this->Conn[k];
+      const bool outside = static_cast<std::uint64_t>(id) >= limit;
+      bad |= outside;
+      ++offsets[outside ? numPts : id];
+    }
+    if (bad)
+    {
+      return false;
     }
     for (vtkIdType i = 0; i < numPts; ++i)
     {
@@ -455,6 +467,7 @@ struct PolyLinks
         links[--offsets[this->Conn[k]]] = c;
       }
     }
+    return true;
   }
 };
 
@@ -2213,10 +2226,11 @@ int vtkDisplacementMapFilter::RequestData(
   }
 
   // Every pass reads points through the cells: an id outside the points must stop the filter
-  // before a pass reads it. Checked once per change of the cells or of the point count: here, or
-  // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it, by the seam sweep
-  // as it reads the polygons (the cells' other reader there but for the derivative-scale
-  // estimate, which skips ids outside the points) or before the seam search where none runs.
+  // before a pass reads it. Checked once per change of the cells or of the point count: here
+  // where nothing moves (Scale 0), else beside pass 1 by the passes that read the polygons first
+  // anyway, as they read them: the link build (which pass 1 waits for where it reads the cells)
+  // and the seam sweep (the derivative-scale estimate, the other reader there, skips ids outside
+  // the points); by a separate pass where neither runs.
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
   MeshCache::Key idsKey;
@@ -2253,7 +2267,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (!cache.IdsInRange || !MeshCache::Fresh(cache.IdsKey, idsKey, idsChanged, cache.IdsTime))
     {
       cache.IdsInRange = false;
-      checkIdsBeside = !needLinks && this->Scale != 0.0;
+      checkIdsBeside = this->Scale != 0.0;
       if (!checkIdsBeside && !idsInRange())
       {
         idsError();
@@ -2394,14 +2408,31 @@ int vtkDisplacementMapFilter::RequestData(
     // while another thread sweeps the seams).
     const bool linksBeside = needLinks && !haveLinks;
     const bool linksFirst = linksBeside && this->NormalMode != Mesh;
+    // False if a polygon names a point outside the input's.
     auto buildLinks = [&]()
     {
       cache.HaveLinks = false;
-      mesh.BuildLinks(numPts, cache.Links);
+      if (!mesh.BuildLinks(numPts, cache.Links))
+      {
+        return false;
+      }
       cache.LinksKey = linksKey;
       cache.LinksTime.Modified();
       cache.HaveLinks = true;
+      return true;
     };
+    // Where links are needed, building them checks the polygons' ids (the strips are none then);
+    // kept links (the polygons unchanged since a good build) check nothing, so the ids are
+    // checked here, before anything reads them.
+    if (checkIdsBeside && needLinks && !linksBeside)
+    {
+      if (!idsInRange())
+      {
+        idsError();
+        return 0;
+      }
+      checkIdsBeside = false;
+    }
     if (needLinks || this->MergeSeams || useDerivs)
     {
       mesh.Build(polys);
@@ -2441,10 +2472,6 @@ int vtkDisplacementMapFilter::RequestData(
         cache.HaveFitNormals = true;
       }
       ctx.FitNormals = fitNormals.data();
-    }
-    if (useDerivs)
-    {
-      EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
     }
     const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
       (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
@@ -2583,7 +2610,10 @@ int vtkDisplacementMapFilter::RequestData(
         // after pass 1 (Mesh) come first in the task list instead, so that the two serial tasks
         // start at once on two threads and pass 1 fills the time they leave (last, the links
         // would follow the seams on one thread while the other ran out of work).
+        // The derivative-scale estimate (serial, for pass 1 only) is made by the thread that then
+        // starts pass 1 too.
         const bool linksAside = linksBeside && !linksFirst;
+        bool linksOk = true;
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
           {
@@ -2591,16 +2621,27 @@ int vtkDisplacementMapFilter::RequestData(
             {
               if (task == 0 && linksAside)
               {
-                buildLinks();
+                linksOk = buildLinks();
               }
               else if (task == 0)
               {
                 if (linksFirst)
                 {
-                  buildLinks();
+                  linksOk = buildLinks();
                   mesh.UseLinks(cache.Links);
                 }
-                vtkSMPTools::For(0, numPts, Grain, worker);
+                if (useDerivs)
+                {
+                  EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
+                }
+                if (linksOk)
+                {
+                  vtkSMPTools::For(0, numPts, Grain, worker);
+                }
+              }
+              else if (task == 1 && needLinks)
+              {
+                idsOk = findGroups();
               }
               else if (task == 1 && checkIdsBeside && findsGroups)
               {
@@ -2622,9 +2663,14 @@ int vtkDisplacementMapFilter::RequestData(
               }
             }
           });
+        idsOk = idsOk && linksOk;
         if (!idsOk)
         {
           return;
+        }
+        if (checkIdsBeside && needLinks)
+        {
+          idsChecked();
         }
         if (needLinks)
         {
