@@ -459,12 +459,25 @@ struct PolyLinks
       offsets[i + 1] += offsets[i];
     }
     table.Links.Resize(nConn);
-    vtkIdType* links = table.Links.data();
+    // Restricted locals (no store into the links makes the loop reload the polygons' offsets), and
+    // triangles, the usual polygons, unrolled.
+    vtkIdType* __restrict ends = offsets;
+    vtkIdType* __restrict links = table.Links.data();
+    const vtkIdType* __restrict cellOffsets = this->Offsets;
+    const vtkIdType* __restrict conn = this->Conn;
     for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
     {
-      for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
+      const vtkIdType b = cellOffsets[c], e = cellOffsets[c + 1];
+      if (e - b == 3)
       {
-        links[--offsets[this->Conn[k]]] = c;
+        links[--ends[conn[b]]] = c;
+        links[--ends[conn[b + 1]]] = c;
+        links[--ends[conn[b + 2]]] = c;
+        continue;
+      }
+      for (vtkIdType k = b; k < e; ++k)
+      {
+        links[--ends[conn[k]]] = c;
       }
     }
     return true;
