@@ -1711,26 +1711,32 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
     return z ^ (z >> 31);
   };
   // Each point's hash made once and read per corner (on usual meshes from nearby entries, which
-  // the cache holds): fewer instructions than hashing every corner's next point.
-  Buffer<std::uint64_t> hashes(numPts), sums(numPts);
+  // the cache holds): fewer instructions than hashing every corner's next point. A point's hash
+  // and sum side by side: a corner's update and its neighbours' hashes touch half the cache lines.
+  struct HashSum
+  {
+    std::uint64_t Hash, Sum;
+  };
+  Buffer<HashSum> table(numPts);
   Buffer<unsigned char> marks(numPts);
-  const std::uint64_t* hashOf = hashes.data();
-  std::uint64_t* sum = sums.data();
-  unsigned char* used = marks.data();
+  HashSum* __restrict point = table.data();
+  unsigned char* __restrict used = marks.data();
   for (vtkIdType i = 0; i < numPts; ++i)
   {
-    hashes[i] = hash(i);
-    sum[i] = 0;
+    point[i].Hash = hash(i);
+    point[i].Sum = 0;
     used[i] = 0;
   }
+  const vtkIdType* __restrict offsets = mesh.Offsets;
+  const vtkIdType* __restrict conn = mesh.Conn;
+  const vtkIdType numCells = mesh.NumCells;
   const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
   auto outside = [limit](vtkIdType id) { return static_cast<std::uint64_t>(id) >= limit; };
   bool inRange = true;
-  for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
   {
-    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
-    const vtkIdType* corner = mesh.Conn + b;
-    const vtkIdType n = e - b;
+    const vtkIdType* corner = conn + offsets[cell];
+    const vtkIdType n = offsets[cell + 1] - offsets[cell];
     // Triangles (the usual polygons) unrolled: each corner adds the hash of its next point minus
     // that of its previous one.
     if (n == 3)
@@ -1741,10 +1747,10 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
         inRange = false;
         continue;
       }
-      const std::uint64_t hp = hashOf[p], hq = hashOf[q], hr = hashOf[r];
-      sum[p] += hq - hr;
-      sum[q] += hr - hp;
-      sum[r] += hp - hq;
+      const std::uint64_t hp = point[p].Hash, hq = point[q].Hash, hr = point[r].Hash;
+      point[p].Sum += hq - hr;
+      point[q].Sum += hr - hp;
+      point[r].Sum += hp - hq;
       used[p] = used[q] = used[r] = 1;
       continue;
     }
@@ -1763,11 +1769,11 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
       continue;
     }
     // The two edges at a corner (prev->k and k->next) at once: one update per corner.
-    std::uint64_t prevHash = hashOf[corner[n - 1]], hereHash = hashOf[corner[0]];
+    std::uint64_t prevHash = point[corner[n - 1]].Hash, hereHash = point[corner[0]].Hash;
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const std::uint64_t nextHash = hashOf[corner[k + 1 < n ? k + 1 : 0]];
-      sum[corner[k]] += nextHash - prevHash;
+      const std::uint64_t nextHash = point[corner[k + 1 < n ? k + 1 : 0]].Hash;
+      point[corner[k]].Sum += nextHash - prevHash;
       used[corner[k]] = 1;
       prevHash = hereHash;
       hereHash = nextHash;
@@ -1777,7 +1783,7 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
   std::vector<vtkIdType> candidates;
   for (vtkIdType i = 0; i < numPts; ++i)
   {
-    if (sum[i] != 0 || !used[i])
+    if (point[i].Sum != 0 || !used[i])
     {
       candidates.push_back(i);
     }
