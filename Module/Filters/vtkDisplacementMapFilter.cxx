@@ -429,7 +429,9 @@ struct PolyLinks
     this->Links = table.Links.data();
   }
 
-  void BuildLinks(vtkIdType numPts, LinkTable& table) const
+  // False if a polygon names a point outside [0, numPts) (the table is then unusable): the count
+  // pass checks every id as it reads it, so that no separate check reads the connectivity.
+  bool BuildLinks(vtkIdType numPts, LinkTable& table) const
   {
     // Counts, then their running sums (the end of each point's list), then the polygons
     // placed from the last one down: each list ends up in increasing order and the ends
@@ -438,23 +440,47 @@ struct PolyLinks
     vtkIdType* offsets = table.Offsets.data();
     std::fill_n(offsets, numPts + 1, 0);
     const vtkIdType nConn = this->Offsets[this->NumCells];
+    const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
+    bool bad = false;
     for (vtkIdType k = 0; k < nConn; ++k)
     {
-      ++offsets[this->Conn[k]];
+      // An id outside is counted in the last entry, which only a good table needs at 0.
+      const vtkIdType id = this->Conn[k];
+      const bool outside = static_cast<std::uint64_t>(id) >= limit;
+      bad |= outside;
+      ++offsets[outside ? numPts : id];
+    }
+    if (bad)
+    {
+      return false;
     }
     for (vtkIdType i = 0; i < numPts; ++i)
     {
       offsets[i + 1] += offsets[i];
     }
     table.Links.Resize(nConn);
-    vtkIdType* links = table.Links.data();
+    // Restricted locals (no store into the links makes the loop reload the polygons' offsets), and
+    // triangles, the usual polygons, unrolled.
+    vtkIdType* __restrict ends = offsets;
+    vtkIdType* __restrict links = table.Links.data();
+    const vtkIdType* __restrict cellOffsets = this->Offsets;
+    const vtkIdType* __restrict conn = this->Conn;
     for (vtkIdType c = this->NumCells - 1; c >= 0; --c)
     {
-      for (vtkIdType k = this->Offsets[c]; k < this->Offsets[c + 1]; ++k)
+      const vtkIdType b = cellOffsets[c], e = cellOffsets[c + 1];
+      if (e - b == 3)
       {
-        links[--offsets[this->Conn[k]]] = c;
+        links[--ends[conn[b]]] = c;
+        links[--ends[conn[b + 1]]] = c;
+        links[--ends[conn[b + 2]]] = c;
+        continue;
+      }
+      for (vtkIdType k = b; k < e; ++k)
+      {
+        links[--ends[conn[k]]] = c;
       }
     }
+    return true;
   }
 };
 
@@ -1838,7 +1864,10 @@ struct MeshPointNormalWorker : BlockOps<R, L>
 // Inconsistent orientation or non-manifold edges only add candidates, which the position test then
 // discards. Points without polygons are candidates too. Serial, and integer sums commute: the flags
 // never depend on threads.
-std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
+// The sweep also checks every polygon's ids as it reads them (one pass over the connectivity
+// instead of two): @a idsInRange is false if a polygon names a point outside [0, numPts) (its
+// corners are then left out, and the candidates mean nothing).
+std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, bool& idsInRange)
 {
   // splitmix64's finaliser: sums of a few hashes of structured ids behave as random 64-bit values.
   // A multiply and one xor-shift cost a third less of this sweep but stay nearly additive (for
@@ -1851,36 +1880,80 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
   };
-  Buffer<std::uint64_t> sum(numPts);
-  Buffer<unsigned char> used(numPts);
-  std::fill_n(sum.data(), numPts, 0);
-  std::fill_n(used.data(), numPts, 0);
-  for (vtkIdType cell = 0; cell < mesh.NumCells; ++cell)
+  // Each point's hash made once and read per corner (on usual meshes from nearby entries, which
+  // the cache holds): fewer instructions than hashing every corner's next point. A point's hash
+  // and sum side by side: a corner's update and its neighbours' hashes touch half the cache lines.
+  struct HashSum
   {
-    const vtkIdType b = mesh.Offsets[cell], e = mesh.Offsets[cell + 1];
-    if (e - b < 2)
+    std::uint64_t Hash, Sum;
+  };
+  Buffer<HashSum> table(numPts);
+  Buffer<unsigned char> marks(numPts);
+  HashSum* __restrict point = table.data();
+  unsigned char* __restrict used = marks.data();
+  for (vtkIdType i = 0; i < numPts; ++i)
+  {
+    point[i].Hash = hash(i);
+    point[i].Sum = 0;
+    used[i] = 0;
+  }
+  const vtkIdType* __restrict offsets = mesh.Offsets;
+  const vtkIdType* __restrict conn = mesh.Conn;
+  const vtkIdType numCells = mesh.NumCells;
+  const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
+  auto outside = [limit](vtkIdType id) { return static_cast<std::uint64_t>(id) >= limit; };
+  bool inRange = true;
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
+  {
+    const vtkIdType* corner = conn + offsets[cell];
+    const vtkIdType n = offsets[cell + 1] - offsets[cell];
+    // Triangles (the usual polygons) unrolled: each corner adds the hash of its next point minus
+    // that of its previous one.
+    if (n == 3)
+    {
+      const vtkIdType p = corner[0], q = corner[1], r = corner[2];
+      if (outside(p) | outside(q) | outside(r))
+      {
+        inRange = false;
+        continue;
+      }
+      const std::uint64_t hp = point[p].Hash, hq = point[q].Hash, hr = point[r].Hash;
+      point[p].Sum += hq - hr;
+      point[q].Sum += hr - hp;
+      point[r].Sum += hp - hq;
+      used[p] = used[q] = used[r] = 1;
+      continue;
+    }
+    bool bad = false;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      bad |= outside(corner[k]);
+    }
+    if (bad)
+    {
+      inRange = false;
+      continue;
+    }
+    if (n < 2)
     {
       continue;
     }
-    // The two edges at a corner (prev->k and k->next) at once: one update per corner, and
-    // no corner's update waits for the previous corner's store.
-    const vtkIdType* corner = mesh.Conn + b;
-    const vtkIdType n = e - b;
-    const std::uint64_t firstHash = hash(corner[0]);
-    std::uint64_t prevHash = hash(corner[n - 1]), hereHash = firstHash;
+    // The two edges at a corner (prev->k and k->next) at once: one update per corner.
+    std::uint64_t prevHash = point[corner[n - 1]].Hash, hereHash = point[corner[0]].Hash;
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const std::uint64_t nextHash = k + 1 < n ? hash(corner[k + 1]) : firstHash;
-      sum[corner[k]] += nextHash - prevHash;
+      const std::uint64_t nextHash = point[corner[k + 1 < n ? k + 1 : 0]].Hash;
+      point[corner[k]].Sum += nextHash - prevHash;
       used[corner[k]] = 1;
       prevHash = hereHash;
       hereHash = nextHash;
     }
   }
+  idsInRange = inRange;
   std::vector<vtkIdType> candidates;
   for (vtkIdType i = 0; i < numPts; ++i)
   {
-    if (sum[i] != 0 || !used[i])
+    if (point[i].Sum != 0 || !used[i])
     {
       candidates.push_back(i);
     }
@@ -2342,26 +2415,31 @@ int vtkDisplacementMapFilter::RequestData(
   }
 
   // Every pass reads points through the cells: an id outside the points must stop the filter
-  // before a pass reads it. Checked once per change of the cells or of the point count: here, or
-  // where pass 1 reads no cells (Approximate with dPdu/dPdv, None), beside it before the seam
-  // search (the cells' other reader there but for the derivative-scale estimate, which skips ids
-  // outside the points).
+  // before a pass reads it. Checked once per change of the cells or of the point count: here
+  // where nothing moves (Scale 0), else beside pass 1 by the passes that read the polygons first
+  // anyway, as they read them: the link build (which pass 1 waits for where it reads the cells)
+  // and the seam sweep (the derivative-scale estimate, the other reader there, skips ids outside
+  // the points); by a separate pass where neither runs.
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
   MeshCache::Key idsKey;
   idsKey.Objects = { polys, polys->GetConnectivityArray(), strips, strips->GetConnectivityArray() };
   idsKey.NumPoints = numPts;
-  auto idsInRange = [&]()
+  auto idsChecked = [&]()
   {
     MeshCache& cache = *this->Cache;
+    cache.IdsKey = idsKey;
+    cache.IdsTime.Modified();
+    cache.IdsInRange = true;
+  };
+  auto idsInRange = [&]()
+  {
     if (!vtkSurfaceDetailCells::PointIdsInRange(polys, numPts) ||
       !vtkSurfaceDetailCells::PointIdsInRange(strips, numPts))
     {
       return false;
     }
-    cache.IdsKey = idsKey;
-    cache.IdsTime.Modified();
-    cache.IdsInRange = true;
+    idsChecked();
     return true;
   };
   auto idsError = [&]()
@@ -2378,7 +2456,7 @@ int vtkDisplacementMapFilter::RequestData(
     if (!cache.IdsInRange || !MeshCache::Fresh(cache.IdsKey, idsKey, idsChanged, cache.IdsTime))
     {
       cache.IdsInRange = false;
-      checkIdsBeside = !needLinks && this->Scale != 0.0;
+      checkIdsBeside = this->Scale != 0.0;
       if (!checkIdsBeside && !idsInRange())
       {
         idsError();
@@ -2519,14 +2597,31 @@ int vtkDisplacementMapFilter::RequestData(
     // while another thread sweeps the seams).
     const bool linksBeside = needLinks && !haveLinks;
     const bool linksFirst = linksBeside && this->NormalMode != Mesh;
+    // False if a polygon names a point outside the input's.
     auto buildLinks = [&]()
     {
       cache.HaveLinks = false;
-      mesh.BuildLinks(numPts, cache.Links);
+      if (!mesh.BuildLinks(numPts, cache.Links))
+      {
+        return false;
+      }
       cache.LinksKey = linksKey;
       cache.LinksTime.Modified();
       cache.HaveLinks = true;
+      return true;
     };
+    // Where links are needed, building them checks the polygons' ids (the strips are none then);
+    // kept links (the polygons unchanged since a good build) check nothing, so the ids are
+    // checked here, before anything reads them.
+    if (checkIdsBeside && needLinks && !linksBeside)
+    {
+      if (!idsInRange())
+      {
+        idsError();
+        return 0;
+      }
+      checkIdsBeside = false;
+    }
     if (needLinks || this->MergeSeams || useDerivs)
     {
       mesh.Build(polys);
@@ -2566,10 +2661,6 @@ int vtkDisplacementMapFilter::RequestData(
         cache.HaveFitNormals = true;
       }
       ctx.FitNormals = fitNormals.data();
-    }
-    if (useDerivs)
-    {
-      EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
     }
     const int fitsLayout = (this->NormalMode == Approximate && !useDerivs ? 1 : 0) |
       (this->NormalMode == Exact ? (useDerivs ? 2 : 3) : 0);
@@ -2619,15 +2710,21 @@ int vtkDisplacementMapFilter::RequestData(
     static const std::vector<std::pair<vtkIdType, vtkIdType>> noGroups;
     std::vector<std::pair<vtkIdType, vtkIdType>>& groups = cache.Groups;
     const bool findsGroups = this->MergeSeams && !haveGroups;
+    // False if a polygon names a point outside the input's (the seam sweep checks them).
     auto findGroups = [&]()
     {
       if (!findsGroups)
       {
-        return;
+        return true;
       }
       cache.HaveGroups = false;
       groups.clear();
-      const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts);
+      bool polygonIdsInRange = true;
+      const std::vector<vtkIdType> candidates = BoundaryPoints(mesh, numPts, polygonIdsInRange);
+      if (!polygonIdsInRange)
+      {
+        return false;
+      }
       if (candidates.size() > 1)
       {
         // The input's bounds here, beside pass 1, which reads no bounds.
@@ -2655,6 +2752,7 @@ int vtkDisplacementMapFilter::RequestData(
       cache.GroupsTolerance = this->SeamTolerance;
       cache.GroupsTime.Modified();
       cache.HaveGroups = true;
+      return true;
     };
     auto forEachGroup = [&](auto&& body)
     {
@@ -2701,7 +2799,10 @@ int vtkDisplacementMapFilter::RequestData(
         // after pass 1 (Mesh) come first in the task list instead, so that the two serial tasks
         // start at once on two threads and pass 1 fills the time they leave (last, the links
         // would follow the seams on one thread while the other ran out of work).
+        // The derivative-scale estimate (serial, for pass 1 only) is made by the thread that then
+        // starts pass 1 too.
         const bool linksAside = linksBeside && !linksFirst;
+        bool linksOk = true;
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
           {
@@ -2709,24 +2810,41 @@ int vtkDisplacementMapFilter::RequestData(
             {
               if (task == 0 && linksAside)
               {
-                buildLinks();
+                linksOk = buildLinks();
               }
               else if (task == 0)
               {
                 if (linksFirst)
                 {
-                  buildLinks();
+                  linksOk = buildLinks();
                   mesh.UseLinks(cache.Links);
                 }
-                vtkSMPTools::For(0, numPts, Grain, worker);
+                if (useDerivs)
+                {
+                  EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
+                }
+                if (linksOk)
+                {
+                  vtkSMPTools::For(0, numPts, Grain, worker);
+                }
+              }
+              else if (task == 1 && needLinks)
+              {
+                idsOk = findGroups();
+              }
+              else if (task == 1 && checkIdsBeside && findsGroups)
+              {
+                // The seam sweep checks the polygons' ids as it reads them: the strips' are
+                // left.
+                idsOk = vtkSurfaceDetailCells::PointIdsInRange(strips, numPts) && findGroups();
+                if (idsOk)
+                {
+                  idsChecked();
+                }
               }
               else if (task == 1)
               {
-                idsOk = !checkIdsBeside || idsInRange();
-                if (idsOk)
-                {
-                  findGroups();
-                }
+                idsOk = (!checkIdsBeside || idsInRange()) && findGroups();
               }
               else if (linksAside)
               {
@@ -2734,9 +2852,14 @@ int vtkDisplacementMapFilter::RequestData(
               }
             }
           });
+        idsOk = idsOk && linksOk;
         if (!idsOk)
         {
           return;
+        }
+        if (checkIdsBeside && needLinks)
+        {
+          idsChecked();
         }
         if (needLinks)
         {
