@@ -1305,7 +1305,6 @@ struct DisplaceWorker : BlockOps<R, L>
       // same lanes); the points whose fits float cannot hold keep NaN and are redone.
       alignas(64) DoubleLanes fps[3], fpt[3], fns[3], fnt[3];
       this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, false);
-      std::fill_n(unkept, count, 0);
       for (int q = 0; q < 3; ++q)
       {
         for (int k = 0; k < count; ++k)
@@ -1322,26 +1321,7 @@ struct DisplaceWorker : BlockOps<R, L>
           }
         }
       }
-      auto flag = [&](const Lanes* r)
-      {
-        for (int q = 0; q < 3; ++q)
-        {
-          for (int k = 0; k < count; ++k)
-          {
-            unkept[k] |= FloatFitUnkept(r[q][k]);
-          }
-        }
-      };
-      if (WantP)
-      {
-        flag(ps);
-        flag(pt);
-      }
-      if (WantN)
-      {
-        flag(ns);
-        flag(nt);
-      }
+      FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
       for (int k = 0; k < count; ++k)
       {
         redo[k] |= unkept[k];
@@ -1383,6 +1363,37 @@ struct DisplaceWorker : BlockOps<R, L>
     std::memcpy(&u, &r, sizeof(u));
     u &= 0x7fffffffu;
     return static_cast<int>((u != 0) & (u - 0x00800000u >= 0x7f7fffffu - 0x00800000u));
+  }
+
+  static VTK_ALWAYS_INLINE int FloatFitUnkept(double v) { return FloatFitUnkept(ToReal<float>(v)); }
+
+  // Sets @a unkept for the points of the block with a fitted value that float cannot hold (float
+  // or double lanes @a V), in loops that vectorise.
+  template <bool WantP, bool WantN, typename V>
+  static VTK_ALWAYS_INLINE void FlagUnkept(
+    int count, const V* ps, const V* pt, const V* ns, const V* nt, Flags unkept)
+  {
+    std::fill_n(unkept, count, 0);
+    auto flag = [&](const V* f)
+    {
+      for (int q = 0; q < 3; ++q)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          unkept[k] |= FloatFitUnkept(f[q][k]);
+        }
+      }
+    };
+    if (WantP)
+    {
+      flag(ps);
+      flag(pt);
+    }
+    if (WantN)
+    {
+      flag(ns);
+      flag(nt);
+    }
   }
 
   // With float arrays (double lanes: the redone points) the fits are kept rounded to float and
@@ -1438,17 +1449,8 @@ struct DisplaceWorker : BlockOps<R, L>
     std::fill_n(unkept, count, 0);
     if constexpr (std::is_same<R, float>::value && !Float)
     {
-      // The double lanes of float arrays' points (redone points): Fit's rounding and flags.
-      auto flag = [&](const DoubleLanes* f)
-      {
-        for (int q = 0; q < 3; ++q)
-        {
-          for (int k = 0; k < count; ++k)
-          {
-            unkept[k] |= FloatFitUnkept(ToReal<float>(f[q][k]));
-          }
-        }
-      };
+      // The double lanes of float arrays' points (redone points): Fit's flags and rounding.
+      FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
       auto round = [&](DoubleLanes* f)
       {
         for (int q = 0; q < 3; ++q)
@@ -1460,16 +1462,6 @@ struct DisplaceWorker : BlockOps<R, L>
           }
         }
       };
-      if (WantP)
-      {
-        flag(ps);
-        flag(pt);
-      }
-      if (WantN)
-      {
-        flag(ns);
-        flag(nt);
-      }
       if (WantP)
       {
         round(ps);
