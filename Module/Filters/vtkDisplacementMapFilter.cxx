@@ -1322,6 +1322,7 @@ struct DisplaceWorker : BlockOps<R, L>
         }
       }
       FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
+      FlagVanished<WantP, WantN>(count, fps, fpt, fns, fnt, unkept);
       for (int k = 0; k < count; ++k)
       {
         redo[k] |= unkept[k];
@@ -1396,9 +1397,47 @@ struct DisplaceWorker : BlockOps<R, L>
     }
   }
 
+  // Adds to @a unkept the points of the block with a fitted value (in double) that is not zero
+  // but below float's normal range: rounded to float it keeps few bits (a subnormal, which
+  // FlagUnkept also flags) or none (zero, which FlagUnkept cannot tell from a zero fit). The
+  // smallest magnitude that is not zero, in loops of doubles alone, which vectorise.
+  template <bool WantP, bool WantN>
+  static VTK_ALWAYS_INLINE void FlagVanished(int count, const DoubleLanes* ps,
+    const DoubleLanes* pt, const DoubleLanes* ns, const DoubleLanes* nt, Flags unkept)
+  {
+    constexpr double none = std::numeric_limits<double>::infinity();
+    alignas(64) DoubleLanes least;
+    std::fill_n(least, count, none);
+    auto smallest = [&](const DoubleLanes* f)
+    {
+      for (int q = 0; q < 3; ++q)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          const double a = std::abs(f[q][k]);
+          least[k] = std::min(least[k], a == 0.0 ? none : a);
+        }
+      }
+    };
+    if (WantP)
+    {
+      smallest(ps);
+      smallest(pt);
+    }
+    if (WantN)
+    {
+      smallest(ns);
+      smallest(nt);
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      unkept[k] |= static_cast<int>(least[k] < std::numeric_limits<float>::min());
+    }
+  }
+
   // With float arrays (double lanes: the redone points) the fits are kept rounded to float and
   // the lanes get the rounded values, which a re-execution reads back, except at points with a
-  // fitted value that float cannot hold at its precision (FloatFitUnkept; flagged @a unkept):
+  // fitted value that float cannot hold at its precision (FlagUnkept, FlagVanished; @a unkept):
   // these keep NaN, and their lanes the double values. Float lanes (Fit) round and keep alike.
   template <bool WantP, bool WantN>
   VTK_ALWAYS_INLINE void FitDouble(vtkIdType first, int count, DoubleLanes ps[3], DoubleLanes pt[3],
@@ -1451,6 +1490,7 @@ struct DisplaceWorker : BlockOps<R, L>
     {
       // The double lanes of float arrays' points (redone points): Fit's flags and rounding.
       FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
+      FlagVanished<WantP, WantN>(count, ps, pt, ns, nt, unkept);
       auto round = [&](DoubleLanes* f)
       {
         for (int q = 0; q < 3; ++q)

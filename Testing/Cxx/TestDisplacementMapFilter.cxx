@@ -1801,6 +1801,49 @@ TEST(DisplacementMapFilter, FloatArraysBeyondFloatRangeAgreeWithDouble)
   }
 }
 
+// Fitted derivatives too small for float: P_s and P_t of a 1e-30 torus whose texture coordinates
+// span 1e15 (about 6e-45: subnormal in float) or 1e16, 1e17 (below float's smallest subnormal:
+// zero in float). Either way float cannot hold them, and the normals of the float arrays must
+// agree with those of the same values in double arrays (not fall back on the input normals, 90
+// degrees off where the heights' slope dwarfs the surface's), in first executions and
+// re-executions alike. The heights slope at (0,0), where such texture coordinates sample them.
+TEST(DisplacementMapFilter, FloatArraysWithVanishingFitsAgreeWithDouble)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage([](double u, double v)
+    { return 0.5 + 0.3 * std::sin(2 * Pi * u + 1.0) + 0.2 * std::cos(2 * Pi * v + 0.5); },
+    64, 32);
+  for (double g : { 1e15, 1e16, 1e17 })
+  {
+    for (bool derivatives : { false, true })
+    {
+      auto fl = Rescaled(MakeMesh(s, 48, 24, derivatives), 1e-30, g, true);
+      auto d = Rescaled(fl, 1.0, 1.0, false); // the same values, exactly
+      for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
+      {
+        vtkNew<vtkDisplacementMapFilter> again;
+        again->SetInputData(0, fl);
+        again->SetInputData(1, image);
+        again->SetNormalMode(mode);
+        again->SetInterpolation(vtkDisplacementMapFilter::Cubic);
+        again->SetMidlevel(0.5);
+        for (double scale : { 0.1, -1.0 })
+        {
+          std::ostringstream what;
+          what << "g " << g << " scale " << scale << " mode " << mode << " derivatives "
+               << derivatives;
+          auto outD = Displace(d, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
+          auto outF = Displace(fl, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
+          EXPECT_LT(CheckAndCompare(outD, outF, what.str()), 2e-5) << what.str();
+          again->SetScale(scale);
+          again->Update();
+          EXPECT_TRUE(SameOutput(again->GetOutput(), outF)) << what.str() << " re-execution";
+        }
+      }
+    }
+  }
+}
+
 namespace
 {
 // A 96 x 48 mesh of @a s with two points that float lanes redo in double lanes: a zero
