@@ -1260,19 +1260,19 @@ struct DisplaceWorker : BlockOps<R, L>
   void RefitOne(vtkIdType i, bool wantP, bool exact, Lanes ps[3], Lanes pt[3], Lanes ns[3],
     Lanes nt[3], int k) const
   {
-    alignas(64) Lanes fps[3], fpt[3], fns[3], fnt[3], least;
+    alignas(64) Lanes fps[3], fpt[3], fns[3], fnt[3];
     alignas(64) Flags unkept;
     if (wantP && exact)
     {
-      this->template FitDouble<true, true>(i, 1, fps, fpt, fns, fnt, unkept, false, least);
+      this->template FitDouble<true, true>(i, 1, fps, fpt, fns, fnt, unkept, false);
     }
     else if (wantP)
     {
-      this->template FitDouble<true, false>(i, 1, fps, fpt, fns, fnt, unkept, false, least);
+      this->template FitDouble<true, false>(i, 1, fps, fpt, fns, fnt, unkept, false);
     }
     else
     {
-      this->template FitDouble<false, true>(i, 1, fps, fpt, fns, fnt, unkept, false, least);
+      this->template FitDouble<false, true>(i, 1, fps, fpt, fns, fnt, unkept, false);
     }
     for (int j = 0; j < 3; ++j)
     {
@@ -1304,9 +1304,7 @@ struct DisplaceWorker : BlockOps<R, L>
       // Solved in double, rounded to float and kept (re-executions read the kept values: the
       // same lanes); the points whose fits float cannot hold keep NaN and are redone.
       alignas(64) DoubleLanes fps[3], fpt[3], fns[3], fnt[3];
-      alignas(64) DoubleLanes least;
-      this->template FitDouble<WantP, WantN>(
-        first, count, fps, fpt, fns, fnt, unkept, false, least);
+      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, false);
       for (int q = 0; q < 3; ++q)
       {
         for (int k = 0; k < count; ++k)
@@ -1324,7 +1322,7 @@ struct DisplaceWorker : BlockOps<R, L>
         }
       }
       FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
-      FlagVanished(count, least, unkept);
+      FlagVanished<WantP, WantN>(count, fps, fpt, fns, fnt, unkept);
       for (int k = 0; k < count; ++k)
       {
         redo[k] |= unkept[k];
@@ -1353,8 +1351,7 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     else
     {
-      alignas(64) DoubleLanes least;
-      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt, unkept, true, least);
+      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt, unkept, true);
     }
   }
 
@@ -1400,15 +1397,35 @@ struct DisplaceWorker : BlockOps<R, L>
     }
   }
 
-  // Adds to @a unkept the points of the block with a fitted value that is not zero but below
-  // float's normal range (@a least, per point the smallest magnitude that is not zero, from
-  // FitDouble): rounded to float it keeps few bits (a subnormal, which FlagUnkept also flags) or
-  // none (zero, which FlagUnkept cannot tell from a zero fit).
-  static VTK_ALWAYS_INLINE void FlagVanished(int count, const DoubleLanes least, Flags unkept)
+  // Adds to @a unkept the points of the block with a fitted value (double lanes, before rounding)
+  // that is not zero but below float's normal range: rounded to float it keeps few bits (a
+  // subnormal, which FlagUnkept also flags) or none (zero, which FlagUnkept cannot tell from a
+  // zero fit). Branch-free, so that the loops vectorise.
+  template <bool WantP, bool WantN>
+  static VTK_ALWAYS_INLINE void FlagVanished(int count, const DoubleLanes* ps,
+    const DoubleLanes* pt, const DoubleLanes* ns, const DoubleLanes* nt, Flags unkept)
   {
-    for (int k = 0; k < count; ++k)
+    auto see = [&](const DoubleLanes* f)
     {
-      unkept[k] |= static_cast<int>(least[k] < std::numeric_limits<float>::min());
+      for (int q = 0; q < 3; ++q)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          const double a = std::abs(f[q][k]);
+          unkept[k] |= static_cast<int>(
+            (a > 0.0) & (a < static_cast<double>(std::numeric_limits<float>::min())));
+        }
+      }
+    };
+    if (WantP)
+    {
+      see(ps);
+      see(pt);
+    }
+    if (WantN)
+    {
+      see(ns);
+      see(nt);
     }
   }
 
@@ -1418,7 +1435,7 @@ struct DisplaceWorker : BlockOps<R, L>
   // these keep NaN, and their lanes the double values. Float lanes (Fit) round and keep alike.
   template <bool WantP, bool WantN>
   VTK_ALWAYS_INLINE void FitDouble(vtkIdType first, int count, DoubleLanes ps[3], DoubleLanes pt[3],
-    DoubleLanes ns[3], DoubleLanes nt[3], Flags unkept, bool store, DoubleLanes least) const
+    DoubleLanes ns[3], DoubleLanes nt[3], Flags unkept, bool store) const
   {
     const Context<R>& c = this->C;
     alignas(64) DoubleLanes m[3], bp[6], bn[6], near, far;
@@ -1444,15 +1461,6 @@ struct DisplaceWorker : BlockOps<R, L>
       const bool spans = det > 1e-12 * tr * tr;
       const double divisor = spans ? det : 1.0;
       const bool distinct = spans & !(near[k] <= 1e-16 * far[k]);
-      // For FlagVanished: the smallest magnitude that is not zero (in the loop that has the
-      // values at hand; a loop of its own cost 10% of a first execution).
-      constexpr double none = std::numeric_limits<double>::infinity();
-      double smallest = none;
-      auto see = [&](double v)
-      {
-        const double a = std::abs(v);
-        smallest = std::min(smallest, a == 0.0 ? none : a);
-      };
       for (int q = 0; q < 3; ++q)
       {
         if (WantP)
@@ -1469,28 +1477,14 @@ struct DisplaceWorker : BlockOps<R, L>
           ns[q][k] = spans ? fs : 0.0;
           nt[q][k] = spans ? ft : 0.0;
         }
-        if constexpr (std::is_same<R, float>::value)
-        {
-          if (WantP)
-          {
-            see(ps[q][k]);
-            see(pt[q][k]);
-          }
-          if (WantN)
-          {
-            see(ns[q][k]);
-            see(nt[q][k]);
-          }
-        }
       }
-      least[k] = smallest;
     }
     std::fill_n(unkept, count, 0);
     if constexpr (std::is_same<R, float>::value && !Float)
     {
       // The double lanes of float arrays' points (redone points): Fit's flags and rounding.
       FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
-      FlagVanished(count, least, unkept);
+      FlagVanished<WantP, WantN>(count, ps, pt, ns, nt, unkept);
       auto round = [&](DoubleLanes* f)
       {
         for (int q = 0; q < 3; ++q)
