@@ -2166,9 +2166,15 @@ void EstimateDerivativeScale(
   }
 }
 
-// Points per task: small inputs run in the calling thread (no hand-over to a busy worker),
-// large ones in chunks big enough to amortise the scheduling.
-constexpr vtkIdType Grain = 16384;
+// Points (or polygons) per task for @a n of them: small inputs run in the calling thread (no
+// hand-over to a busy worker). Large ones are split finer: TBB's partitioner hands out big ranges
+// and splits them only as threads run out of work, so the grain bounds just the last pieces, and
+// a thread that finishes first waits at most for one such piece of the other's.
+constexpr vtkIdType SmallInput = 16384;
+inline vtkIdType Grain(vtkIdType n)
+{
+  return n <= SmallInput ? SmallInput : 2048;
+}
 
 template <typename T>
 vtkIdType CountNonFinite(const Texels<T>& tex)
@@ -2202,8 +2208,10 @@ struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
   {
-    // polys, offsets, connectivity, points, their data, normals, texture coordinates
-    std::array<const void*, 7> Objects = {};
+    // polys, offsets, connectivity, points, their data, normals, texture coordinates, and one
+    // more for a part built from other arrays (the derivative scale: dPdu and dPdv in place of
+    // the normals)
+    std::array<const void*, 8> Objects = {};
     vtkIdType NumPoints = -1;
   };
 
@@ -2242,6 +2250,14 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> Fits;
   Buffer<float> FitsFloat;
   bool HaveFits = false;
+
+  // The derivative scale (Context::DerivativeScale; EstimateDerivativeScale's samples are scattered
+  // over the mesh, so its few thousand cache misses are a serial delay before pass 1 of every
+  // execution): from the polygons, the points, dPdu, dPdv and the texture coordinates.
+  Key ScaleKey;
+  vtkTimeStamp ScaleTime;
+  double DerivativeScale[2] = { 1.0, 1.0 };
+  bool HaveScale = false;
 
   // The polygons' and strips' point ids were found in range: from them and the point count.
   Key IdsKey;
@@ -2637,7 +2653,7 @@ int vtkDisplacementMapFilter::RequestData(
       {
         cache.HaveFitNormals = false;
         fitNormals.Resize(4 * static_cast<size_t>(numPts));
-        vtkSMPTools::For(0, numPts, Grain,
+        vtkSMPTools::For(0, numPts, Grain(numPts),
           [&](vtkIdType begin, vtkIdType end)
           {
             for (vtkIdType i = begin; i < end; ++i)
@@ -2695,6 +2711,20 @@ int vtkDisplacementMapFilter::RequestData(
         keepFits = true;
       }
       ctx.Fits = fits.data();
+    }
+    MeshCache::Key scaleKey = groupsKey;
+    vtkMTimeType scaleChanged = 0;
+    bool haveScale = false;
+    if (useDerivs)
+    {
+      scaleKey.Objects[5] = dPdu;
+      scaleKey.Objects[6] = dPdv;
+      scaleKey.Objects[7] = tcoords;
+      scaleChanged = std::max({ groupsChanged, pointDataChanged, dPdu->GetMTime(), dPdv->GetMTime(),
+        tcoords->GetMTime() });
+      haveScale = cache.HaveScale &&
+        MeshCache::Fresh(cache.ScaleKey, scaleKey, scaleChanged, cache.ScaleTime);
+      cache.HaveScale = cache.HaveScale && haveScale;
     }
     // Coincident points (seams, poles; from the input points alone) as groups of (representative,
     // member) in increasing order, so that every sum over a group has one order whatever the thread
@@ -2811,13 +2841,17 @@ int vtkDisplacementMapFilter::RequestData(
                   linksOk = buildLinks();
                   mesh.UseLinks(cache.Links);
                 }
-                if (useDerivs)
+                if (useDerivs && haveScale)
+                {
+                  std::copy_n(cache.DerivativeScale, 2, ctx.DerivativeScale);
+                }
+                else if (useDerivs)
                 {
                   EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
                 }
                 if (linksOk)
                 {
-                  vtkSMPTools::For(0, numPts, Grain, worker);
+                  vtkSMPTools::For(0, numPts, Grain(numPts), worker);
                 }
               }
               else if (task == 1 && needLinks)
@@ -2840,7 +2874,7 @@ int vtkDisplacementMapFilter::RequestData(
               }
               else if (linksAside)
               {
-                vtkSMPTools::For(0, numPts, Grain, worker);
+                vtkSMPTools::For(0, numPts, Grain(numPts), worker);
               }
             }
           });
@@ -2915,6 +2949,13 @@ int vtkDisplacementMapFilter::RequestData(
       idsError();
       return 0;
     }
+    if (useDerivs && !haveScale)
+    {
+      std::copy_n(ctx.DerivativeScale, 2, cache.DerivativeScale);
+      cache.ScaleKey = scaleKey;
+      cache.ScaleTime.Modified();
+      cache.HaveScale = true;
+    }
     if (keepFits)
     {
       cache.FitsKey = fitsKey;
@@ -2946,7 +2987,7 @@ int vtkDisplacementMapFilter::RequestData(
       }
       MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data(), cache.Signs.data(),
         haveSigns };
-      vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
+      vtkSMPTools::For(0, mesh.NumCells, Grain(mesh.NumCells), polygons);
       if (!haveSigns)
       {
         cache.SignsKey = signsKey;
@@ -2954,7 +2995,7 @@ int vtkDisplacementMapFilter::RequestData(
         cache.HaveSigns = true;
       }
       MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
-      vtkSMPTools::For(0, numPts, Grain, worker);
+      vtkSMPTools::For(0, numPts, Grain(numPts), worker);
     }
 
     // One normal per group member: the sum of the members' that share its input normal.
