@@ -2166,15 +2166,9 @@ void EstimateDerivativeScale(
   }
 }
 
-// Points (or polygons) per task for @a n of them: small inputs run in the calling thread (no
-// hand-over to a busy worker). Large ones are split finer: TBB's partitioner hands out big ranges
-// and splits them only as threads run out of work, so the grain bounds just the last pieces, and
-// a thread that finishes first waits at most for one such piece of the other's.
-constexpr vtkIdType SmallInput = 16384;
-inline vtkIdType Grain(vtkIdType n)
-{
-  return n <= SmallInput ? SmallInput : 2048;
-}
+// Points per task: small inputs run in the calling thread (no hand-over to a busy worker),
+// large ones in chunks big enough to amortise the scheduling.
+constexpr vtkIdType Grain = 16384;
 
 template <typename T>
 vtkIdType CountNonFinite(const Texels<T>& tex)
@@ -2653,7 +2647,7 @@ int vtkDisplacementMapFilter::RequestData(
       {
         cache.HaveFitNormals = false;
         fitNormals.Resize(4 * static_cast<size_t>(numPts));
-        vtkSMPTools::For(0, numPts, Grain(numPts),
+        vtkSMPTools::For(0, numPts, Grain,
           [&](vtkIdType begin, vtkIdType end)
           {
             for (vtkIdType i = begin; i < end; ++i)
@@ -2851,7 +2845,7 @@ int vtkDisplacementMapFilter::RequestData(
                 }
                 if (linksOk)
                 {
-                  vtkSMPTools::For(0, numPts, Grain(numPts), worker);
+                  vtkSMPTools::For(0, numPts, Grain, worker);
                 }
               }
               else if (task == 1 && needLinks)
@@ -2874,7 +2868,7 @@ int vtkDisplacementMapFilter::RequestData(
               }
               else if (linksAside)
               {
-                vtkSMPTools::For(0, numPts, Grain(numPts), worker);
+                vtkSMPTools::For(0, numPts, Grain, worker);
               }
             }
           });
@@ -2987,7 +2981,7 @@ int vtkDisplacementMapFilter::RequestData(
       }
       MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data(), cache.Signs.data(),
         haveSigns };
-      vtkSMPTools::For(0, mesh.NumCells, Grain(mesh.NumCells), polygons);
+      vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
       if (!haveSigns)
       {
         cache.SignsKey = signsKey;
@@ -2995,7 +2989,7 @@ int vtkDisplacementMapFilter::RequestData(
         cache.HaveSigns = true;
       }
       MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
-      vtkSMPTools::For(0, numPts, Grain(numPts), worker);
+      vtkSMPTools::For(0, numPts, Grain, worker);
     }
 
     // One normal per group member: the sum of the members' that share its input normal.
