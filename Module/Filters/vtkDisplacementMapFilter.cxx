@@ -2236,8 +2236,10 @@ struct vtkDisplacementMapFilter::MeshCache
 {
   struct Key
   {
-    // polys, offsets, connectivity, points, their data, normals, texture coordinates
-    std::array<const void*, 7> Objects = {};
+    // polys, offsets, connectivity, points, their data, normals, texture coordinates, and one
+    // more for a part built from other arrays (the derivative scale: dPdu and dPdv in place of
+    // the normals)
+    std::array<const void*, 8> Objects = {};
     vtkIdType NumPoints = -1;
   };
 
@@ -2276,6 +2278,14 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> Fits;
   Buffer<float> FitsFloat;
   bool HaveFits = false;
+
+  // The derivative scale (Context::DerivativeScale; EstimateDerivativeScale's samples are scattered
+  // over the mesh, so its few thousand cache misses are a serial delay before pass 1 of every
+  // execution): from the polygons, the points, dPdu, dPdv and the texture coordinates.
+  Key ScaleKey;
+  vtkTimeStamp ScaleTime;
+  double DerivativeScale[2] = { 1.0, 1.0 };
+  bool HaveScale = false;
 
   // The polygons' and strips' point ids were found in range: from them and the point count.
   Key IdsKey;
@@ -2730,6 +2740,20 @@ int vtkDisplacementMapFilter::RequestData(
       }
       ctx.Fits = fits.data();
     }
+    MeshCache::Key scaleKey = groupsKey;
+    vtkMTimeType scaleChanged = 0;
+    bool haveScale = false;
+    if (useDerivs)
+    {
+      scaleKey.Objects[5] = dPdu;
+      scaleKey.Objects[6] = dPdv;
+      scaleKey.Objects[7] = tcoords;
+      scaleChanged = std::max({ groupsChanged, pointDataChanged, dPdu->GetMTime(), dPdv->GetMTime(),
+        tcoords->GetMTime() });
+      haveScale = cache.HaveScale &&
+        MeshCache::Fresh(cache.ScaleKey, scaleKey, scaleChanged, cache.ScaleTime);
+      cache.HaveScale = cache.HaveScale && haveScale;
+    }
     // Coincident points (seams, poles; from the input points alone) as groups of (representative,
     // member) in increasing order, so that every sum over a group has one order whatever the thread
     // count.
@@ -2845,7 +2869,11 @@ int vtkDisplacementMapFilter::RequestData(
                   linksOk = buildLinks();
                   mesh.UseLinks(cache.Links);
                 }
-                if (useDerivs)
+                if (useDerivs && haveScale)
+                {
+                  std::copy_n(cache.DerivativeScale, 2, ctx.DerivativeScale);
+                }
+                else if (useDerivs)
                 {
                   EstimateDerivativeScale(ctx, mesh, numPts, ctx.DerivativeScale);
                 }
@@ -2948,6 +2976,13 @@ int vtkDisplacementMapFilter::RequestData(
     {
       idsError();
       return 0;
+    }
+    if (useDerivs && !haveScale)
+    {
+      std::copy_n(ctx.DerivativeScale, 2, cache.DerivativeScale);
+      cache.ScaleKey = scaleKey;
+      cache.ScaleTime.Modified();
+      cache.HaveScale = true;
     }
     if (keepFits)
     {

@@ -726,6 +726,62 @@ TEST(DisplacementMapFilter, ReExecutionAfterContainerModified)
   }
 }
 
+// The derivative scale (texture coordinates against dPdu/dPdv) is kept between executions: it
+// must follow dPdu, dPdv and the texture coordinates changed in place. Each change here moves the
+// scale away from 1, which turns the analytic normals (factors that are not powers of 2, which the
+// estimate would undo to the bit).
+TEST(DisplacementMapFilter, ReExecutionAfterDerivativesModified)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  const int U = 48, V = 24;
+  for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
+  {
+    for (bool useFloat : { false, true })
+    {
+      auto mesh = MakeMesh(s, U, V, true, useFloat);
+      vtkNew<vtkDisplacementMapFilter> f;
+      f->SetInputData(0, mesh);
+      f->SetInputData(1, image);
+      f->SetNormalMode(mode);
+      f->SetMidlevel(0.5);
+      f->SetScale(0.2);
+      vtkPointData* pd = mesh->GetPointData();
+      auto scaleInPlace = [](vtkDataArray* a, double factor)
+      {
+        for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+        {
+          a->SetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents(),
+            factor *
+              a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents()));
+        }
+      };
+      ExpectFreshAfter(f, "dPdu scaled in place, then the array Modified()",
+        [&]()
+        {
+          scaleInPlace(pd->GetArray("dPdu"), 1.3);
+          pd->GetArray("dPdu")->Modified();
+        });
+      ExpectFreshAfter(f, "dPdv scaled in place, then the point data Modified()",
+        [&]()
+        {
+          scaleInPlace(pd->GetArray("dPdv"), 0.7);
+          pd->Modified();
+        });
+      ExpectFreshAfter(f, "texture coordinates stretched in place, then the array Modified()",
+        [&]()
+        {
+          vtkDataArray* tc = pd->GetTCoords();
+          for (vtkIdType i = 0; i < tc->GetNumberOfTuples(); ++i)
+          {
+            tc->SetComponent(i, 1, 1.5 * tc->GetComponent(i, 1));
+          }
+          tc->Modified();
+        });
+    }
+  }
+}
+
 // The kept mesh data against every other way the input can change between executions: a new
 // input object (which may reuse a freed one's address), a copy of another mesh into the same
 // object, another active array, dPdu/dPdv appearing and going, another precision, another thread
