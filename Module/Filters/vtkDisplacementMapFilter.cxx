@@ -1368,6 +1368,23 @@ struct DisplaceWorker : BlockOps<R, L>
 
   static VTK_ALWAYS_INLINE int FloatFitUnkept(double v) { return FloatFitUnkept(ToReal<float>(v)); }
 
+  // Calls @a f with the lanes of each field the fit makes: P_s and P_t (WantP), n_s and n_t
+  // (WantN).
+  template <bool WantP, bool WantN, typename V, typename F>
+  static VTK_ALWAYS_INLINE void ForEachFit(V* ps, V* pt, V* ns, V* nt, F&& f)
+  {
+    if (WantP)
+    {
+      f(ps);
+      f(pt);
+    }
+    if (WantN)
+    {
+      f(ns);
+      f(nt);
+    }
+  }
+
   // Sets @a unkept for the points of the block with a fitted value that float cannot hold (float
   // or double lanes @a V), in loops that vectorise.
   template <bool WantP, bool WantN, typename V>
@@ -1375,26 +1392,17 @@ struct DisplaceWorker : BlockOps<R, L>
     int count, const V* ps, const V* pt, const V* ns, const V* nt, Flags unkept)
   {
     std::fill_n(unkept, count, 0);
-    auto flag = [&](const V* f)
-    {
-      for (int q = 0; q < 3; ++q)
+    ForEachFit<WantP, WantN>(ps, pt, ns, nt,
+      [&](const V* f)
       {
-        for (int k = 0; k < count; ++k)
+        for (int q = 0; q < 3; ++q)
         {
-          unkept[k] |= FloatFitUnkept(f[q][k]);
+          for (int k = 0; k < count; ++k)
+          {
+            unkept[k] |= FloatFitUnkept(f[q][k]);
+          }
         }
-      }
-    };
-    if (WantP)
-    {
-      flag(ps);
-      flag(pt);
-    }
-    if (WantN)
-    {
-      flag(ns);
-      flag(nt);
-    }
+      });
   }
 
   // Adds to @a unkept the points of the block with a fitted value (double lanes, before rounding)
@@ -1405,28 +1413,19 @@ struct DisplaceWorker : BlockOps<R, L>
   static VTK_ALWAYS_INLINE void FlagVanished(int count, const DoubleLanes* ps,
     const DoubleLanes* pt, const DoubleLanes* ns, const DoubleLanes* nt, Flags unkept)
   {
-    auto see = [&](const DoubleLanes* f)
-    {
-      for (int q = 0; q < 3; ++q)
+    ForEachFit<WantP, WantN>(ps, pt, ns, nt,
+      [&](const DoubleLanes* f)
       {
-        for (int k = 0; k < count; ++k)
+        for (int q = 0; q < 3; ++q)
         {
-          const double a = std::abs(f[q][k]);
-          unkept[k] |= static_cast<int>(
-            (a > 0.0) & (a < static_cast<double>(std::numeric_limits<float>::min())));
+          for (int k = 0; k < count; ++k)
+          {
+            const double a = std::abs(f[q][k]);
+            unkept[k] |= static_cast<int>(
+              (a > 0.0) & (a < static_cast<double>(std::numeric_limits<float>::min())));
+          }
         }
-      }
-    };
-    if (WantP)
-    {
-      see(ps);
-      see(pt);
-    }
-    if (WantN)
-    {
-      see(ns);
-      see(nt);
-    }
+      });
   }
 
   // With float arrays (double lanes: the redone points) the fits are kept rounded to float and
@@ -1485,27 +1484,18 @@ struct DisplaceWorker : BlockOps<R, L>
       // The double lanes of float arrays' points (redone points): Fit's flags and rounding.
       FlagUnkept<WantP, WantN>(count, ps, pt, ns, nt, unkept);
       FlagVanished<WantP, WantN>(count, ps, pt, ns, nt, unkept);
-      auto round = [&](DoubleLanes* f)
-      {
-        for (int q = 0; q < 3; ++q)
+      ForEachFit<WantP, WantN>(ps, pt, ns, nt,
+        [&](DoubleLanes* f)
         {
-          for (int k = 0; k < count; ++k)
+          for (int q = 0; q < 3; ++q)
           {
-            const double r = static_cast<double>(ToReal<float>(f[q][k]));
-            f[q][k] = unkept[k] ? f[q][k] : r;
+            for (int k = 0; k < count; ++k)
+            {
+              const double r = static_cast<double>(ToReal<float>(f[q][k]));
+              f[q][k] = unkept[k] ? f[q][k] : r;
+            }
           }
-        }
-      };
-      if (WantP)
-      {
-        round(ps);
-        round(pt);
-      }
-      if (WantN)
-      {
-        round(ns);
-        round(nt);
-      }
+        });
     }
     if (!store)
     {
