@@ -1682,6 +1682,37 @@ struct FixedChunks
 constexpr double FastProjection2 = 1e-6;
 constexpr double FastCos = 1e-3;
 
+// A closed fan is taken as one run without matching its edges (FanIsOneRun) when its
+// corners show it is one: every corner's angle turning the same way about the normal (all
+// one way or all the other), between FastTurn and pi - FastTurn radians, the sum of the
+// angles within 1 radian of a full turn, and the point ids after the corners the same
+// multiset as the ids before them. Then the edges from each corner's next point to its
+// previous one make closed walks (each point entered as often as left) whose angles, all in
+// (0, pi) one way, add up to a whole number of turns each, at least one; a full turn in all
+// leaves one walk, visiting no point twice (that would split it into two walks of a turn or
+// more): every edge at the vertex joins exactly two triangles, which chain into one closed
+// run. The margins: the corner
+// loop's angles are within ~3e-5 radians of those between the projected edges when each
+// edge's projection keeps a tenth of its squared length (FastEdgeProjection: the rounding
+// of n.(e1 x e2) and e1.e2 - (e1.n)(e2.n), ~1e-6 of |e1||e2| for a unit normal rounded to
+// float or checked to 1e-6, over |proj e1||proj e2| >= 0.1 |e1||e2|); 32 corners' errors
+// are 1e-3 radians, far inside the 1 radian that separates one turn (2 pi) from two.
+constexpr double FastTurn = 1e-3;
+constexpr double FastEdgeProjection = 0.1;
+
+// The multiset check compares sums of a 64-bit mix of the ids (splitmix64's finaliser)
+// modulo 2^64: different multisets of up to 32 ids give equal sums with probability about
+// 2^-64 for ids a mesh did not choose to collide (the displacement filter's
+// BowtieSeamPointMerges accepts the same bound); a mesh built to collide could make the
+// fast path take two runs for one. Exact matching costs as much as FanIsOneRun itself.
+VTK_ALWAYS_INLINE std::uint64_t IdMix(std::int32_t id)
+{
+  std::uint64_t h = static_cast<std::uint32_t>(id) + 0x9e3779b97f4a7c15ull;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+
 // The fans of a run of vertices are done in blocks, in three phases: checking each fan and
 // listing its corners, weighing all the block's corners in one loop of plain arithmetic
 // (which the compiler vectorises), and summing each fan. Real: the corner loop's precision.
@@ -1717,6 +1748,11 @@ struct FanBlock
   alignas(64) std::int32_t Prev[MaxCorners + Lanes];
   alignas(64) Real N[3][MaxCorners + Lanes];
   alignas(64) Real WeightedOs[3][MaxCorners + Lanes];
+  // Per corner, for the closed-fan test (see FastTurn): its angle with the sign of its turn
+  // about the normal if it is within the margins (else 64, which no sum of a fan's angles
+  // can make up for), and the mix of its next point's id minus that of its previous one.
+  alignas(64) Real Turn[MaxCorners + Lanes];
+  alignas(64) std::uint64_t Cycle[MaxCorners + Lanes];
 };
 
 template <typename PT, typename NT, typename TT>
@@ -2541,7 +2577,7 @@ private:
         {
           break;
         }
-        if (!this->GatherFan<Wide>(
+        if (!this->GatherFan(
               v, k, nextIds, prevIds, orient, first, corners, fb, out + 4 * std::size_t(v)))
         {
           return false;
@@ -2549,7 +2585,7 @@ private:
       }
       References(fb, dir);
       this->WeighCorners(fb, dir);
-      if (!SumFans(fb, dir, out))
+      if (!SumFans<Wide>(fb, dir, nextIds, prevIds, first, out))
       {
         return false;
       }
@@ -2558,8 +2594,7 @@ private:
   }
 
   // Checks the fan of v and appends its corners to the block (a vertex that no triangle
-  // uses gets the default frame at once).
-  template <bool Wide>
+  // uses gets the default frame at once). Whether the fan is one run is decided in SumFans.
   VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
@@ -2587,10 +2622,7 @@ private:
       tri[a] = t;
       same &= orient[t] == o;
     }
-    // Each edge at v must join exactly two triangles or bound the fan (then the general
-    // path's greedy pairing finds the same links), and the links must chain all the
-    // triangles into one run.
-    if (!same || !FanIsOneRun<Wide>(next, prev, k))
+    if (!same)
     {
       return false;
     }
@@ -2641,6 +2673,13 @@ private:
     const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
     const Real* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
     Real* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
+    Real* __restrict turn = fb.Turn;
+    std::uint64_t* __restrict cycle = fb.Cycle;
+    // Next and Prev hold 3 * id, the same multisets as the ids.
+    for (int c = 0; c < nc; ++c)
+    {
+      cycle[c] = IdMix(next[c]) - IdMix(prev[c]);
+    }
     for (int c = 0; c < nc; ++c)
     {
       const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
@@ -2659,8 +2698,9 @@ private:
       const Real x = e1y * e2z - e1z * e2y;
       const Real y = e1z * e2x - e1x * e2z;
       const Real z = e1x * e2y - e1y * e2x;
-      const Real angle = FastAngle<Real>(
-        std::abs(x * nx[c] + y * ny[c] + z * nz[c]), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+      const Real cross = x * nx[c] + y * ny[c] + z * nz[c];
+      const Real angle =
+        FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
       const Real on = osx * nx[c] + osy * ny[c] + osz * nz[c];
       bool projected;
       Real osLength;
@@ -2689,6 +2729,12 @@ private:
         projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
         osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
       }
+      // In float, projected implies the edges' projections that FastTurn's margins need.
+      const bool edgesProjected =
+        Single || ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
+      const bool turns =
+        edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
+      turn[c] = turns ? (cross > Real(0) ? angle : -angle) : Real(64);
       // A failed check makes the weight NaN, which fails the fan's final test.
       const Real weight = (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
       wx[c] = weight * osx;
@@ -2732,14 +2778,24 @@ private:
   }
 
   // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
-  // in corner order, then the rest in one loop over the block's vertices.
-  VTK_ALWAYS_INLINE static bool SumFans(
-    FanBlock<Real>& fb, const std::array<float, 6>* dir, float* out)
+  // in corner order, then the rest in one loop over the block's vertices. A fan that the
+  // closed-fan test (see FastTurn) does not show to be one run must pass FanIsOneRun: each
+  // edge at v joins exactly two triangles or bounds the fan (then the general path's greedy
+  // pairing finds the same links), and the links chain all the triangles into one run.
+  template <bool Wide>
+  VTK_ALWAYS_INLINE static bool SumFans(FanBlock<Real>& fb, const std::array<float, 6>* dir,
+    const std::int32_t* nextIds, const std::int32_t* prevIds, const std::int32_t* first, float* out)
   {
     const int nv = fb.NumberOfVertices;
     int ok = 1;
+    unsigned char closed[FanBlock<Real>::MaxVertices];
     for (int j = 0; j < nv; ++j)
     {
+      // The signed angles' sum and the sum of their sizes: equal sizes (bit for bit when
+      // all turn one way, as IEEE sums are symmetric in sign) unless some corners turn the
+      // other way, by FastTurn or more each, which makes them 2 FastTurn apart.
+      Real turns = 0, sizes = 0;
+      std::uint64_t cycle = 0;
       // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
       const Real r0[3] = { Real(fb.R[0][j]), Real(fb.R[1][j]), Real(fb.R[2][j]) };
       const Real r1[3] = { Real(fb.R[3][j]), Real(fb.R[4][j]), Real(fb.R[5][j]) };
@@ -2753,7 +2809,13 @@ private:
         sum[0] += fb.WeightedOs[0][c];
         sum[1] += fb.WeightedOs[1][c];
         sum[2] += fb.WeightedOs[2][c];
+        turns += fb.Turn[c];
+        sizes += std::abs(fb.Turn[c]);
+        cycle += fb.Cycle[c];
       }
+      const bool one = (std::abs(sizes - Real(2.0 * vtkMath::Pi())) < Real(1)) &
+        (sizes - std::abs(turns) < Real(FastTurn)) & (cycle == 0);
+      closed[j] = one;
       fb.S[0][j] = sum[0];
       fb.S[1][j] = sum[1];
       fb.S[2][j] = sum[2];
@@ -2761,6 +2823,17 @@ private:
     if (!ok)
     {
       return false;
+    }
+    for (int j = 0; j < nv; ++j)
+    {
+      if (!closed[j])
+      {
+        const std::int32_t f = first[fb.Vertex[j]];
+        if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
+        {
+          return false;
+        }
+      }
     }
     const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
     const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
