@@ -1699,6 +1699,14 @@ constexpr double FastCos = 1e-3;
 // are 1e-3 radians, far inside the 1 radian that separates one turn (2 pi) from two.
 constexpr double FastTurn = 1e-3;
 constexpr double FastEdgeProjection = 0.1;
+// One sum per fan shows both the angles' total and which way its corners turn: a corner
+// turning the other way adds TurnBack to its angle, one outside the margins is TurnOff. The
+// fan's sum is a full turn (within 1) if all turn one way, TurnBack k more if all turn the
+// other; TurnBack exceeds 32 corners' angles (32 pi) and TurnOff 32 TurnBacks, so mixed
+// fans and fans with any corner off give neither. The float sums of 32 values below 2^14
+// are exact to 2^-6, far inside the 1 radian.
+constexpr double TurnBack = 256.0;
+constexpr double TurnOff = 65536.0;
 
 // The multiset check compares sums of a 64-bit mix of the ids (splitmix64's finaliser)
 // modulo 2^64: different multisets of up to 32 ids give equal sums with probability about
@@ -1748,9 +1756,9 @@ struct FanBlock
   alignas(64) std::int32_t Prev[MaxCorners + Lanes];
   alignas(64) Real N[3][MaxCorners + Lanes];
   alignas(64) Real WeightedOs[3][MaxCorners + Lanes];
-  // Per corner, for the closed-fan test (see FastTurn): its angle with the sign of its turn
-  // about the normal if it is within the margins (else 64, which no sum of a fan's angles
-  // can make up for), and the mix of its next point's id minus that of its previous one.
+  // Per corner, for the closed-fan test (see FastTurn): its angle if it is within the
+  // margins, plus TurnBack if it turns the other way about the normal (else TurnOff), and
+  // the mix of its next point's id minus that of its previous one.
   alignas(64) Real Turn[MaxCorners + Lanes];
   alignas(64) std::uint64_t Cycle[MaxCorners + Lanes];
 };
@@ -2734,7 +2742,7 @@ private:
         Single || ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
       const bool turns =
         edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
-      turn[c] = turns ? (cross > Real(0) ? angle : -angle) : Real(64);
+      turn[c] = turns ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
       // A failed check makes the weight NaN, which fails the fan's final test.
       const Real weight = (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
       wx[c] = weight * osx;
@@ -2789,12 +2797,10 @@ private:
     const int nv = fb.NumberOfVertices;
     int ok = 1;
     unsigned char closed[FanBlock<Real>::MaxVertices];
+    constexpr Real fullTurn = Real(2.0 * vtkMath::Pi());
     for (int j = 0; j < nv; ++j)
     {
-      // The signed angles' sum and the sum of their sizes: equal sizes (bit for bit when
-      // all turn one way, as IEEE sums are symmetric in sign) unless some corners turn the
-      // other way, by FastTurn or more each, which makes them 2 FastTurn apart.
-      Real turns = 0, sizes = 0;
+      Real turns = 0;
       std::uint64_t cycle = 0;
       // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
       const Real r0[3] = { Real(fb.R[0][j]), Real(fb.R[1][j]), Real(fb.R[2][j]) };
@@ -2810,11 +2816,12 @@ private:
         sum[1] += fb.WeightedOs[1][c];
         sum[2] += fb.WeightedOs[2][c];
         turns += fb.Turn[c];
-        sizes += std::abs(fb.Turn[c]);
         cycle += fb.Cycle[c];
       }
-      const bool one = (std::abs(sizes - Real(2.0 * vtkMath::Pi())) < Real(1)) &
-        (sizes - std::abs(turns) < Real(FastTurn)) & (cycle == 0);
+      const Real back = Real(TurnBack) * Real(fb.First[j + 1] - fb.First[j]);
+      const bool one = ((std::abs(turns - fullTurn) < Real(1)) |
+                         (std::abs(turns - back - fullTurn) < Real(1))) &
+        (cycle == 0);
       closed[j] = one;
       fb.S[0][j] = sum[0];
       fb.S[1][j] = sum[1];
@@ -2823,17 +2830,6 @@ private:
     if (!ok)
     {
       return false;
-    }
-    for (int j = 0; j < nv; ++j)
-    {
-      if (!closed[j])
-      {
-        const std::int32_t f = first[fb.Vertex[j]];
-        if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
-        {
-          return false;
-        }
-      }
     }
     const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
     const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
@@ -2856,6 +2852,14 @@ private:
       if (fb.Good[j] == 0.0)
       {
         return false;
+      }
+      if (!closed[j])
+      {
+        const std::int32_t f = first[fb.Vertex[j]];
+        if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
+        {
+          return false;
+        }
       }
       float* o = out + 4 * std::size_t(fb.Vertex[j]);
       o[0] = fb.Tangent[0][j];
