@@ -659,6 +659,64 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverFansThatAreNotOneRun)
   }
 }
 
+// A closed fan is taken as one run without matching its edges when its corners' angles
+// all turn one way and make a full turn, and the ids after and before its corners are the
+// same multiset (FastTurn in the filter); every other fan goes through the edge matching.
+// Each case fails one condition: two open chains whose angles make a full turn but for a
+// gap of 0.3 radians (the multisets differ; taken as one run, the vertex would not be split
+// as the general algorithm splits it), and one cycle through all its ring points that winds
+// twice about the vertex (angles of two turns; one run all the same, which the edge matching
+// must find). Fans of 3 to 9 triangles: the small fans' lanes and the hash table.
+TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverChainsAndDoubleTurns)
+{
+  auto generalPoints = [](vtkPolyData* input)
+  {
+    vtkNew<vtkMikkTSpaceTangents> general;
+    general->SetInputData(input);
+    general->SetAngularThreshold(179.9);
+    general->Update();
+    return general->GetOutput()->GetNumberOfPoints();
+  };
+  for (int n : { 3, 4, 6 }) // triangles per chain
+  {
+    const double span = vtkMath::Pi() - 0.15;
+    std::vector<std::array<double, 3>> ring;
+    std::vector<std::array<vtkIdType, 3>> tris;
+    for (int chain = 0; chain < 2; ++chain)
+    {
+      const vtkIdType start = 1 + chain * (n + 1);
+      for (int i = 0; i <= n; ++i)
+      {
+        const double a = chain * vtkMath::Pi() + span * i / n;
+        ring.push_back({ std::cos(a), std::sin(a), 0.1 * std::sin(3.0 * a) });
+      }
+      for (int i = 0; i < n; ++i)
+      {
+        tris.push_back({ 0, start + i, start + i + 1 });
+      }
+    }
+    auto chains = FansAroundOrigin(ring, tris);
+    const std::string what = "two chains of " + std::to_string(n);
+    ExpectFastPathIsGeneralPath(chains, what.c_str());
+    EXPECT_EQ(generalPoints(chains), chains->GetNumberOfPoints() + 1) << what;
+  }
+  for (int m : { 5, 7, 9 }) // ring points, each angle 4 pi / m
+  {
+    std::vector<std::array<double, 3>> ring;
+    std::vector<std::array<vtkIdType, 3>> tris;
+    for (int i = 0; i < m; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * i / m;
+      ring.push_back({ std::cos(a), std::sin(a), 0.1 * std::sin(3.0 * a) });
+      tris.push_back({ 0, vtkIdType(1 + (2 * i) % m), vtkIdType(1 + (2 * i + 2) % m) });
+    }
+    auto twice = FansAroundOrigin(ring, tris);
+    const std::string what = "fan winding twice, " + std::to_string(m);
+    ExpectFastPathIsGeneralPath(twice, what.c_str());
+    EXPECT_EQ(generalPoints(twice), twice->GetNumberOfPoints()) << what;
+  }
+}
+
 // The other side: a fan that is one run, closed or open, of every size from 1 triangle
 // to past the small fans' 8 lanes (9 is the first the hash table takes), its triangles
 // listed out of chain order, at point 0 (a real id next to the lanes' negative padding),
