@@ -1746,6 +1746,10 @@ struct FanBlock
   alignas(32) double R[6][MaxVertices];
   alignas(32) double Good[MaxVertices];
   alignas(32) double S[3][MaxVertices];
+  // Per vertex, its corners' sums of Turn and Cycle, and the closed-fan test's answer.
+  alignas(64) Real Turns[MaxVertices];
+  alignas(64) std::uint64_t Cycles[MaxVertices];
+  alignas(64) std::int32_t Closed[MaxVertices];
   alignas(32) float Tangent[3][MaxVertices];
   // Per corner: its triangle, the point ids of the corner and of its next and previous
   // corners (times 3: offsets of their coordinates), its vertex's unit normal, its weighted
@@ -2796,8 +2800,6 @@ private:
   {
     const int nv = fb.NumberOfVertices;
     int ok = 1;
-    unsigned char closed[FanBlock<Real>::MaxVertices];
-    constexpr Real fullTurn = Real(2.0 * vtkMath::Pi());
     for (int j = 0; j < nv; ++j)
     {
       Real turns = 0;
@@ -2818,11 +2820,8 @@ private:
         turns += fb.Turn[c];
         cycle += fb.Cycle[c];
       }
-      const Real back = Real(TurnBack) * Real(fb.First[j + 1] - fb.First[j]);
-      const bool one = ((std::abs(turns - fullTurn) < Real(1)) |
-                         (std::abs(turns - back - fullTurn) < Real(1))) &
-        (cycle == 0);
-      closed[j] = one;
+      fb.Turns[j] = turns;
+      fb.Cycles[j] = cycle;
       fb.S[0][j] = sum[0];
       fb.S[1][j] = sum[1];
       fb.S[2][j] = sum[2];
@@ -2835,8 +2834,17 @@ private:
     const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
     double* __restrict good = fb.Good;
     float* __restrict tx = fb.Tangent[0], * __restrict ty = fb.Tangent[1], * __restrict tz = fb.Tangent[2];
+    const Real* __restrict turns = fb.Turns;
+    const std::uint64_t* __restrict cycles = fb.Cycles;
+    const int* __restrict firsts = fb.First;
+    std::int32_t* __restrict closed = fb.Closed;
+    constexpr Real fullTurn = Real(2.0 * vtkMath::Pi());
     for (int j = 0; j < nv; ++j)
     {
+      const Real back = Real(TurnBack) * Real(firsts[j + 1] - firsts[j]);
+      closed[j] = ((std::abs(turns[j] - fullTurn) < Real(1)) |
+                    (std::abs(turns[j] - back - fullTurn) < Real(1))) &
+        (cycles[j] == 0);
       const double sumN = sx[j] * nx[j] + sy[j] * ny[j] + sz[j] * nz[j];
       const double t[3] = { sx[j] - sumN * nx[j], sy[j] - sumN * ny[j], sz[j] - sumN * nz[j] };
       const double len2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
@@ -2853,7 +2861,7 @@ private:
       {
         return false;
       }
-      if (!closed[j])
+      if (!fb.Closed[j])
       {
         const std::int32_t f = first[fb.Vertex[j]];
         if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
