@@ -1691,20 +1691,20 @@ constexpr double FastCos = 1e-3;
 // (0, pi) one way, add up to a whole number of turns each, at least one; a full turn in all
 // leaves one walk, visiting no point twice (that would split it into two walks of a turn or
 // more): every edge at the vertex joins exactly two triangles, which chain into one closed
-// run. The margins: the corner
-// loop's angles are within ~3e-5 radians of those between the projected edges when each
-// edge's projection keeps a tenth of its squared length (FastEdgeProjection: the rounding
-// of n.(e1 x e2) and e1.e2 - (e1.n)(e2.n), ~1e-6 of |e1||e2| for a unit normal rounded to
-// float or checked to 1e-6, over |proj e1||proj e2| >= 0.1 |e1||e2|); 32 corners' errors
-// are 1e-3 radians, far inside the 1 radian that separates one turn (2 pi) from two.
+// run, as FanIsOneRun would have found. The margins: the corner loop's angles are within
+// ~3e-5 radians of those between the projected edges when each edge's projection keeps a
+// tenth of its squared length (FastEdgeProjection: the rounding of n.(e1 x e2) and
+// e1.e2 - (e1.n)(e2.n), ~1e-6 of |e1||e2| for a unit normal rounded to float or checked to
+// 1e-6, over |proj e1||proj e2| >= 0.1 |e1||e2|), 30 times less than FastTurn; 32 corners'
+// errors are 1e-3 radians, far inside the 1 radian that separates one turn from two.
 constexpr double FastTurn = 1e-3;
 constexpr double FastEdgeProjection = 0.1;
 // One sum per fan shows both the angles' total and which way its corners turn: a corner
 // turning the other way adds TurnBack to its angle, one outside the margins is TurnOff. The
 // fan's sum is a full turn (within 1) if all turn one way, TurnBack k more if all turn the
 // other; TurnBack exceeds 32 corners' angles (32 pi) and TurnOff 32 TurnBacks, so mixed
-// fans and fans with any corner off give neither. The float sums of 32 values below 2^14
-// are exact to 2^-6, far inside the 1 radian.
+// fans and fans with any corner off give neither. Float sums of 32 values below 2^14 are
+// within 2^-6 of exact, far inside the 1 radian.
 constexpr double TurnBack = 256.0;
 constexpr double TurnOff = 65536.0;
 
