@@ -717,6 +717,59 @@ TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverChainsAndDoubleTurns)
   }
 }
 
+// The closed-fan test's sign condition (every corner turning the same way about the
+// normal) is what tells a fan of several closed walks, one of which folds back on itself,
+// from one closed run: two closed walks of four triangles each around the origin, both
+// folded (their corners' signed angles sum to zero turns; their sizes to 2 pi + 0.5),
+// every triangle of the same texture orientation, and every dP/ds and dP/dt within a
+// quarter turn of the origin's first triangle's and of their neighbours' (the fast path's
+// other checks pass). Their ids after and before the corners are the same multiset. Taken
+// as one run, the origin would get one frame; the general algorithm finds two groups.
+// The values were found by a search for these constraints (margins 0.08 in every cosine
+// and angle).
+TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverFoldedWalks)
+{
+  const double walks[2][4][2] = { { { 1.53, 0.95 }, { -0.3, 0.33 }, { -2.3, 2.1 }, { 1.79, 1.45 } },
+    { { 0.07, 0.63 }, { -0.13, 0.47 }, { -1.38, 0.19 }, { -0.18, 1.01 } } };
+  const double uvs[2][4][2] = { { { 0.07, 0.03 }, { 0.19, -1.04 }, { -0.84, 0.75 },
+                                  { -0.18, 2.84 } },
+    { { 0.53, 0.49 }, { 0.42, -0.76 }, { -0.63, -0.62 }, { -0.7, 0.99 } } };
+  for (int precision : { VTK_FLOAT, VTK_DOUBLE })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(precision);
+    auto normals = NewFloatArray("Normals", 3);
+    auto tcoords = NewFloatArray("TCoords", 2);
+    points->InsertNextPoint(0, 0, 0);
+    normals->InsertNextTuple3(0, 0, 1);
+    tcoords->InsertNextTuple2(0.5, 0.5);
+    vtkNew<vtkCellArray> polys;
+    for (int w = 0; w < 2; ++w)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        points->InsertNextPoint(walks[w][i][0], walks[w][i][1], 0.0);
+        normals->InsertNextTuple3(0, 0, 1);
+        tcoords->InsertNextTuple2(0.5 + 0.2 * uvs[w][i][0], 0.5 + 0.2 * uvs[w][i][1]);
+      }
+      for (int i = 0; i < 4; ++i)
+      {
+        const vtkIdType base = 1 + 4 * w;
+        const vtkIdType t[3] = { 0, base + (i + 1) % 4, base + i };
+        polys->InsertNextCell(3, t);
+      }
+    }
+    auto folded = MakeSurface(points, polys, normals, tcoords);
+    const char* what = precision == VTK_FLOAT ? "folded walks, float" : "folded walks, double";
+    ExpectFastPathIsGeneralPath(folded, what);
+    vtkNew<vtkMikkTSpaceTangents> general;
+    general->SetInputData(folded);
+    general->SetAngularThreshold(179.9);
+    general->Update();
+    EXPECT_EQ(general->GetOutput()->GetNumberOfPoints(), folded->GetNumberOfPoints() + 1) << what;
+  }
+}
+
 // The other side: a fan that is one run, closed or open, of every size from 1 triangle
 // to past the small fans' 8 lanes (9 is the first the hash table takes), its triangles
 // listed out of chain order, at point 0 (a real id next to the lanes' negative padding),
