@@ -770,6 +770,40 @@ TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverFoldedWalks)
   }
 }
 
+// Fans whose corners all turn clockwise about the normal (normals -z under triangles
+// counter-clockwise seen from +z) take the closed-fan test's other window (TurnBack per
+// corner plus a full turn): there too a double cone (two closed fans, two full turns) must
+// go through the edge matching and be split.
+TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverTurnsTheOtherWay)
+{
+  for (int n : { 4, 6 })
+  {
+    std::vector<std::array<double, 3>> ring;
+    std::vector<std::array<vtkIdType, 3>> cone;
+    for (int side = 0; side < 2; ++side)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double a = 2.0 * vtkMath::Pi() * (i + 0.3 * side) / n;
+        ring.push_back({ std::cos(a), std::sin(a), side == 0 ? 0.5 : -0.5 });
+        cone.push_back({ 0, vtkIdType(1 + side * n + i), vtkIdType(1 + side * n + (i + 1) % n) });
+      }
+    }
+    auto fans = FansAroundOrigin(ring, cone);
+    vtkDataArray* normals = fans->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      normals->SetTuple3(i, 0, 0, -1);
+    }
+    const std::string what = "double cone turning the other way (" + std::to_string(2 * n) + ")";
+    ExpectFastPathIsGeneralPath(fans, what.c_str());
+    vtkNew<vtkMikkTSpaceTangents> filter;
+    filter->SetInputData(fans);
+    filter->Update();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), fans->GetNumberOfPoints() + 1) << what;
+  }
+}
+
 // The other side: a fan that is one run, closed or open, of every size from 1 triangle
 // to past the small fans' 8 lanes (9 is the first the hash table takes), its triangles
 // listed out of chain order, at point 0 (a real id next to the lanes' negative padding),
