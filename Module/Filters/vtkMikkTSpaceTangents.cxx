@@ -1682,6 +1682,45 @@ struct FixedChunks
 constexpr double FastProjection2 = 1e-6;
 constexpr double FastCos = 1e-3;
 
+// A closed fan is taken as one run without matching its edges (FanIsOneRun) when its
+// corners show it is one: every corner's angle turning the same way about the normal (all
+// one way or all the other), between FastTurn and pi - FastTurn radians, the sum of the
+// angles within 1 radian of a full turn, and the point ids after the corners the same
+// multiset as the ids before them. Then the edges from each corner's next point to its
+// previous one make closed walks (each point entered as often as left) whose angles, all in
+// (0, pi) one way, add up to a whole number of turns each, at least one; a full turn in all
+// leaves one walk, visiting no point twice (that would split it into two walks of a turn or
+// more): every edge at the vertex joins exactly two triangles, which chain into one closed
+// run, as FanIsOneRun would have found. The margins: the corner loop's angles are within
+// ~3e-5 radians of those between the projected edges when each edge's projection keeps a
+// tenth of its squared length (FastEdgeProjection: the rounding of n.(e1 x e2) and
+// e1.e2 - (e1.n)(e2.n), ~1e-6 of |e1||e2| for a unit normal rounded to float or checked to
+// 1e-6, over |proj e1||proj e2| >= 0.1 |e1||e2|), 30 times less than FastTurn; 32 corners'
+// errors are 1e-3 radians, far inside the 1 radian that separates one turn from two.
+constexpr double FastTurn = 1e-3;
+constexpr double FastEdgeProjection = 0.1;
+// One sum per fan shows both the angles' total and which way its corners turn: a corner
+// turning the other way adds TurnBack to its angle, one outside the margins is TurnOff. The
+// fan's sum is a full turn (within 1) if all turn one way, TurnBack k more if all turn the
+// other; TurnBack exceeds 32 corners' angles (32 pi) and TurnOff 32 TurnBacks, so mixed
+// fans and fans with any corner off give neither. Float sums of 32 values below 2^14 are
+// within 2^-6 of exact, far inside the 1 radian.
+constexpr double TurnBack = 256.0;
+constexpr double TurnOff = 65536.0;
+
+// The multiset check compares sums of a 64-bit mix of the ids (splitmix64's finaliser)
+// modulo 2^64: different multisets of up to 32 ids give equal sums with probability about
+// 2^-64 for ids a mesh did not choose to collide (the displacement filter's
+// BowtieSeamPointMerges accepts the same bound); a mesh built to collide could make the
+// fast path take two runs for one. Exact matching costs as much as FanIsOneRun itself.
+VTK_ALWAYS_INLINE std::uint64_t IdMix(std::int32_t id)
+{
+  std::uint64_t h = static_cast<std::uint32_t>(id) + 0x9e3779b97f4a7c15ull;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+
 // The fans of a run of vertices are done in blocks, in three phases: checking each fan and
 // listing its corners, weighing all the block's corners in one loop of plain arithmetic
 // (which the compiler vectorises), and summing each fan. Real: the corner loop's precision.
@@ -1707,6 +1746,10 @@ struct FanBlock
   alignas(32) double R[6][MaxVertices];
   alignas(32) double Good[MaxVertices];
   alignas(32) double S[3][MaxVertices];
+  // Per vertex, its corners' sums of Turn and Cycle, and the closed-fan test's answer.
+  alignas(64) Real Turns[MaxVertices];
+  alignas(64) std::uint64_t Cycles[MaxVertices];
+  alignas(64) std::int32_t Closed[MaxVertices];
   alignas(32) float Tangent[3][MaxVertices];
   // Per corner: its triangle, the point ids of the corner and of its next and previous
   // corners (times 3: offsets of their coordinates), its vertex's unit normal, its weighted
@@ -1717,6 +1760,11 @@ struct FanBlock
   alignas(64) std::int32_t Prev[MaxCorners + Lanes];
   alignas(64) Real N[3][MaxCorners + Lanes];
   alignas(64) Real WeightedOs[3][MaxCorners + Lanes];
+  // Per corner, for the closed-fan test (see FastTurn): its angle if it is within the
+  // margins, plus TurnBack if it turns the other way about the normal (else TurnOff), and
+  // the mix of its next point's id minus that of its previous one.
+  alignas(64) Real Turn[MaxCorners + Lanes];
+  alignas(64) std::uint64_t Cycle[MaxCorners + Lanes];
 };
 
 template <typename PT, typename NT, typename TT>
@@ -2548,8 +2596,8 @@ private:
         }
       }
       References(fb, dir);
-      this->WeighCorners(fb, dir);
-      if (!SumFans(fb, dir, out))
+      this->WeighCorners<Wide>(fb, dir);
+      if (!SumFans<Wide>(fb, dir, nextIds, prevIds, first, out))
       {
         return false;
       }
@@ -2558,7 +2606,8 @@ private:
   }
 
   // Checks the fan of v and appends its corners to the block (a vertex that no triangle
-  // uses gets the default frame at once).
+  // uses gets the default frame at once). Whether the fan is one run is decided here in the
+  // baseline build, in SumFans in the others (see WeighCorners).
   template <bool Wide>
   VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
@@ -2587,12 +2636,16 @@ private:
       tri[a] = t;
       same &= orient[t] == o;
     }
-    // Each edge at v must join exactly two triangles or bound the fan (then the general
-    // path's greedy pairing finds the same links), and the links must chain all the
-    // triangles into one run.
-    if (!same || !FanIsOneRun<Wide>(next, prev, k))
+    if (!same)
     {
       return false;
+    }
+    if constexpr (!Wide)
+    {
+      if (!FanIsOneRun<Wide>(next, prev, k))
+      {
+        return false;
+      }
     }
     const int j = fb.NumberOfVertices;
     fb.NV[0][j] = n[0];
@@ -2619,7 +2672,12 @@ private:
   // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
   // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
   // One loop over the block's corners, which the compiler vectorises (with gathers in the
-  // AVX2 build).
+  // AVX2 build). Wide: the AVX2 and AVX-512 builds, which also prepare the closed-fan test;
+  // the baseline build (SSE2) has no 64-bit vector multiply, where the ids' mix costs more
+  // than the edge matching it saves (3.6% more cycles on the 1M torus), so there every fan
+  // goes through FanIsOneRun in GatherFan, as before the test. Both ways take the same
+  // decisions.
+  template <bool Wide>
   VTK_ALWAYS_INLINE void WeighCorners(FanBlock<Real>& fb, const std::array<float, 6>* dir) const
   {
     constexpr bool Single = std::is_same<Real, float>::value;
@@ -2641,6 +2699,16 @@ private:
     const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
     const Real* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
     Real* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
+    Real* __restrict turn = fb.Turn;
+    std::uint64_t* __restrict cycle = fb.Cycle;
+    if constexpr (Wide)
+    {
+      // Next and Prev hold 3 * id, the same multisets as the ids.
+      for (int c = 0; c < nc; ++c)
+      {
+        cycle[c] = IdMix(next[c]) - IdMix(prev[c]);
+      }
+    }
     for (int c = 0; c < nc; ++c)
     {
       const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
@@ -2659,8 +2727,9 @@ private:
       const Real x = e1y * e2z - e1z * e2y;
       const Real y = e1z * e2x - e1x * e2z;
       const Real z = e1x * e2y - e1y * e2x;
-      const Real angle = FastAngle<Real>(
-        std::abs(x * nx[c] + y * ny[c] + z * nz[c]), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+      const Real cross = x * nx[c] + y * ny[c] + z * nz[c];
+      const Real angle =
+        FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
       const Real on = osx * nx[c] + osy * ny[c] + osz * nz[c];
       bool projected;
       Real osLength;
@@ -2688,6 +2757,15 @@ private:
         // margin of 4), so shorter projections (an edge along the normal) go that way.
         projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
         osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+      }
+      // In float, projected implies the edges' projections that FastTurn's margins need.
+      const bool edgesProjected =
+        Single || ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
+      const bool turns =
+        edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
+      if constexpr (Wide)
+      {
+        turn[c] = turns ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
       }
       // A failed check makes the weight NaN, which fails the fan's final test.
       const Real weight = (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
@@ -2732,14 +2810,20 @@ private:
   }
 
   // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
-  // in corner order, then the rest in one loop over the block's vertices.
-  VTK_ALWAYS_INLINE static bool SumFans(
-    FanBlock<Real>& fb, const std::array<float, 6>* dir, float* out)
+  // in corner order, then the rest in one loop over the block's vertices. A fan that the
+  // closed-fan test (see FastTurn) does not show to be one run must pass FanIsOneRun: each
+  // edge at v joins exactly two triangles or bounds the fan (then the general path's greedy
+  // pairing finds the same links), and the links chain all the triangles into one run.
+  template <bool Wide>
+  VTK_ALWAYS_INLINE static bool SumFans(FanBlock<Real>& fb, const std::array<float, 6>* dir,
+    const std::int32_t* nextIds, const std::int32_t* prevIds, const std::int32_t* first, float* out)
   {
     const int nv = fb.NumberOfVertices;
     int ok = 1;
     for (int j = 0; j < nv; ++j)
     {
+      Real turns = 0;
+      std::uint64_t cycle = 0;
       // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
       const Real r0[3] = { Real(fb.R[0][j]), Real(fb.R[1][j]), Real(fb.R[2][j]) };
       const Real r1[3] = { Real(fb.R[3][j]), Real(fb.R[4][j]), Real(fb.R[5][j]) };
@@ -2753,7 +2837,14 @@ private:
         sum[0] += fb.WeightedOs[0][c];
         sum[1] += fb.WeightedOs[1][c];
         sum[2] += fb.WeightedOs[2][c];
+        if constexpr (Wide)
+        {
+          turns += fb.Turn[c];
+          cycle += fb.Cycle[c];
+        }
       }
+      fb.Turns[j] = turns;
+      fb.Cycles[j] = cycle;
       fb.S[0][j] = sum[0];
       fb.S[1][j] = sum[1];
       fb.S[2][j] = sum[2];
@@ -2766,8 +2857,18 @@ private:
     const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
     double* __restrict good = fb.Good;
     float* __restrict tx = fb.Tangent[0], * __restrict ty = fb.Tangent[1], * __restrict tz = fb.Tangent[2];
+    const Real* __restrict turns = fb.Turns;
+    const std::uint64_t* __restrict cycles = fb.Cycles;
+    const int* __restrict firsts = fb.First;
+    std::int32_t* __restrict closed = fb.Closed;
+    constexpr Real fullTurn = Real(2.0 * vtkMath::Pi());
     for (int j = 0; j < nv; ++j)
     {
+      const Real back = Real(TurnBack) * Real(firsts[j + 1] - firsts[j]);
+      closed[j] = !Wide ||
+        (((std::abs(turns[j] - fullTurn) < Real(1)) |
+           (std::abs(turns[j] - back - fullTurn) < Real(1))) &
+          (cycles[j] == 0));
       const double sumN = sx[j] * nx[j] + sy[j] * ny[j] + sz[j] * nz[j];
       const double t[3] = { sx[j] - sumN * nx[j], sy[j] - sumN * ny[j], sz[j] - sumN * nz[j] };
       const double len2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
@@ -2783,6 +2884,14 @@ private:
       if (fb.Good[j] == 0.0)
       {
         return false;
+      }
+      if (!fb.Closed[j])
+      {
+        const std::int32_t f = first[fb.Vertex[j]];
+        if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
+        {
+          return false;
+        }
       }
       float* o = out + 4 * std::size_t(fb.Vertex[j]);
       o[0] = fb.Tangent[0][j];

@@ -52,6 +52,10 @@
  * There each point has one frame, computed in one parallel pass per point, with the
  * triangles' directions kept in single precision and a polynomial angle (frames within
  * 1e-5 degrees of the general algorithm's). Other meshes take the general algorithm.
+ * In the AVX2 and AVX-512 builds, whether a closed fan is one run is shown by its angles
+ * and by sums of a 64-bit hash of its neighbours' ids: a mesh whose ids were chosen to make
+ * those sums collide (by chance about 2^-64 per fan) could get one frame at a vertex where
+ * MikkTSpace gives two.
  *
  * @sa vtkPolyDataTangents vtkPolyDataNormals
  */

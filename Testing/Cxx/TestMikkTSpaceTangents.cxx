@@ -659,6 +659,151 @@ TEST(vtkMikkTSpaceTangents, FastPathHandsOverFansThatAreNotOneRun)
   }
 }
 
+// A closed fan is taken as one run without matching its edges when its corners' angles
+// all turn one way and make a full turn, and the ids after and before its corners are the
+// same multiset (FastTurn in the filter); every other fan goes through the edge matching.
+// Each case fails one condition: two open chains whose angles make a full turn but for a
+// gap of 0.3 radians (the multisets differ; taken as one run, the vertex would not be split
+// as the general algorithm splits it), and one cycle through all its ring points that winds
+// twice about the vertex (angles of two turns; one run all the same, which the edge matching
+// must find). Fans of 3 to 9 triangles: the small fans' lanes and the hash table.
+TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverChainsAndDoubleTurns)
+{
+  auto generalPoints = [](vtkPolyData* input)
+  {
+    vtkNew<vtkMikkTSpaceTangents> general;
+    general->SetInputData(input);
+    general->SetAngularThreshold(179.9);
+    general->Update();
+    return general->GetOutput()->GetNumberOfPoints();
+  };
+  for (int n : { 3, 4, 6 }) // triangles per chain
+  {
+    const double span = vtkMath::Pi() - 0.15;
+    std::vector<std::array<double, 3>> ring;
+    std::vector<std::array<vtkIdType, 3>> tris;
+    for (int chain = 0; chain < 2; ++chain)
+    {
+      const vtkIdType start = 1 + chain * (n + 1);
+      for (int i = 0; i <= n; ++i)
+      {
+        const double a = chain * vtkMath::Pi() + span * i / n;
+        ring.push_back({ std::cos(a), std::sin(a), 0.1 * std::sin(3.0 * a) });
+      }
+      for (int i = 0; i < n; ++i)
+      {
+        tris.push_back({ 0, start + i, start + i + 1 });
+      }
+    }
+    auto chains = FansAroundOrigin(ring, tris);
+    const std::string what = "two chains of " + std::to_string(n);
+    ExpectFastPathIsGeneralPath(chains, what.c_str());
+    EXPECT_EQ(generalPoints(chains), chains->GetNumberOfPoints() + 1) << what;
+  }
+  for (int m : { 5, 7, 9 }) // ring points, each angle 4 pi / m
+  {
+    std::vector<std::array<double, 3>> ring;
+    std::vector<std::array<vtkIdType, 3>> tris;
+    for (int i = 0; i < m; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * i / m;
+      ring.push_back({ std::cos(a), std::sin(a), 0.1 * std::sin(3.0 * a) });
+      tris.push_back({ 0, vtkIdType(1 + (2 * i) % m), vtkIdType(1 + (2 * i + 2) % m) });
+    }
+    auto twice = FansAroundOrigin(ring, tris);
+    const std::string what = "fan winding twice, " + std::to_string(m);
+    ExpectFastPathIsGeneralPath(twice, what.c_str());
+    EXPECT_EQ(generalPoints(twice), twice->GetNumberOfPoints()) << what;
+  }
+}
+
+// The closed-fan test's sign condition (every corner turning the same way about the
+// normal) is what tells a fan of several closed walks, one of which folds back on itself,
+// from one closed run: two closed walks of four triangles each around the origin, both
+// folded (their corners' signed angles sum to zero turns; their sizes to 2 pi + 0.5),
+// every triangle of the same texture orientation, and every dP/ds and dP/dt within a
+// quarter turn of the origin's first triangle's and of their neighbours' (the fast path's
+// other checks pass). Their ids after and before the corners are the same multiset. Taken
+// as one run, the origin would get one frame; the general algorithm finds two groups.
+// The values were found by a search for these constraints (margins 0.08 in every cosine
+// and angle).
+TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverFoldedWalks)
+{
+  const double walks[2][4][2] = { { { 1.53, 0.95 }, { -0.3, 0.33 }, { -2.3, 2.1 }, { 1.79, 1.45 } },
+    { { 0.07, 0.63 }, { -0.13, 0.47 }, { -1.38, 0.19 }, { -0.18, 1.01 } } };
+  const double uvs[2][4][2] = { { { 0.07, 0.03 }, { 0.19, -1.04 }, { -0.84, 0.75 },
+                                  { -0.18, 2.84 } },
+    { { 0.53, 0.49 }, { 0.42, -0.76 }, { -0.63, -0.62 }, { -0.7, 0.99 } } };
+  for (int precision : { VTK_FLOAT, VTK_DOUBLE })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(precision);
+    auto normals = NewFloatArray("Normals", 3);
+    auto tcoords = NewFloatArray("TCoords", 2);
+    points->InsertNextPoint(0, 0, 0);
+    normals->InsertNextTuple3(0, 0, 1);
+    tcoords->InsertNextTuple2(0.5, 0.5);
+    vtkNew<vtkCellArray> polys;
+    for (int w = 0; w < 2; ++w)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        points->InsertNextPoint(walks[w][i][0], walks[w][i][1], 0.0);
+        normals->InsertNextTuple3(0, 0, 1);
+        tcoords->InsertNextTuple2(0.5 + 0.2 * uvs[w][i][0], 0.5 + 0.2 * uvs[w][i][1]);
+      }
+      for (int i = 0; i < 4; ++i)
+      {
+        const vtkIdType base = 1 + 4 * w;
+        const vtkIdType t[3] = { 0, base + (i + 1) % 4, base + i };
+        polys->InsertNextCell(3, t);
+      }
+    }
+    auto folded = MakeSurface(points, polys, normals, tcoords);
+    const char* what = precision == VTK_FLOAT ? "folded walks, float" : "folded walks, double";
+    ExpectFastPathIsGeneralPath(folded, what);
+    vtkNew<vtkMikkTSpaceTangents> general;
+    general->SetInputData(folded);
+    general->SetAngularThreshold(179.9);
+    general->Update();
+    EXPECT_EQ(general->GetOutput()->GetNumberOfPoints(), folded->GetNumberOfPoints() + 1) << what;
+  }
+}
+
+// Fans whose corners all turn clockwise about the normal (normals -z under triangles
+// counter-clockwise seen from +z) take the closed-fan test's other window (TurnBack per
+// corner plus a full turn): there too a double cone (two closed fans, two full turns) must
+// go through the edge matching and be split.
+TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverTurnsTheOtherWay)
+{
+  for (int n : { 4, 6 })
+  {
+    std::vector<std::array<double, 3>> ring;
+    std::vector<std::array<vtkIdType, 3>> cone;
+    for (int side = 0; side < 2; ++side)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double a = 2.0 * vtkMath::Pi() * (i + 0.3 * side) / n;
+        ring.push_back({ std::cos(a), std::sin(a), side == 0 ? 0.5 : -0.5 });
+        cone.push_back({ 0, vtkIdType(1 + side * n + i), vtkIdType(1 + side * n + (i + 1) % n) });
+      }
+    }
+    auto fans = FansAroundOrigin(ring, cone);
+    vtkDataArray* normals = fans->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      normals->SetTuple3(i, 0, 0, -1);
+    }
+    const std::string what = "double cone turning the other way (" + std::to_string(2 * n) + ")";
+    ExpectFastPathIsGeneralPath(fans, what.c_str());
+    vtkNew<vtkMikkTSpaceTangents> filter;
+    filter->SetInputData(fans);
+    filter->Update();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), fans->GetNumberOfPoints() + 1) << what;
+  }
+}
+
 // The other side: a fan that is one run, closed or open, of every size from 1 triangle
 // to past the small fans' 8 lanes (9 is the first the hash table takes), its triangles
 // listed out of chain order, at point 0 (a real id next to the lanes' negative padding),
