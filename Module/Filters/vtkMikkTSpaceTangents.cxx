@@ -1729,8 +1729,8 @@ VTK_ALWAYS_INLINE std::uint64_t IdMix(std::int32_t id)
 // s of every lane at once. A vertex's own values (position, normal, references) are then
 // one vector per group instead of copies per corner, and its sums vertical adds in the
 // order of its corners; a lane with fewer corners than the group's largest fan is padded
-// with its last corner, masked off (adding +0 to sums that started at +0, which leaves them
-// as they were). Real: the corner loop's precision.
+// with its last corner, masked off: its sums keep their values, bit for bit (adding +0
+// would not, where flush-to-zero made one -0). Real: the corner loop's precision.
 template <typename Real>
 struct FanBlock
 {
@@ -2848,9 +2848,9 @@ private:
           // A failed check makes the weight NaN, which fails the fan's final test.
           const Real weight =
             (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
-          sx[i] += live ? weight * osx : Real(0);
-          sy[i] += live ? weight * osy : Real(0);
-          sz[i] += live ? weight * osz : Real(0);
+          sx[i] = live ? sx[i] + weight * osx : sx[i];
+          sy[i] = live ? sy[i] + weight * osy : sy[i];
+          sz[i] = live ? sz[i] + weight * osz : sz[i];
         }
       }
       for (int i = 0; i < Lanes; ++i)
