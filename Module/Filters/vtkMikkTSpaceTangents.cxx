@@ -1722,17 +1722,64 @@ VTK_ALWAYS_INLINE std::uint64_t IdMix(std::int32_t id)
 }
 
 // The fans of a run of vertices are done in blocks, in three phases: checking each fan and
-// copying its corners into the block, weighing and summing all the corners in one loop of
-// plain arithmetic (which the compiler vectorises), and finishing each vertex. The block's
-// vertices go in groups of Lanes, one vertex to a lane, and the corners slot-major: corner
-// s of a group's lane i is at [Lanes * s + i] of the group's slots, so the loop takes corner
-// s of every lane at once. A vertex's own values (position, normal, references) are then
-// one vector per group instead of copies per corner, and its sums vertical adds in the
-// order of its corners; a lane with fewer corners than the group's largest fan is padded
-// with its last corner, masked off: its sums keep their values, bit for bit (adding +0
-// would not, where flush-to-zero made one -0). Real: the corner loop's precision.
+// listing its corners, weighing all the block's corners in one loop of plain arithmetic
+// (which the compiler vectorises), and summing each fan. Real: the corner loop's precision.
 template <typename Real>
 struct FanBlock
+{
+  static constexpr int MaxVertices = 128;
+  static constexpr int MaxCorners = 512;
+  // The corner loop runs to a multiple of this, on copies of the last corner: a remainder
+  // would run in narrower vectors and scalar code, which cost as much as many full vectors.
+  static constexpr int Lanes = 16;
+  static_assert(MaxCorners >= MaxFastFan, "a fan fits in a block");
+  int NumberOfVertices = 0;
+  int NumberOfCorners = 0;
+  std::int32_t Vertex[MaxVertices];
+  float Handedness[MaxVertices];
+  int First[MaxVertices + 1];
+  // Per vertex: its unit normal, the offset of its first triangle's directions, the
+  // projections of those (unit vectors, see References), whether checks passed, the sum of
+  // weighted dP/ds, the tangent.
+  alignas(32) double NV[3][MaxVertices];
+  alignas(32) std::int32_t First6[MaxVertices];
+  alignas(32) double R[6][MaxVertices];
+  alignas(32) double Good[MaxVertices];
+  alignas(32) double S[3][MaxVertices];
+  // Per vertex, its corners' sums of Turn and Cycle, and the closed-fan test's answer.
+  alignas(64) Real Turns[MaxVertices];
+  alignas(64) std::uint64_t Cycles[MaxVertices];
+  alignas(64) std::int32_t Closed[MaxVertices];
+  alignas(32) float Tangent[3][MaxVertices];
+  // Per corner: its triangle, the point ids of the corner and of its next and previous
+  // corners (times 3: offsets of their coordinates), its vertex's unit normal, its weighted
+  // dP/ds.
+  alignas(64) std::int32_t Triangle[MaxCorners + Lanes];
+  alignas(64) std::int32_t Self[MaxCorners + Lanes];
+  alignas(64) std::int32_t Next[MaxCorners + Lanes];
+  alignas(64) std::int32_t Prev[MaxCorners + Lanes];
+  alignas(64) Real N[3][MaxCorners + Lanes];
+  alignas(64) Real WeightedOs[3][MaxCorners + Lanes];
+  // Per corner, for the closed-fan test (see FastTurn): its angle if it is within the
+  // margins, plus TurnBack if it turns the other way about the normal (else TurnOff), and
+  // the mix of its next point's id minus that of its previous one.
+  alignas(64) Real Turn[MaxCorners + Lanes];
+  alignas(64) std::uint64_t Cycle[MaxCorners + Lanes];
+};
+
+// The same in the AVX-512 build, slot-major: the block's vertices go in groups of Lanes, one
+// vertex to a lane, and corner s of a group's lane i is at [Lanes * s + i] of the group's
+// slots, so the corner loop takes corner s of every lane at once. A vertex's own values
+// (position, normal, references) are then one vector per group instead of copies per
+// corner, and its sums (which FanBlock's SumFans adds in a scalar loop per fan) are vertical
+// adds in the order of its corners; a lane with fewer corners than the group's largest fan
+// is padded with its last corner, masked off: its sums keep their values, bit for bit
+// (adding +0 would not, where flush-to-zero made one -0). Each corner's next and previous
+// ids and directions are copied into its slot, 8 scalar stores. On the 1M torus (Zen 5):
+// 6% fewer cycles than FanBlock in the AVX-512 build, but 2.3% more in the AVX2 build and
+// 4.6% more in the baseline, which keep FanBlock.
+template <typename Real>
+struct SlotBlock
 {
   static constexpr int MaxVertices = 128;
   static constexpr int MaxSlots = 1024;
@@ -2569,14 +2616,15 @@ private:
     return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
   }
 
-  // The same in the AVX-512 build: eight doubles to a vector (5% fewer cycles on the 1M
-  // torus on Zen 5); same bits (no contraction into fused multiply-adds: see CMakeLists).
+  // The fans in the AVX-512 build, slot-major (see SlotBlock): sixteen floats or eight
+  // doubles to a vector; same bits (no contraction into fused multiply-adds: see
+  // CMakeLists, and sums in the same order).
   SURFACEDETAIL_TARGET_AVX512 static bool FansAVX512(const FastMikk& self, std::int32_t b,
     std::int32_t e, const std::int32_t* nextIds, const std::int32_t* prevIds,
     const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, const std::int32_t* weld, float* out)
   {
-    return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
+    return self.SlotFans(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
   }
 
   template <bool Wide>
@@ -2585,7 +2633,342 @@ private:
     const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
     float* out) const
   {
-    using Block = FanBlock<Real>;
+    std::unique_ptr<FanBlock<Real>> block(new FanBlock<Real>);
+    FanBlock<Real>& fb = *block;
+    for (std::int32_t v = b; v < e;)
+    {
+      fb.NumberOfVertices = 0;
+      fb.NumberOfCorners = 0;
+      fb.First[0] = 0;
+      for (; v < e && fb.NumberOfVertices < FanBlock<Real>::MaxVertices; ++v)
+      {
+        if (this->Welded && weld[v] != v)
+        {
+          continue; // a copy of a smaller point, filled later
+        }
+        const int k = first[v + 1] - first[v];
+        if (k > FanBlock<Real>::MaxCorners - fb.NumberOfCorners)
+        {
+          break;
+        }
+        if (!this->GatherFan<Wide>(
+              v, k, nextIds, prevIds, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        {
+          return false;
+        }
+      }
+      References(fb, dir);
+      this->WeighCorners<Wide>(fb, dir);
+      if (!SumFans<Wide>(fb, dir, nextIds, prevIds, first, out))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Checks the fan of v and appends its corners to the block (a vertex that no triangle
+  // uses gets the default frame at once). Whether the fan is one run is decided here in the
+  // baseline build, in SumFans in the others (see WeighCorners).
+  template <bool Wide>
+  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
+    const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
+  {
+    const double* u = this->UnitNormals + 3 * std::size_t(v);
+    const V3 n{ u[0], u[1], u[2] };
+    if (k == 0)
+    {
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
+      return true;
+    }
+    if (!(std::abs(Dot(n, n) - 1.0) < 1e-6))
+    {
+      return false;
+    }
+    const std::int32_t* list = corners + first[v];
+    const std::int32_t* next = nextIds + first[v];
+    const std::int32_t* prev = prevIds + first[v];
+    const unsigned char o = orient[list[0] >> 2];
+    std::int32_t* tri = fb.Triangle + fb.NumberOfCorners;
+    int same = 1;
+    for (int a = 0; a < k; ++a)
+    {
+      const std::int32_t t = list[a] >> 2;
+      tri[a] = t;
+      same &= orient[t] == o;
+    }
+    if (!same)
+    {
+      return false;
+    }
+    if constexpr (!Wide)
+    {
+      if (!FanIsOneRun<Wide>(next, prev, k))
+      {
+        return false;
+      }
+    }
+    const int j = fb.NumberOfVertices;
+    fb.NV[0][j] = n[0];
+    fb.NV[1][j] = n[1];
+    fb.NV[2][j] = n[2];
+    fb.First6[j] = 6 * tri[0];
+    for (int a = 0, c = fb.NumberOfCorners; a < k; ++a, ++c)
+    {
+      fb.Self[c] = 3 * v;
+      fb.Next[c] = 3 * next[a];
+      fb.Prev[c] = 3 * prev[a];
+      fb.N[0][c] = static_cast<Real>(n[0]);
+      fb.N[1][c] = static_cast<Real>(n[1]);
+      fb.N[2][c] = static_cast<Real>(n[2]);
+    }
+    fb.Handedness[fb.NumberOfVertices] = o != 0 ? 1.0f : -1.0f;
+    fb.Vertex[fb.NumberOfVertices++] = v;
+    fb.NumberOfCorners += k;
+    fb.First[fb.NumberOfVertices] = fb.NumberOfCorners;
+    return true;
+  }
+
+  // Each corner's angle, projected onto the tangent plane, over the length of its dP/ds
+  // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
+  // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
+  // One loop over the block's corners, which the compiler vectorises (with gathers in the
+  // AVX2 build). Wide: the AVX2 and AVX-512 builds, which also prepare the closed-fan test;
+  // the baseline build (SSE2) has no 64-bit vector multiply, where the ids' mix costs more
+  // than the edge matching it saves (3.6% more cycles on the 1M torus), so there every fan
+  // goes through FanIsOneRun in GatherFan, as before the test. Both ways take the same
+  // decisions.
+  template <bool Wide>
+  VTK_ALWAYS_INLINE void WeighCorners(FanBlock<Real>& fb, const std::array<float, 6>* dir) const
+  {
+    constexpr bool Single = std::is_same<Real, float>::value;
+    constexpr int Lanes = FanBlock<Real>::Lanes;
+    const int nc = (fb.NumberOfCorners + Lanes - 1) & ~(Lanes - 1);
+    const int last = fb.NumberOfCorners - 1;
+    for (int c = last + 1; c < nc; ++c)
+    {
+      fb.Triangle[c] = fb.Triangle[last];
+      fb.Self[c] = fb.Self[last];
+      fb.Next[c] = fb.Next[last];
+      fb.Prev[c] = fb.Prev[last];
+      fb.N[0][c] = fb.N[0][last];
+      fb.N[1][c] = fb.N[1][last];
+      fb.N[2][c] = fb.N[2][last];
+    }
+    const PT* __restrict p = this->P;
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict self = fb.Self, * __restrict next = fb.Next, * __restrict prev = fb.Prev, * __restrict tri = fb.Triangle;
+    const Real* __restrict nx = fb.N[0], * __restrict ny = fb.N[1], * __restrict nz = fb.N[2];
+    Real* __restrict wx = fb.WeightedOs[0], * __restrict wy = fb.WeightedOs[1], * __restrict wz = fb.WeightedOs[2];
+    Real* __restrict turn = fb.Turn;
+    std::uint64_t* __restrict cycle = fb.Cycle;
+    if constexpr (Wide)
+    {
+      // Next and Prev hold 3 * id, the same multisets as the ids.
+      for (int c = 0; c < nc; ++c)
+      {
+        cycle[c] = IdMix(next[c]) - IdMix(prev[c]);
+      }
+    }
+    for (int c = 0; c < nc; ++c)
+    {
+      const std::int32_t x0 = self[c], x1 = next[c], x2 = prev[c], t = 6 * tri[c];
+      const Real pv[3] = { Real(p[x0]), Real(p[x0 + 1]), Real(p[x0 + 2]) };
+      const Real e1x = Real(p[x1]) - pv[0], e1y = Real(p[x1 + 1]) - pv[1],
+                 e1z = Real(p[x1 + 2]) - pv[2];
+      const Real e2x = Real(p[x2]) - pv[0], e2y = Real(p[x2 + 1]) - pv[1],
+                 e2z = Real(p[x2 + 2]) - pv[2];
+      const Real osx = d[t], osy = d[t + 1], osz = d[t + 2];
+      const Real n1 = e1x * nx[c] + e1y * ny[c] + e1z * nz[c];
+      const Real n2 = e2x * nx[c] + e2y * ny[c] + e2z * nz[c];
+      const Real l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+      const Real l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+      const Real pl1 = l1 - n1 * n1;
+      const Real pl2 = l2 - n2 * n2;
+      const Real x = e1y * e2z - e1z * e2y;
+      const Real y = e1z * e2x - e1x * e2z;
+      const Real z = e1x * e2y - e1y * e2x;
+      const Real cross = x * nx[c] + y * ny[c] + z * nz[c];
+      const Real angle =
+        FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+      const Real on = osx * nx[c] + osy * ny[c] + osz * nz[c];
+      bool projected;
+      Real osLength;
+      if constexpr (Single)
+      {
+        // The general path normalises a projected edge only when some component is above
+        // FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer than
+        // 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
+        // edges' lengths, so the angle between projected edges keeps the general path's
+        // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
+        // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
+        // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
+        // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
+        // longer than 0.1: the general path projects it in double.
+        const Real px = osx - on * nx[c], py = osy - on * ny[c], pz = osz - on * nz[c];
+        const Real pos2 = px * px + py * py + pz * pz;
+        projected =
+          (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) & (pos2 > 1e-2f);
+        osLength = std::sqrt(pos2);
+      }
+      else
+      {
+        // The general path normalises a projected edge only when some component is above
+        // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+        // margin of 4), so shorter projections (an edge along the normal) go that way.
+        projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
+        osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+      }
+      // In float, projected implies the edges' projections that FastTurn's margins need.
+      const bool edgesProjected =
+        Single || ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
+      const bool turns =
+        edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
+      if constexpr (Wide)
+      {
+        turn[c] = turns ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
+      }
+      // A failed check makes the weight NaN, which fails the fan's final test.
+      const Real weight = (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
+      wx[c] = weight * osx;
+      wy[c] = weight * osy;
+      wz[c] = weight * osz;
+    }
+  }
+
+  // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
+  // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
+  // directions, and with every direction within a quarter turn of these (with a margin),
+  // no two are.
+  VTK_ALWAYS_INLINE static void References(FanBlock<Real>& fb, const std::array<float, 6>* dir)
+  {
+    const int nv = fb.NumberOfVertices;
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict first6 = fb.First6;
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    double* __restrict good = fb.Good;
+    double* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    double* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < nv; ++j)
+    {
+      const std::int32_t t = first6[j];
+      const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
+      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
+      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
+      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
+      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
+      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+      r0x[j] = ip * p[0];
+      r0y[j] = ip * p[1];
+      r0z[j] = ip * p[2];
+      r1x[j] = iq * q[0];
+      r1y[j] = iq * q[1];
+      r1z[j] = iq * q[2];
+    }
+  }
+
+  // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
+  // in corner order, then the rest in one loop over the block's vertices. A fan that the
+  // closed-fan test (see FastTurn) does not show to be one run must pass FanIsOneRun: each
+  // edge at v joins exactly two triangles or bounds the fan (then the general path's greedy
+  // pairing finds the same links), and the links chain all the triangles into one run.
+  template <bool Wide>
+  VTK_ALWAYS_INLINE static bool SumFans(FanBlock<Real>& fb, const std::array<float, 6>* dir,
+    const std::int32_t* nextIds, const std::int32_t* prevIds, const std::int32_t* first, float* out)
+  {
+    const int nv = fb.NumberOfVertices;
+    int ok = 1;
+    for (int j = 0; j < nv; ++j)
+    {
+      Real turns = 0;
+      std::uint64_t cycle = 0;
+      // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
+      const Real r0[3] = { Real(fb.R[0][j]), Real(fb.R[1][j]), Real(fb.R[2][j]) };
+      const Real r1[3] = { Real(fb.R[3][j]), Real(fb.R[4][j]), Real(fb.R[5][j]) };
+      Real sum[3] = { 0, 0, 0 };
+      for (int c = fb.First[j]; c < fb.First[j + 1]; ++c)
+      {
+        const auto& d = dir[fb.Triangle[c]];
+        const Real os[3] = { d[0], d[1], d[2] }, ot[3] = { d[3], d[4], d[5] };
+        ok &= os[0] * r0[0] + os[1] * r0[1] + os[2] * r0[2] > Real(FastCos);
+        ok &= ot[0] * r1[0] + ot[1] * r1[1] + ot[2] * r1[2] > Real(FastCos);
+        sum[0] += fb.WeightedOs[0][c];
+        sum[1] += fb.WeightedOs[1][c];
+        sum[2] += fb.WeightedOs[2][c];
+        if constexpr (Wide)
+        {
+          turns += fb.Turn[c];
+          cycle += fb.Cycle[c];
+        }
+      }
+      fb.Turns[j] = turns;
+      fb.Cycles[j] = cycle;
+      fb.S[0][j] = sum[0];
+      fb.S[1][j] = sum[1];
+      fb.S[2][j] = sum[2];
+    }
+    if (!ok)
+    {
+      return false;
+    }
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    const double* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
+    double* __restrict good = fb.Good;
+    float* __restrict tx = fb.Tangent[0], * __restrict ty = fb.Tangent[1], * __restrict tz = fb.Tangent[2];
+    const Real* __restrict turns = fb.Turns;
+    const std::uint64_t* __restrict cycles = fb.Cycles;
+    const int* __restrict firsts = fb.First;
+    std::int32_t* __restrict closed = fb.Closed;
+    constexpr Real fullTurn = Real(2.0 * vtkMath::Pi());
+    for (int j = 0; j < nv; ++j)
+    {
+      const Real back = Real(TurnBack) * Real(firsts[j + 1] - firsts[j]);
+      closed[j] = !Wide ||
+        (((std::abs(turns[j] - fullTurn) < Real(1)) |
+           (std::abs(turns[j] - back - fullTurn) < Real(1))) &
+          (cycles[j] == 0));
+      const double sumN = sx[j] * nx[j] + sy[j] * ny[j] + sz[j] * nz[j];
+      const double t[3] = { sx[j] - sumN * nx[j], sy[j] - sumN * ny[j], sz[j] - sumN * nz[j] };
+      const double len2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+      // Not finite is not above 1e-12 or not below the largest double.
+      good[j] = std::min(len2 - 1e-12, DBL_MAX - len2) > 0.0 ? good[j] : 0.0;
+      const double inv = 1.0 / std::sqrt(len2);
+      tx[j] = static_cast<float>(inv * t[0]);
+      ty[j] = static_cast<float>(inv * t[1]);
+      tz[j] = static_cast<float>(inv * t[2]);
+    }
+    for (int j = 0; j < nv; ++j)
+    {
+      if (fb.Good[j] == 0.0)
+      {
+        return false;
+      }
+      if (!fb.Closed[j])
+      {
+        const std::int32_t f = first[fb.Vertex[j]];
+        if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
+        {
+          return false;
+        }
+      }
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      o[0] = fb.Tangent[0][j];
+      o[1] = fb.Tangent[1][j];
+      o[2] = fb.Tangent[2][j];
+      o[3] = fb.Handedness[j];
+    }
+    return true;
+  }
+  VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+    float* out) const
+  {
+    using Block = SlotBlock<Real>;
     std::unique_ptr<Block> block(new Block);
     Block& fb = *block;
     for (std::int32_t v = b; v < e;)
@@ -2602,15 +2985,15 @@ private:
         {
           break;
         }
-        if (!this->GatherFan<Wide>(
+        if (!this->GatherSlots(
               v, k, nextIds, prevIds, dir, orient, first, corners, fb, out + 4 * std::size_t(v)))
         {
           return false;
         }
       }
       Pad(fb);
-      References(fb, dir);
-      if (!this->WeighCorners<Wide>(fb) || !SumFans<Wide>(fb, nextIds, prevIds, first, out))
+      SlotReferences(fb, dir);
+      if (!this->WeighSlots(fb) || !SumSlots(fb, nextIds, prevIds, first, out))
       {
         return false;
       }
@@ -2619,14 +3002,12 @@ private:
   }
 
   // Checks the fan of v and copies it into the block's next lane (a vertex that no triangle
-  // uses gets the default frame at once). Whether the fan is one run is decided here in the
-  // baseline build, in SumFans in the others (see WeighCorners).
-  template <bool Wide>
-  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
+  // uses gets the default frame at once).
+  VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
+    const std::int32_t* first, const std::int32_t* corners, SlotBlock<Real>& fb, float* out) const
   {
-    constexpr int Lanes = FanBlock<Real>::Lanes;
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
     const double* u = this->UnitNormals + 3 * std::size_t(v);
     const V3 n{ u[0], u[1], u[2] };
     if (k == 0)
@@ -2641,13 +3022,6 @@ private:
     const std::int32_t* list = corners + first[v];
     const std::int32_t* next = nextIds + first[v];
     const std::int32_t* prev = prevIds + first[v];
-    if constexpr (!Wide)
-    {
-      if (!FanIsOneRun<Wide>(next, prev, k))
-      {
-        return false;
-      }
-    }
     const int j = fb.NumberOfVertices;
     const int g = j / Lanes, i = j % Lanes;
     if (i == 0)
@@ -2691,9 +3065,9 @@ private:
   // Fills each lane's slots past its fan with copies of its last corner (masked off in
   // WeighCorners), and the last group's lanes past the block's vertices with copies of the
   // group's first lane, with no corners (and its corners).
-  VTK_ALWAYS_INLINE static void Pad(FanBlock<Real>& fb)
+  VTK_ALWAYS_INLINE static void Pad(SlotBlock<Real>& fb)
   {
-    constexpr int Lanes = FanBlock<Real>::Lanes;
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
     const int nv = fb.NumberOfVertices;
     const int nl = (nv + Lanes - 1) & ~(Lanes - 1);
     for (int j = nv; j < nl; ++j)
@@ -2731,17 +3105,13 @@ private:
   // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
   // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
   // The weighted dP/ds go into each vertex's sum, and its dP/ds and dP/dt are checked
-  // against its references (a quarter turn). One loop over each group's slots, vectorised
-  // over its lanes (gathers for the corners' points only). Wide: the AVX2 and AVX-512
-  // builds, which also prepare the closed-fan test; the baseline build (SSE2) has no 64-bit
-  // vector multiply, where the ids' mix costs more than the edge matching it saves (3.6%
-  // more cycles on the 1M torus), so there every fan goes through FanIsOneRun in GatherFan,
-  // as before the test. Both ways take the same decisions. False if a check failed.
-  template <bool Wide>
-  VTK_ALWAYS_INLINE bool WeighCorners(FanBlock<Real>& fb) const
+  // against its references (a quarter turn), and the closed-fan test's turns and id mix are
+  // summed. One loop over each group's slots, vectorised over its lanes (gathers for the
+  // corners' points only). False if a check failed.
+  VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
     constexpr bool Single = std::is_same<Real, float>::value;
-    constexpr int Lanes = FanBlock<Real>::Lanes;
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
     const PT* __restrict p = this->P;
     const int groups = (fb.NumberOfVertices + Lanes - 1) / Lanes;
     std::int32_t within = 1;
@@ -2771,13 +3141,10 @@ private:
         const std::int32_t* __restrict next = fb.Next + c0, * __restrict prev = fb.Prev + c0;
         const float* __restrict dsx = fb.Dir[0] + c0, * __restrict dsy = fb.Dir[1] + c0, * __restrict dsz = fb.Dir[2] + c0;
         const float* __restrict dtx = fb.Dir[3] + c0, * __restrict dty = fb.Dir[4] + c0, * __restrict dtz = fb.Dir[5] + c0;
-        if constexpr (Wide)
+        // Next and Prev hold 3 * id, the same multisets as the ids.
+        for (int i = 0; i < Lanes; ++i)
         {
-          // Next and Prev hold 3 * id, the same multisets as the ids.
-          for (int i = 0; i < Lanes; ++i)
-          {
-            cycles[i] += (IdMix(next[i]) - IdMix(prev[i])) & (0 - std::uint64_t(s < kk[i]));
-          }
+          cycles[i] += (IdMix(next[i]) - IdMix(prev[i])) & (0 - std::uint64_t(s < kk[i]));
         }
         for (int i = 0; i < Lanes; ++i)
         {
@@ -2835,12 +3202,9 @@ private:
             ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
           const bool turnsOk =
             edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
-          if constexpr (Wide)
-          {
-            const Real turn =
-              turnsOk ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
-            turns[i] += live ? turn : Real(0);
-          }
+          const Real turn =
+            turnsOk ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
+          turns[i] += live ? turn : Real(0);
           // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
           const bool quarter = (osx * r0x[i] + osy * r0y[i] + osz * r0z[i] > Real(FastCos)) &
             (otx * r1x[i] + oty * r1y[i] + otz * r1z[i] > Real(FastCos));
@@ -2865,9 +3229,9 @@ private:
   // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
   // directions, and with every direction within a quarter turn of these (with a margin),
   // no two are.
-  VTK_ALWAYS_INLINE static void References(FanBlock<Real>& fb, const std::array<float, 6>* dir)
+  VTK_ALWAYS_INLINE static void SlotReferences(SlotBlock<Real>& fb, const std::array<float, 6>* dir)
   {
-    constexpr int Lanes = FanBlock<Real>::Lanes;
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
     const int nl = (fb.NumberOfVertices + Lanes - 1) & ~(Lanes - 1);
     const float* __restrict d = dir[0].data();
     const std::int32_t* __restrict first6 = fb.First6;
@@ -2901,8 +3265,7 @@ private:
   // not show to be one run must pass FanIsOneRun: each edge at v joins exactly two
   // triangles or bounds the fan (then the general path's greedy pairing finds the same
   // links), and the links chain all the triangles into one run.
-  template <bool Wide>
-  VTK_ALWAYS_INLINE static bool SumFans(FanBlock<Real>& fb, const std::int32_t* nextIds,
+  VTK_ALWAYS_INLINE static bool SumSlots(SlotBlock<Real>& fb, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::int32_t* first, float* out)
   {
     const int nv = fb.NumberOfVertices;
@@ -2918,10 +3281,9 @@ private:
     for (int j = 0; j < nv; ++j)
     {
       const Real back = Real(TurnBack) * Real(kk[j]);
-      closed[j] = !Wide ||
-        (((std::abs(turns[j] - fullTurn) < Real(1)) |
-           (std::abs(turns[j] - back - fullTurn) < Real(1))) &
-          (cycles[j] == 0));
+      closed[j] = (((std::abs(turns[j] - fullTurn) < Real(1)) |
+                     (std::abs(turns[j] - back - fullTurn) < Real(1))) &
+        (cycles[j] == 0));
       const double s[3] = { sx[j], sy[j], sz[j] };
       const double sumN = s[0] * nx[j] + s[1] * ny[j] + s[2] * nz[j];
       const double t[3] = { s[0] - sumN * nx[j], s[1] - sumN * ny[j], s[2] - sumN * nz[j] };
@@ -2942,7 +3304,7 @@ private:
       if (!fb.Closed[j])
       {
         const std::int32_t f = first[fb.Vertex[j]];
-        if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.K[j]))
+        if (!FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]))
         {
           return false;
         }
