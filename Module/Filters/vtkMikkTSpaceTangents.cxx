@@ -1783,7 +1783,7 @@ struct SlotBlock
 {
   static constexpr int MaxVertices = 128;
   static constexpr int MaxSlots = 1024;
-  // Sixteen lanes: one AVX-512 vector of floats, whole vectors in every build.
+  // Sixteen lanes: one AVX-512 vector of floats.
   static constexpr int Lanes = 16;
   static constexpr int MaxGroups = MaxVertices / Lanes;
   static_assert(MaxSlots >= Lanes * MaxFastFan, "a fan fits in a block");
@@ -1795,7 +1795,7 @@ struct SlotBlock
   // corners): its vertex, number of corners and handedness; its unit normal (in double and
   // in Real), position, the offset of its first triangle's directions, the projections of
   // those (unit vectors, see References), whether checks passed; the corners' sums of
-  // weighted dP/ds, of Turn and of Cycle (see WeighCorners), whether they passed the
+  // weighted dP/ds, of turns and of id mixes (see FanBlock), whether they passed the
   // quarter-turn checks, the closed-fan test's answer, the tangent.
   std::int32_t Vertex[MaxVertices];
   float Handedness[MaxVertices];
