@@ -3063,7 +3063,7 @@ private:
   }
 
   // Fills each lane's slots past its fan with copies of its last corner (masked off in
-  // WeighCorners), and the last group's lanes past the block's vertices with copies of the
+  // WeighSlots), and the last group's lanes past the block's vertices with copies of the
   // group's first lane, with no corners (and its corners).
   VTK_ALWAYS_INLINE static void Pad(SlotBlock<Real>& fb)
   {
