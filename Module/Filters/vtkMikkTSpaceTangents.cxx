@@ -1767,6 +1767,67 @@ struct FanBlock
   alignas(64) std::uint64_t Cycle[MaxCorners + Lanes];
 };
 
+// The same in the AVX-512 build, slot-major: the block's vertices go in groups of Lanes, one
+// vertex to a lane, and corner s of a group's lane i is at [Lanes * s + i] of the group's
+// slots, so the corner loop takes corner s of every lane at once. A vertex's own values
+// (position, normal, references) are then one vector per group instead of copies per
+// corner, and its sums (which FanBlock's SumFans adds in a scalar loop per fan) are vertical
+// adds in the order of its corners; a lane with fewer corners than the group's largest fan
+// is padded with its last corner, masked off: its sums keep their values, bit for bit
+// (adding +0 would not, where flush-to-zero made one -0). Each corner's next and previous
+// ids and directions are copied into its slot, 8 scalar stores. On the 1M torus (Zen 5):
+// 6% fewer cycles than FanBlock in the AVX-512 build, but 2.3% more in the AVX2 build and
+// 4.6% more in the baseline, which keep FanBlock.
+template <typename Real>
+struct SlotBlock
+{
+  static constexpr int MaxVertices = 128;
+  static constexpr int MaxSlots = 1024;
+  // Sixteen lanes: one AVX-512 vector of floats.
+  static constexpr int Lanes = 16;
+  static constexpr int MaxGroups = MaxVertices / Lanes;
+  static_assert(MaxSlots >= Lanes * MaxFastFan, "a fan fits in a block");
+  int NumberOfVertices = 0;
+  // Per group: its first slot and the size of its largest fan (its slots per lane).
+  int GroupFirst[MaxGroups];
+  int GroupSlots[MaxGroups];
+  // Per lane (a group's lanes past the block's vertices repeat its first vertex, with no
+  // corners): its vertex, number of corners and handedness; its unit normal (in double and
+  // in Real), position, the offset of its first triangle's directions, the projections of
+  // those (unit vectors, see References), whether checks passed; the corners' sums of
+  // weighted dP/ds, of turns and of id mixes (see FanBlock), whether they passed the
+  // quarter-turn checks, the closed-fan test's answer, the tangent.
+  std::int32_t Vertex[MaxVertices];
+  float Handedness[MaxVertices];
+  alignas(64) std::int32_t K[MaxVertices];
+  alignas(64) double NV[3][MaxVertices];
+  alignas(64) Real NR[3][MaxVertices];
+  alignas(64) Real Position[3][MaxVertices];
+  alignas(64) std::int32_t First6[MaxVertices];
+  alignas(64) Real R[6][MaxVertices];
+  alignas(64) double Good[MaxVertices];
+  alignas(64) Real S[3][MaxVertices];
+  alignas(64) Real Turns[MaxVertices];
+  alignas(64) std::uint64_t Cycles[MaxVertices];
+  alignas(64) std::int32_t Within[MaxVertices];
+  alignas(64) std::int32_t Closed[MaxVertices];
+  alignas(64) float Tangent[3][MaxVertices];
+  // Per slot: the ids of its corner's next and previous points times 3 (the offsets of
+  // their coordinates), and its triangle's dP/ds and dP/dt.
+  alignas(64) std::int32_t Next[MaxSlots];
+  alignas(64) std::int32_t Prev[MaxSlots];
+  alignas(64) float Dir[6][MaxSlots];
+
+  int GroupStart(int g) const { return g > 0 ? GroupFirst[g - 1] + Lanes * GroupSlots[g - 1] : 0; }
+  // The block's slots with one more fan, of k corners.
+  int SlotsWith(int k) const
+  {
+    const int g = NumberOfVertices / Lanes;
+    return NumberOfVertices % Lanes == 0 ? GroupStart(g) + Lanes * k
+                                         : GroupFirst[g] + Lanes * std::max(k, GroupSlots[g]);
+  }
+};
+
 template <typename PT, typename NT, typename TT>
 class FastMikk
 {
@@ -2555,14 +2616,15 @@ private:
     return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
   }
 
-  // The same in the AVX-512 build: eight doubles to a vector (5% fewer cycles on the 1M
-  // torus on Zen 5); same bits (no contraction into fused multiply-adds: see CMakeLists).
+  // The fans in the AVX-512 build, slot-major (see SlotBlock): sixteen floats or eight
+  // doubles to a vector; same bits (no contraction into fused multiply-adds: see
+  // CMakeLists, and sums in the same order).
   SURFACEDETAIL_TARGET_AVX512 static bool FansAVX512(const FastMikk& self, std::int32_t b,
     std::int32_t e, const std::int32_t* nextIds, const std::int32_t* prevIds,
     const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, const std::int32_t* weld, float* out)
   {
-    return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
+    return self.SlotFans(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
   }
 
   template <bool Wide>
@@ -2889,6 +2951,360 @@ private:
       {
         const std::int32_t f = first[fb.Vertex[j]];
         if (!FanIsOneRun<Wide>(nextIds + f, prevIds + f, fb.First[j + 1] - fb.First[j]))
+        {
+          return false;
+        }
+      }
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      o[0] = fb.Tangent[0][j];
+      o[1] = fb.Tangent[1][j];
+      o[2] = fb.Tangent[2][j];
+      o[3] = fb.Handedness[j];
+    }
+    return true;
+  }
+  VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+    float* out) const
+  {
+    using Block = SlotBlock<Real>;
+    std::unique_ptr<Block> block(new Block);
+    Block& fb = *block;
+    for (std::int32_t v = b; v < e;)
+    {
+      fb.NumberOfVertices = 0;
+      for (; v < e && fb.NumberOfVertices < Block::MaxVertices; ++v)
+      {
+        if (this->Welded && weld[v] != v)
+        {
+          continue; // a copy of a smaller point, filled later
+        }
+        const int k = first[v + 1] - first[v];
+        if (fb.SlotsWith(k) > Block::MaxSlots)
+        {
+          break;
+        }
+        if (!this->GatherSlots(
+              v, k, nextIds, prevIds, dir, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        {
+          return false;
+        }
+      }
+      Pad(fb);
+      SlotReferences(fb, dir);
+      if (!this->WeighSlots(fb) || !SumSlots(fb, nextIds, prevIds, first, out))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Checks the fan of v and copies it into the block's next lane (a vertex that no triangle
+  // uses gets the default frame at once).
+  VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* first, const std::int32_t* corners, SlotBlock<Real>& fb, float* out) const
+  {
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    const double* u = this->UnitNormals + 3 * std::size_t(v);
+    const V3 n{ u[0], u[1], u[2] };
+    if (k == 0)
+    {
+      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
+      return true;
+    }
+    if (!(std::abs(Dot(n, n) - 1.0) < 1e-6))
+    {
+      return false;
+    }
+    const std::int32_t* list = corners + first[v];
+    const std::int32_t* next = nextIds + first[v];
+    const std::int32_t* prev = prevIds + first[v];
+    const int j = fb.NumberOfVertices;
+    const int g = j / Lanes, i = j % Lanes;
+    if (i == 0)
+    {
+      fb.GroupFirst[g] = fb.GroupStart(g);
+      fb.GroupSlots[g] = 0;
+    }
+    fb.GroupSlots[g] = std::max(fb.GroupSlots[g], k);
+    const unsigned char o = orient[list[0] >> 2];
+    const int c0 = fb.GroupFirst[g] + i;
+    int same = 1;
+    for (int a = 0, c = c0; a < k; ++a, c += Lanes)
+    {
+      const std::int32_t t = list[a] >> 2;
+      same &= orient[t] == o;
+      fb.Next[c] = 3 * next[a];
+      fb.Prev[c] = 3 * prev[a];
+      for (int x = 0; x < 6; ++x)
+      {
+        fb.Dir[x][c] = dir[t][x];
+      }
+    }
+    if (!same)
+    {
+      return false;
+    }
+    fb.Vertex[j] = v;
+    fb.K[j] = k;
+    fb.Handedness[j] = o != 0 ? 1.0f : -1.0f;
+    fb.First6[j] = 6 * (list[0] >> 2);
+    for (int x = 0; x < 3; ++x)
+    {
+      fb.NV[x][j] = u[x];
+      fb.NR[x][j] = static_cast<Real>(u[x]);
+      fb.Position[x][j] = Real(this->P[3 * std::size_t(v) + x]);
+    }
+    ++fb.NumberOfVertices;
+    return true;
+  }
+
+  // Fills each lane's slots past its fan with copies of its last corner (masked off in
+  // WeighSlots), and the last group's lanes past the block's vertices with copies of the
+  // group's first lane, with no corners (and its corners).
+  VTK_ALWAYS_INLINE static void Pad(SlotBlock<Real>& fb)
+  {
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    const int nv = fb.NumberOfVertices;
+    const int nl = (nv + Lanes - 1) & ~(Lanes - 1);
+    for (int j = nv; j < nl; ++j)
+    {
+      const int j0 = j & ~(Lanes - 1);
+      fb.Vertex[j] = fb.Vertex[j0];
+      fb.K[j] = 0;
+      fb.Handedness[j] = fb.Handedness[j0];
+      fb.First6[j] = fb.First6[j0];
+      for (int x = 0; x < 3; ++x)
+      {
+        fb.NV[x][j] = fb.NV[x][j0];
+        fb.NR[x][j] = fb.NR[x][j0];
+        fb.Position[x][j] = fb.Position[x][j0];
+      }
+    }
+    for (int j = 0; j < nl; ++j)
+    {
+      const int g = j / Lanes, i = j % Lanes, k = fb.K[j];
+      for (int s = k; s < fb.GroupSlots[g]; ++s)
+      {
+        const int c = fb.GroupFirst[g] + Lanes * s + i;
+        const int from = fb.GroupFirst[g] + (k > 0 ? Lanes * (k - 1) + i : Lanes * s);
+        fb.Next[c] = fb.Next[from];
+        fb.Prev[c] = fb.Prev[from];
+        for (int x = 0; x < 6; ++x)
+        {
+          fb.Dir[x][c] = fb.Dir[x][from];
+        }
+      }
+    }
+  }
+
+  // Per corner, its angle projected onto the tangent plane, over the length of its dP/ds
+  // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
+  // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
+  // The weighted dP/ds go into each vertex's sum, and its dP/ds and dP/dt are checked
+  // against its references (a quarter turn), and the closed-fan test's turns and id mix are
+  // summed. One loop over each group's slots, vectorised over its lanes (gathers for the
+  // corners' points only). False if a check failed.
+  VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
+  {
+    constexpr bool Single = std::is_same<Real, float>::value;
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    const PT* __restrict p = this->P;
+    const int groups = (fb.NumberOfVertices + Lanes - 1) / Lanes;
+    std::int32_t within = 1;
+    for (int g = 0; g < groups; ++g)
+    {
+      const int j0 = Lanes * g;
+      const std::int32_t* __restrict kk = fb.K + j0;
+      const Real* __restrict vx = fb.Position[0] + j0, * __restrict vy = fb.Position[1] + j0, * __restrict vz = fb.Position[2] + j0;
+      const Real* __restrict nx = fb.NR[0] + j0, * __restrict ny = fb.NR[1] + j0, * __restrict nz = fb.NR[2] + j0;
+      const Real* __restrict r0x = fb.R[0] + j0, * __restrict r0y = fb.R[1] + j0, * __restrict r0z = fb.R[2] + j0;
+      const Real* __restrict r1x = fb.R[3] + j0, * __restrict r1y = fb.R[4] + j0, * __restrict r1z = fb.R[5] + j0;
+      Real* __restrict sx = fb.S[0] + j0, * __restrict sy = fb.S[1] + j0, * __restrict sz = fb.S[2] + j0;
+      Real* __restrict turns = fb.Turns + j0;
+      std::uint64_t* __restrict cycles = fb.Cycles + j0;
+      std::int32_t* __restrict ok = fb.Within + j0;
+      // One array at a time, whole vectors: stores of single lanes would stall the loads
+      // of the loop below (no store forwarding from several stores to one load).
+      std::fill_n(sx, Lanes, Real(0));
+      std::fill_n(sy, Lanes, Real(0));
+      std::fill_n(sz, Lanes, Real(0));
+      std::fill_n(turns, Lanes, Real(0));
+      std::fill_n(cycles, Lanes, std::uint64_t(0));
+      std::fill_n(ok, Lanes, 1);
+      for (int s = 0; s < fb.GroupSlots[g]; ++s)
+      {
+        const int c0 = fb.GroupFirst[g] + Lanes * s;
+        const std::int32_t* __restrict next = fb.Next + c0, * __restrict prev = fb.Prev + c0;
+        const float* __restrict dsx = fb.Dir[0] + c0, * __restrict dsy = fb.Dir[1] + c0, * __restrict dsz = fb.Dir[2] + c0;
+        const float* __restrict dtx = fb.Dir[3] + c0, * __restrict dty = fb.Dir[4] + c0, * __restrict dtz = fb.Dir[5] + c0;
+        // Next and Prev hold 3 * id, the same multisets as the ids.
+        for (int i = 0; i < Lanes; ++i)
+        {
+          cycles[i] += (IdMix(next[i]) - IdMix(prev[i])) & (0 - std::uint64_t(s < kk[i]));
+        }
+        for (int i = 0; i < Lanes; ++i)
+        {
+          const bool live = s < kk[i];
+          const std::int32_t x1 = next[i], x2 = prev[i];
+          const Real e1x = Real(p[x1]) - vx[i], e1y = Real(p[x1 + 1]) - vy[i],
+                     e1z = Real(p[x1 + 2]) - vz[i];
+          const Real e2x = Real(p[x2]) - vx[i], e2y = Real(p[x2 + 1]) - vy[i],
+                     e2z = Real(p[x2 + 2]) - vz[i];
+          const Real osx = dsx[i], osy = dsy[i], osz = dsz[i];
+          const Real otx = dtx[i], oty = dty[i], otz = dtz[i];
+          const Real n1 = e1x * nx[i] + e1y * ny[i] + e1z * nz[i];
+          const Real n2 = e2x * nx[i] + e2y * ny[i] + e2z * nz[i];
+          const Real l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+          const Real l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+          const Real pl1 = l1 - n1 * n1;
+          const Real pl2 = l2 - n2 * n2;
+          const Real x = e1y * e2z - e1z * e2y;
+          const Real y = e1z * e2x - e1x * e2z;
+          const Real z = e1x * e2y - e1y * e2x;
+          const Real cross = x * nx[i] + y * ny[i] + z * nz[i];
+          const Real angle =
+            FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+          const Real on = osx * nx[i] + osy * ny[i] + osz * nz[i];
+          bool projected;
+          Real osLength;
+          if constexpr (Single)
+          {
+            // The general path normalises a projected edge only when some component is
+            // above FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer
+            // than 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
+            // edges' lengths, so the angle between projected edges keeps the general path's
+            // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
+            // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
+            // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
+            // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
+            // longer than 0.1: the general path projects it in double.
+            const Real px = osx - on * nx[i], py = osy - on * ny[i], pz = osz - on * nz[i];
+            const Real pos2 = px * px + py * py + pz * pz;
+            projected = (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) &
+              (pos2 > 1e-2f);
+            osLength = std::sqrt(pos2);
+          }
+          else
+          {
+            // The general path normalises a projected edge only when some component is
+            // above FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3
+            // components, a margin of 4), so shorter projections (an edge along the normal)
+            // go that way.
+            projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
+            osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+          }
+          // In float, projected implies the edges' projections that FastTurn's margins need.
+          const bool edgesProjected = Single ||
+            ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
+          const bool turnsOk =
+            edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
+          const Real turn =
+            turnsOk ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
+          turns[i] += live ? turn : Real(0);
+          // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
+          const bool quarter = (osx * r0x[i] + osy * r0y[i] + osz * r0z[i] > Real(FastCos)) &
+            (otx * r1x[i] + oty * r1y[i] + otz * r1z[i] > Real(FastCos));
+          ok[i] &= !live | quarter;
+          // A failed check makes the weight NaN, which fails the fan's final test.
+          const Real weight =
+            (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
+          sx[i] = live ? sx[i] + weight * osx : sx[i];
+          sy[i] = live ? sy[i] + weight * osy : sy[i];
+          sz[i] = live ? sz[i] + weight * osz : sz[i];
+        }
+      }
+      for (int i = 0; i < Lanes; ++i)
+      {
+        within &= ok[i];
+      }
+    }
+    return within != 0;
+  }
+
+  // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
+  // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
+  // directions, and with every direction within a quarter turn of these (with a margin),
+  // no two are.
+  VTK_ALWAYS_INLINE static void SlotReferences(SlotBlock<Real>& fb, const std::array<float, 6>* dir)
+  {
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    const int nl = (fb.NumberOfVertices + Lanes - 1) & ~(Lanes - 1);
+    const float* __restrict d = dir[0].data();
+    const std::int32_t* __restrict first6 = fb.First6;
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    double* __restrict good = fb.Good;
+    Real* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    Real* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < nl; ++j)
+    {
+      const std::int32_t t = first6[j];
+      const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
+      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
+      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
+      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
+      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
+      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+      r0x[j] = Real(ip * p[0]);
+      r0y[j] = Real(ip * p[1]);
+      r0z[j] = Real(ip * p[2]);
+      r1x[j] = Real(iq * q[0]);
+      r1y[j] = Real(iq * q[1]);
+      r1z[j] = Real(iq * q[2]);
+    }
+  }
+
+  // Per vertex, the sum of weighted dP/ds projected (the projection of the sum), normalised,
+  // and the closed-fan test's answer. A fan that the closed-fan test (see FastTurn) does
+  // not show to be one run must pass FanIsOneRun: each edge at v joins exactly two
+  // triangles or bounds the fan (then the general path's greedy pairing finds the same
+  // links), and the links chain all the triangles into one run.
+  VTK_ALWAYS_INLINE static bool SumSlots(SlotBlock<Real>& fb, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::int32_t* first, float* out)
+  {
+    const int nv = fb.NumberOfVertices;
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    const Real* __restrict sx = fb.S[0], * __restrict sy = fb.S[1], * __restrict sz = fb.S[2];
+    double* __restrict good = fb.Good;
+    float* __restrict tx = fb.Tangent[0], * __restrict ty = fb.Tangent[1], * __restrict tz = fb.Tangent[2];
+    const Real* __restrict turns = fb.Turns;
+    const std::uint64_t* __restrict cycles = fb.Cycles;
+    const std::int32_t* __restrict kk = fb.K;
+    std::int32_t* __restrict closed = fb.Closed;
+    constexpr Real fullTurn = Real(2.0 * vtkMath::Pi());
+    for (int j = 0; j < nv; ++j)
+    {
+      const Real back = Real(TurnBack) * Real(kk[j]);
+      closed[j] = (((std::abs(turns[j] - fullTurn) < Real(1)) |
+                     (std::abs(turns[j] - back - fullTurn) < Real(1))) &
+        (cycles[j] == 0));
+      const double s[3] = { sx[j], sy[j], sz[j] };
+      const double sumN = s[0] * nx[j] + s[1] * ny[j] + s[2] * nz[j];
+      const double t[3] = { s[0] - sumN * nx[j], s[1] - sumN * ny[j], s[2] - sumN * nz[j] };
+      const double len2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+      // Not finite is not above 1e-12 or not below the largest double.
+      good[j] = std::min(len2 - 1e-12, DBL_MAX - len2) > 0.0 ? good[j] : 0.0;
+      const double inv = 1.0 / std::sqrt(len2);
+      tx[j] = static_cast<float>(inv * t[0]);
+      ty[j] = static_cast<float>(inv * t[1]);
+      tz[j] = static_cast<float>(inv * t[2]);
+    }
+    for (int j = 0; j < nv; ++j)
+    {
+      if (fb.Good[j] == 0.0)
+      {
+        return false;
+      }
+      if (!fb.Closed[j])
+      {
+        const std::int32_t f = first[fb.Vertex[j]];
+        if (!FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]))
         {
           return false;
         }

@@ -843,6 +843,167 @@ TEST(vtkMikkTSpaceTangents, FastPathOneRunFansOfEverySizeAgreeWithGeneralPath)
 
 namespace
 {
+// Disjoint fans of 3 to 32 triangles (every third one open, every fourth one mirrored in
+// texture space), their centres and ring points interleaved in id order (a fixed shuffle),
+// so that each run of 16 vertices mixes fans of many sizes: the AVX-512 build lays a block's
+// fans out in groups of 16 lanes padded to the group's largest fan, which must add nothing
+// to the smaller fans' sums. Every fifth centre has a welded twin that takes every other
+// triangle, every seventh fan one point no triangle uses, and the points past the fans (to
+// 1001, not a multiple of 16) are copies of one more such point. Double: double points,
+// normals and texture coordinates.
+vtkSmartPointer<vtkPolyData> UnevenFans(bool doubles)
+{
+  std::vector<std::array<double, 3>> p, n;
+  std::vector<std::array<double, 2>> t;
+  std::vector<std::array<vtkIdType, 3>> tris;
+  for (int s = 0; p.size() < 960; ++s)
+  {
+    const int k = 3 + (11 * s) % 30;
+    const bool open = s % 3 == 2;
+    const double flip = s % 4 == 3 ? -1.0 : 1.0, rot = 0.3 * s;
+    auto add = [&](double x, double y)
+    {
+      p.push_back({ x + 3.0 * s, y, 0.1 * std::sin(2.0 * x + s) * std::cos(y) });
+      n.push_back({ 0.05 * std::sin(s + x), 0.04 * std::cos(3.0 * y), 1.0 });
+      t.push_back(
+        { std::cos(rot) * x - std::sin(rot) * y, flip * (std::sin(rot) * x + std::cos(rot) * y) });
+      return vtkIdType(p.size() - 1);
+    };
+    const vtkIdType centre = add(0.0, 0.0);
+    vtkIdType twin = centre;
+    if (s % 5 == 0)
+    {
+      p.push_back(p[centre]);
+      n.push_back(n[centre]);
+      t.push_back(t[centre]);
+      twin = vtkIdType(p.size() - 1);
+    }
+    const int ring = open ? k + 1 : k;
+    const double span = open ? 1.5 * vtkMath::Pi() : 2.0 * vtkMath::Pi();
+    const vtkIdType first = vtkIdType(p.size());
+    for (int i = 0; i < ring; ++i)
+    {
+      const double a = span * (i + 0.25 * std::sin(1.7 * i + s)) / k;
+      const double r = 1.0 + 0.2 * std::sin(2.3 * i + s);
+      add(r * std::cos(a), r * std::sin(a));
+    }
+    for (int i = 0; i < k; ++i)
+    {
+      tris.push_back({ i % 2 ? twin : centre, first + i, first + (i + 1) % ring });
+    }
+    if (s % 7 == 0)
+    {
+      add(0.5, 0.5);
+    }
+  }
+  p.resize(1001, { 0.0, 0.0, -1.0 });
+  n.resize(1001, { 0.0, 0.0, 1.0 });
+  t.resize(1001, { 0.0, 0.0 });
+  // A fixed shuffle of the ids: new id (i * 97) % 1001 for old id i (gcd(97, 1001) = 1).
+  const vtkIdType np = vtkIdType(p.size());
+  auto id = [np](vtkIdType i) { return (i * 97) % np; };
+  vtkNew<vtkPoints> points;
+  points->SetDataType(doubles ? VTK_DOUBLE : VTK_FLOAT);
+  points->SetNumberOfPoints(np);
+  vtkSmartPointer<vtkDataArray> normals, tcoords;
+  if (doubles)
+  {
+    normals = vtkSmartPointer<vtkDoubleArray>::New();
+    tcoords = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    normals = vtkSmartPointer<vtkFloatArray>::New();
+    tcoords = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(np);
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    points->SetPoint(id(i), p[i].data());
+    normals->SetTuple(id(i), n[i].data());
+    tcoords->SetTuple(id(i), t[i].data());
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& tri : tris)
+  {
+    const vtkIdType ids[3] = { id(tri[0]), id(tri[1]), id(tri[2]) };
+    polys->InsertNextCell(3, ids);
+  }
+  return MakeSurface(points, polys, normals, tcoords);
+}
+
+std::string TangentBits(vtkPolyData* out)
+{
+  auto* t = vtkFloatArray::SafeDownCast(out->GetPointData()->GetArray("Tangents"));
+  return t ? std::string(reinterpret_cast<const char*>(t->GetPointer(0)),
+               sizeof(float) * t->GetNumberOfValues())
+           : std::string();
+}
+} // namespace
+
+// Fans of uneven sizes in one group of lanes, float and double, on the sequential backend
+// (all points one range: full blocks of 128 vertices, many cut short by their groups' slots)
+// and on two threads (ranges of a few vertices): the same bits in every build (the AVX2
+// and baseline builds lay the fans out corner by corner, without padding) and on both
+// backends. The fast path must finish on both meshes: the general algorithm's frames agree
+// within 1e-4 degrees but not bit for bit (it weighs corners in double with acos), so equal
+// bits would mean the fast path handed over and tested nothing here.
+TEST(vtkMikkTSpaceTangents, FastPathUnevenFansSameBitsInEveryBuild)
+{
+  if (const char* dump = EveryBuild::DumpPath())
+  {
+    std::string bits;
+    const std::string backend = vtkSMPTools::GetBackend();
+    for (bool doubles : { false, true })
+    {
+      auto mesh = UnevenFans(doubles);
+      for (bool sequential : { true, false })
+      {
+        vtkSMPTools::SetBackend(sequential ? "Sequential" : backend.c_str());
+        vtkSMPTools::Initialize(sequential ? 1 : 2);
+        FilterRun run(mesh);
+        bits += TangentBits(run.Output());
+      }
+      vtkSMPTools::Initialize(0);
+    }
+    EveryBuild::WriteDump(dump, bits);
+    return;
+  }
+  for (bool doubles : { false, true })
+  {
+    auto mesh = UnevenFans(doubles);
+    const char* name = doubles ? "uneven fans, double" : "uneven fans, float";
+    vtkNew<vtkMikkTSpaceTangents> general;
+    general->SetInputData(mesh);
+    general->SetAngularThreshold(179.9);
+    general->Update();
+    FilterRun fast(mesh);
+    EXPECT_EQ(fast.Errors->Count + fast.Warnings->Count, 0) << name;
+    ASSERT_EQ(fast.Output()->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << name;
+    EXPECT_FALSE(TangentBits(fast.Output()) == TangentBits(general->GetOutput()))
+      << name << ": the fast path handed over";
+    ExpectFastPathIsGeneralPath(mesh, name);
+  }
+#ifdef __linux__
+  const std::vector<std::string> results =
+    EveryBuild::OutputsOfEveryBuild("vtkMikkTSpaceTangents.FastPathUnevenFansSameBitsInEveryBuild");
+  ASSERT_EQ(results.size(), 3u);
+  ASSERT_EQ(results[0].size(), 4u * 4 * 1001 * sizeof(float));
+  const std::size_t run = results[0].size() / 4; // float, then double: sequential, 2 threads
+  EXPECT_TRUE(results[0].substr(0, run) == results[0].substr(run, run))
+    << "float: sequential and 2 threads differ";
+  EXPECT_TRUE(results[0].substr(2 * run, run) == results[0].substr(3 * run, run))
+    << "double: sequential and 2 threads differ";
+  EXPECT_TRUE(results[1] == results[0]) << "avx2 differs from the widest build";
+  EXPECT_TRUE(results[2] == results[0]) << "baseline differs from the widest build";
+#endif
+}
+
+namespace
+{
 // A copy of a float mesh with every point coordinate times s (the normals and texture
 // coordinates kept).
 vtkSmartPointer<vtkPolyData> ScaledCopy(vtkPolyData* in, double s)
