@@ -117,9 +117,19 @@ SURFACEDETAIL_TARGET_AVX2 void RunAVX2(const Worker& worker, vtkIdType begin, vt
 /// the processor has it, else in the baseline one. Run must be VTK_ALWAYS_INLINE (and what
 /// it calls inlined too) so that the AVX2 build compiles all of it.
 template <typename Worker>
+SURFACEDETAIL_TARGET_AVX512 void RunAVX512(const Worker& worker, vtkIdType begin, vtkIdType end)
+{
+  worker.Run(begin, end);
+}
+
+template <typename Worker>
 void RunWidest(const Worker& worker, vtkIdType begin, vtkIdType end)
 {
-  if (HaveAVX2())
+  if (HaveAVX512())
+  {
+    RunAVX512(worker, begin, end);
+  }
+  else if (HaveAVX2())
   {
     RunAVX2(worker, begin, end);
   }
