@@ -1273,6 +1273,19 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     const vtkIdType rowStride = static_cast<vtkIdType>(tex.W) * tex.NC;
     const int tnc = tex.NC;
+    // Where the block's first and last points read the same two rows a little apart (texture
+    // coordinates that advance with the point ids, as parametric sources make them), the next
+    // block likely reads on from there: its texels are asked for (as pass 1's arrays are).
+    if (count == Block && !(outside[0] | outside[Block - 1]) && j0[0] == j0[Block - 1])
+    {
+      const vtkIdType span = static_cast<vtkIdType>(i0[Block - 1] - i0[0] + 1) * tnc;
+      if (span > 0 && span * static_cast<vtkIdType>(sizeof(T)) <= 4096)
+      {
+        const T* last = tex.Data + j0[0] * rowStride + i0[Block - 1] * tnc;
+        PrefetchBytes<false>(last, sizeof(T) * span);
+        PrefetchBytes<false>(last + rowStride, sizeof(T) * span);
+      }
+    }
     for (int k = 0; k < count; ++k)
     {
       const T* p = tex.Data + j0[k] * rowStride + i0[k] * tnc + tex.Comp;
