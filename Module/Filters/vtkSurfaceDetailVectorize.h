@@ -1,14 +1,14 @@
 /**
  * @file   vtkSurfaceDetailVectorize.h
- * @brief  Private: one way for the module's hot loops to get an AVX2 build beside the
- *         baseline one.
+ * @brief  Private: one way for the module's hot loops to get AVX2 and AVX-512 builds beside
+ *         the baseline one.
  *
  * Square roots, divisions and stores bound the per-point loops of the sources and filters;
- * AVX does four doubles per instruction where the x86-64 baseline (SSE2) does two. The
- * module is built for the baseline, so such loops are compiled twice and the AVX2 copy runs
- * only on processors that have it. Neither copy contracts `a*b+c` into a fused multiply-add
- * (AVX2 does not imply FMA, and the module does not ask for it), so both give the same bits
- * and results do not depend on the processor.
+ * AVX does four doubles per instruction where the x86-64 baseline (SSE2) does two, AVX-512
+ * eight. The module is built for the baseline, so such loops are compiled again for the wider
+ * sets and those copies run only on processors that have them. No copy contracts `a*b+c` into
+ * a fused multiply-add (AVX2 does not imply FMA; files with AVX-512 copies are compiled with
+ * -ffp-contract=off), so all give the same bits and results do not depend on the processor.
  *
  * - SURFACEDETAIL_WIDE_VECTORS on a plain (non-template, non-member) function: the loader
  *   picks the copy (GCC/clang `target_clones`; clang does not take it on templates).
@@ -113,13 +113,26 @@ SURFACEDETAIL_TARGET_AVX2 void RunAVX2(const Worker& worker, vtkIdType begin, vt
   worker.Run(begin, end);
 }
 
-/// For a vtkSMPTools worker's operator(): runs worker.Run(begin, end) in its AVX2 build where
-/// the processor has it, else in the baseline one. Run must be VTK_ALWAYS_INLINE (and what
-/// it calls inlined too) so that the AVX2 build compiles all of it.
+/// worker.Run(begin, end) in the AVX-512 build (see RunWidest).
+template <typename Worker>
+SURFACEDETAIL_TARGET_AVX512 void RunAVX512(const Worker& worker, vtkIdType begin, vtkIdType end)
+{
+  worker.Run(begin, end);
+}
+
+/// For a vtkSMPTools worker's operator(): runs worker.Run(begin, end) in its AVX-512 build where
+/// the processor has it (HaveAVX512()), else in its AVX2 build where it has that, else in the
+/// baseline one. Run must be VTK_ALWAYS_INLINE (and what it calls inlined too) so that the wider
+/// builds compile all of it; the calling file must be compiled with -ffp-contract=off (see
+/// SURFACEDETAIL_TARGET_AVX512).
 template <typename Worker>
 void RunWidest(const Worker& worker, vtkIdType begin, vtkIdType end)
 {
-  if (HaveAVX2())
+  if (HaveAVX512())
+  {
+    RunAVX512(worker, begin, end);
+  }
+  else if (HaveAVX2())
   {
     RunAVX2(worker, begin, end);
   }
