@@ -806,7 +806,7 @@ inline R ToReal(double v)
 VTK_ALWAYS_INLINE void KeepScalar([[maybe_unused]] double& a, [[maybe_unused]] double& b,
   [[maybe_unused]] double& c, [[maybe_unused]] double& d)
 {
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#if defined(__GNUC__) && defined(__SSE2__)
   asm("" : "+x"(a), "+x"(b), "+x"(c), "+x"(d));
 #endif
 }
