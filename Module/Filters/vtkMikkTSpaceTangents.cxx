@@ -2730,19 +2730,80 @@ private:
     return true;
   }
 
-  // Each corner's angle, projected onto the tangent plane, over the length of its dP/ds
-  // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
-  // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
-  // One loop over the block's corners, which the compiler vectorises (with gathers in the
-  // AVX2 build). Wide: the AVX2 and AVX-512 builds, which also prepare the closed-fan test;
-  // the baseline build (SSE2) has no 64-bit vector multiply, where the ids' mix costs more
-  // than the edge matching it saves (3.6% more cycles on the 1M torus), so there every fan
-  // goes through FanIsOneRun in GatherFan, as before the test. Both ways take the same
+  // What the fans need of one corner: e1 and e2 its edges (to the next and the previous point),
+  // n its vertex's unit normal, os its triangle's unit dP/ds. Weight: its angle between the
+  // edges projected onto the tangent plane, over the length of os projected, NaN if a check
+  // fails (which fails the fan's final test); the projected edges have the cross product
+  // n (n . (e1 x e2)) and the dot product e1 . e2 - (e1 . n)(e2 . n), and for a direction d,
+  // |proj d|^2 = d.d - (d.n)^2. Turn: the closed-fan test's value (see FastTurn): its angle if
+  // within the margins, plus TurnBack if it turns the other way about n, else TurnOff.
+  struct Corner
+  {
+    Real Weight;
+    Real Turn;
+  };
+  VTK_ALWAYS_INLINE static Corner WeighCorner(Real e1x, Real e1y, Real e1z, Real e2x, Real e2y,
+    Real e2z, Real nx, Real ny, Real nz, Real osx, Real osy, Real osz)
+  {
+    constexpr bool Single = std::is_same<Real, float>::value;
+    const Real n1 = e1x * nx + e1y * ny + e1z * nz;
+    const Real n2 = e2x * nx + e2y * ny + e2z * nz;
+    const Real l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+    const Real l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    const Real pl1 = l1 - n1 * n1;
+    const Real pl2 = l2 - n2 * n2;
+    const Real x = e1y * e2z - e1z * e2y;
+    const Real y = e1z * e2x - e1x * e2z;
+    const Real z = e1x * e2y - e1y * e2x;
+    const Real cross = x * nx + y * ny + z * nz;
+    const Real angle =
+      FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
+    const Real on = osx * nx + osy * ny + osz * nz;
+    bool projected;
+    Real osLength;
+    if constexpr (Single)
+    {
+      // The general path normalises a projected edge only when some component is above
+      // FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer than
+      // 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
+      // edges' lengths, so the angle between projected edges keeps the general path's
+      // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
+      // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
+      // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
+      // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
+      // longer than 0.1: the general path projects it in double.
+      const Real px = osx - on * nx, py = osy - on * ny, pz = osz - on * nz;
+      const Real pos2 = px * px + py * py + pz * pz;
+      projected =
+        (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) & (pos2 > 1e-2f);
+      osLength = std::sqrt(pos2);
+    }
+    else
+    {
+      // The general path normalises a projected edge only when some component is above
+      // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
+      // margin of 4), so shorter projections (an edge along the normal) go that way.
+      projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
+      osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
+    }
+    // In float, projected implies the edges' projections that FastTurn's margins need.
+    const bool edgesProjected =
+      Single || ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
+    const bool turns =
+      edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
+    return { (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength,
+      turns ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff) };
+  }
+
+  // WeighCorner for every corner of the block, in one loop that the compiler vectorises (with
+  // gathers in the AVX2 build). Wide: the AVX2 and AVX-512 builds, which also prepare the
+  // closed-fan test; the baseline build (SSE2) has no 64-bit vector multiply, where the ids' mix
+  // costs more than the edge matching it saves (3.6% more cycles on the 1M torus), so there every
+  // fan goes through FanIsOneRun in GatherFan, as before the test. Both ways take the same
   // decisions.
   template <bool Wide>
   VTK_ALWAYS_INLINE void WeighCorners(FanBlock<Real>& fb, const std::array<float, 6>* dir) const
   {
-    constexpr bool Single = std::is_same<Real, float>::value;
     constexpr int Lanes = FanBlock<Real>::Lanes;
     const int nc = (fb.NumberOfCorners + Lanes - 1) & ~(Lanes - 1);
     const int last = fb.NumberOfCorners - 1;
@@ -2780,57 +2841,13 @@ private:
       const Real e2x = Real(p[x2]) - pv[0], e2y = Real(p[x2 + 1]) - pv[1],
                  e2z = Real(p[x2 + 2]) - pv[2];
       const Real osx = d[t], osy = d[t + 1], osz = d[t + 2];
-      const Real n1 = e1x * nx[c] + e1y * ny[c] + e1z * nz[c];
-      const Real n2 = e2x * nx[c] + e2y * ny[c] + e2z * nz[c];
-      const Real l1 = e1x * e1x + e1y * e1y + e1z * e1z;
-      const Real l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-      const Real pl1 = l1 - n1 * n1;
-      const Real pl2 = l2 - n2 * n2;
-      const Real x = e1y * e2z - e1z * e2y;
-      const Real y = e1z * e2x - e1x * e2z;
-      const Real z = e1x * e2y - e1y * e2x;
-      const Real cross = x * nx[c] + y * ny[c] + z * nz[c];
-      const Real angle =
-        FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
-      const Real on = osx * nx[c] + osy * ny[c] + osz * nz[c];
-      bool projected;
-      Real osLength;
-      if constexpr (Single)
-      {
-        // The general path normalises a projected edge only when some component is above
-        // FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer than
-        // 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
-        // edges' lengths, so the angle between projected edges keeps the general path's
-        // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
-        // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
-        // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
-        // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
-        // longer than 0.1: the general path projects it in double.
-        const Real px = osx - on * nx[c], py = osy - on * ny[c], pz = osz - on * nz[c];
-        const Real pos2 = px * px + py * py + pz * pz;
-        projected =
-          (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) & (pos2 > 1e-2f);
-        osLength = std::sqrt(pos2);
-      }
-      else
-      {
-        // The general path normalises a projected edge only when some component is above
-        // FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3 components, a
-        // margin of 4), so shorter projections (an edge along the normal) go that way.
-        projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
-        osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
-      }
-      // In float, projected implies the edges' projections that FastTurn's margins need.
-      const bool edgesProjected =
-        Single || ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
-      const bool turns =
-        edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
+      const Corner w =
+        WeighCorner(e1x, e1y, e1z, e2x, e2y, e2z, nx[c], ny[c], nz[c], osx, osy, osz);
       if constexpr (Wide)
       {
-        turn[c] = turns ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
+        turn[c] = w.Turn;
       }
-      // A failed check makes the weight NaN, which fails the fan's final test.
-      const Real weight = (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
+      const Real weight = w.Weight;
       wx[c] = weight * osx;
       wy[c] = weight * osy;
       wz[c] = weight * osz;
@@ -3101,16 +3118,12 @@ private:
     }
   }
 
-  // Per corner, its angle projected onto the tangent plane, over the length of its dP/ds
-  // projected: the projected edges e1, e2 have the cross product n (n . (e1 x e2)) and the
-  // dot product e1 . e2 - (e1 . n)(e2 . n); for a direction d, |proj d|^2 = d.d - (d.n)^2.
-  // The weighted dP/ds go into each vertex's sum, and its dP/ds and dP/dt are checked
-  // against its references (a quarter turn), and the closed-fan test's turns and id mix are
-  // summed. One loop over each group's slots, vectorised over its lanes (gathers for the
+  // WeighCorner for every corner: the weighted dP/ds go into each vertex's sum, and its dP/ds and
+  // dP/dt are checked against its references (a quarter turn), and the closed-fan test's turns and
+  // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
   VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
-    constexpr bool Single = std::is_same<Real, float>::value;
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     const PT* __restrict p = this->P;
     const int groups = (fb.NumberOfVertices + Lanes - 1) / Lanes;
@@ -3150,68 +3163,17 @@ private:
         {
           const bool live = s < kk[i];
           const std::int32_t x1 = next[i], x2 = prev[i];
-          const Real e1x = Real(p[x1]) - vx[i], e1y = Real(p[x1 + 1]) - vy[i],
-                     e1z = Real(p[x1 + 2]) - vz[i];
-          const Real e2x = Real(p[x2]) - vx[i], e2y = Real(p[x2 + 1]) - vy[i],
-                     e2z = Real(p[x2 + 2]) - vz[i];
           const Real osx = dsx[i], osy = dsy[i], osz = dsz[i];
           const Real otx = dtx[i], oty = dty[i], otz = dtz[i];
-          const Real n1 = e1x * nx[i] + e1y * ny[i] + e1z * nz[i];
-          const Real n2 = e2x * nx[i] + e2y * ny[i] + e2z * nz[i];
-          const Real l1 = e1x * e1x + e1y * e1y + e1z * e1z;
-          const Real l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-          const Real pl1 = l1 - n1 * n1;
-          const Real pl2 = l2 - n2 * n2;
-          const Real x = e1y * e2z - e1z * e2y;
-          const Real y = e1z * e2x - e1x * e2z;
-          const Real z = e1x * e2y - e1y * e2x;
-          const Real cross = x * nx[i] + y * ny[i] + z * nz[i];
-          const Real angle =
-            FastAngle<Real>(std::abs(cross), e1x * e2x + e1y * e2y + e1z * e2z - n1 * n2);
-          const Real on = osx * nx[i] + osy * ny[i] + osz * nz[i];
-          bool projected;
-          Real osLength;
-          if constexpr (Single)
-          {
-            // The general path normalises a projected edge only when some component is
-            // above FLT_MIN. In float, FLT_MIN^2 underflows: a projected edge must be longer
-            // than 2^-50. The float rounding of e1.e2 - n1 n2 and of l - n^2 is ~1e-7 of the
-            // edges' lengths, so the angle between projected edges keeps the general path's
-            // frames (to ~1e-5 degrees) only if each projection is a good part of its edge:
-            // squared, above 0.1 of the edge's (the edge 18 degrees or more off the normal;
-            // at 1e-3, cone tips gave frames 1e-3 degrees off). For the same reason the
-            // projection of the unit dP/ds, explicit (d.d - (d.n)^2 would cancel), must be
-            // longer than 0.1: the general path projects it in double.
-            const Real px = osx - on * nx[i], py = osy - on * ny[i], pz = osz - on * nz[i];
-            const Real pos2 = px * px + py * py + pz * pz;
-            projected = (std::min(pl1, pl2) > 0x1p-100f) & (pl1 > 0.1f * l1) & (pl2 > 0.1f * l2) &
-              (pos2 > 1e-2f);
-            osLength = std::sqrt(pos2);
-          }
-          else
-          {
-            // The general path normalises a projected edge only when some component is
-            // above FLT_MIN; a squared length above 12 FLT_MIN^2 guarantees that (3
-            // components, a margin of 4), so shorter projections (an edge along the normal)
-            // go that way.
-            projected = std::min(pl1, pl2) > 12.0 * FLT_MIN * FLT_MIN;
-            osLength = std::sqrt(osx * osx + osy * osy + osz * osz - on * on);
-          }
-          // In float, projected implies the edges' projections that FastTurn's margins need.
-          const bool edgesProjected = Single ||
-            ((pl1 > Real(FastEdgeProjection) * l1) & (pl2 > Real(FastEdgeProjection) * l2));
-          const bool turnsOk =
-            edgesProjected & (angle > Real(FastTurn)) & (angle < Real(vtkMath::Pi() - FastTurn));
-          const Real turn =
-            turnsOk ? (cross > Real(0) ? angle : angle + Real(TurnBack)) : Real(TurnOff);
-          turns[i] += live ? turn : Real(0);
+          const Corner w = WeighCorner(Real(p[x1]) - vx[i], Real(p[x1 + 1]) - vy[i],
+            Real(p[x1 + 2]) - vz[i], Real(p[x2]) - vx[i], Real(p[x2 + 1]) - vy[i],
+            Real(p[x2 + 2]) - vz[i], nx[i], ny[i], nz[i], osx, osy, osz);
+          turns[i] += live ? w.Turn : Real(0);
           // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
           const bool quarter = (osx * r0x[i] + osy * r0y[i] + osz * r0z[i] > Real(FastCos)) &
             (otx * r1x[i] + oty * r1y[i] + otz * r1z[i] > Real(FastCos));
           ok[i] &= !live | quarter;
-          // A failed check makes the weight NaN, which fails the fan's final test.
-          const Real weight =
-            (projected ? angle : std::numeric_limits<Real>::quiet_NaN()) / osLength;
+          const Real weight = w.Weight;
           sx[i] = live ? sx[i] + weight * osx : sx[i];
           sy[i] = live ? sy[i] + weight * osy : sy[i];
           sz[i] = live ? sz[i] + weight * osz : sz[i];
