@@ -2657,7 +2657,7 @@ private:
           return false;
         }
       }
-      References(fb, dir);
+      References(fb, dir, fb.NumberOfVertices);
       this->WeighCorners<Wide>(fb, dir);
       if (!SumFans<Wide>(fb, dir, nextIds, prevIds, first, out))
       {
@@ -2857,17 +2857,19 @@ private:
   // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
   // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
   // directions, and with every direction within a quarter turn of these (with a margin),
-  // no two are.
-  VTK_ALWAYS_INLINE static void References(FanBlock<Real>& fb, const std::array<float, 6>* dir)
+  // no two are. For the first @a count vertices of a FanBlock or a SlotBlock (whose
+  // references are in double or in Real).
+  template <typename BlockT>
+  VTK_ALWAYS_INLINE static void References(BlockT& fb, const std::array<float, 6>* dir, int count)
   {
-    const int nv = fb.NumberOfVertices;
+    using RT = std::remove_reference_t<decltype(fb.R[0][0])>;
     const float* __restrict d = dir[0].data();
     const std::int32_t* __restrict first6 = fb.First6;
     const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
     double* __restrict good = fb.Good;
-    double* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
-    double* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
-    for (int j = 0; j < nv; ++j)
+    RT* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    RT* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < count; ++j)
     {
       const std::int32_t t = first6[j];
       const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
@@ -2879,12 +2881,12 @@ private:
       const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
       good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
       const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
-      r0x[j] = ip * p[0];
-      r0y[j] = ip * p[1];
-      r0z[j] = ip * p[2];
-      r1x[j] = iq * q[0];
-      r1y[j] = iq * q[1];
-      r1z[j] = iq * q[2];
+      r0x[j] = RT(ip * p[0]);
+      r0y[j] = RT(ip * p[1]);
+      r0z[j] = RT(ip * p[2]);
+      r1x[j] = RT(iq * q[0]);
+      r1y[j] = RT(iq * q[1]);
+      r1z[j] = RT(iq * q[2]);
     }
   }
 
@@ -3009,7 +3011,9 @@ private:
         }
       }
       Pad(fb);
-      SlotReferences(fb, dir);
+      // The last group's lanes past the block's vertices too (Pad gave them copies).
+      References(fb, dir,
+        (fb.NumberOfVertices + SlotBlock<Real>::Lanes - 1) & ~(SlotBlock<Real>::Lanes - 1));
       if (!this->WeighSlots(fb) || !SumSlots(fb, nextIds, prevIds, first, out))
       {
         return false;
@@ -3185,41 +3189,6 @@ private:
       }
     }
     return within != 0;
-  }
-
-  // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
-  // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
-  // directions, and with every direction within a quarter turn of these (with a margin),
-  // no two are.
-  VTK_ALWAYS_INLINE static void SlotReferences(SlotBlock<Real>& fb, const std::array<float, 6>* dir)
-  {
-    constexpr int Lanes = SlotBlock<Real>::Lanes;
-    const int nl = (fb.NumberOfVertices + Lanes - 1) & ~(Lanes - 1);
-    const float* __restrict d = dir[0].data();
-    const std::int32_t* __restrict first6 = fb.First6;
-    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
-    double* __restrict good = fb.Good;
-    Real* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
-    Real* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
-    for (int j = 0; j < nl; ++j)
-    {
-      const std::int32_t t = first6[j];
-      const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
-      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
-      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
-      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
-      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
-      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
-      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
-      r0x[j] = Real(ip * p[0]);
-      r0y[j] = Real(ip * p[1]);
-      r0z[j] = Real(ip * p[2]);
-      r1x[j] = Real(iq * q[0]);
-      r1y[j] = Real(iq * q[1]);
-      r1z[j] = Real(iq * q[2]);
-    }
   }
 
   // Per vertex, the sum of weighted dP/ds projected (the projection of the sum), normalised,
