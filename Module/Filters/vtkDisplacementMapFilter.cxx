@@ -13,6 +13,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailCells.h"
@@ -499,6 +500,25 @@ struct CellSpans
 
   size_t Bytes() const { return sizeof(vtkIdType) * 4 * this->Lo.size(); }
 
+  // The chunks that may meet [pb, pe): [first, last), each still to be asked Meets.
+  void Candidates(vtkIdType pb, vtkIdType pe, vtkIdType& first, vtkIdType& last) const
+  {
+    first = static_cast<vtkIdType>(
+      std::lower_bound(this->MaxHi.begin(), this->MaxHi.end(), pb) - this->MaxHi.begin());
+    last = static_cast<vtkIdType>(
+      std::lower_bound(this->MinLo.begin(), this->MinLo.end(), pe) - this->MinLo.begin());
+  }
+
+  // Whether chunk @a c may have a corner in [pb, pe); whether all its corners are there.
+  bool Meets(vtkIdType c, vtkIdType pb, vtkIdType pe) const
+  {
+    return this->Lo[c] < pe && this->Hi[c] >= pb;
+  }
+  bool Within(vtkIdType c, vtkIdType pb, vtkIdType pe) const
+  {
+    return this->Lo[c] >= pb && this->Hi[c] < pe;
+  }
+
   // The polygons that ForCellsTouching reads over the ranges [t S, (t + 1) S) that cover the
   // points, relative to the polygon count (1: each read once).
   double Work(const PolyLinks& mesh, vtkIdType S) const
@@ -576,23 +596,20 @@ template <typename Body>
 VTK_ALWAYS_INLINE void ForCellsTouching(
   const PolyLinks& mesh, const CellSpans& spans, vtkIdType pb, vtkIdType pe, Body&& body)
 {
-  const vtkIdType first = static_cast<vtkIdType>(
-    std::lower_bound(spans.MaxHi.begin(), spans.MaxHi.end(), pb) - spans.MaxHi.begin());
-  const vtkIdType last = static_cast<vtkIdType>(
-    std::lower_bound(spans.MinLo.begin(), spans.MinLo.end(), pe) - spans.MinLo.begin());
+  vtkIdType first, last;
+  spans.Candidates(pb, pe, first, last);
   const vtkIdType* __restrict offsets = mesh.Offsets;
   const vtkIdType* __restrict conn = mesh.Conn;
   const std::uint64_t width = static_cast<std::uint64_t>(pe - pb);
   for (vtkIdType c = first; c < last; ++c)
   {
-    const vtkIdType lo = spans.Lo[c], hi = spans.Hi[c];
-    if (lo >= pe || hi < pb)
+    if (!spans.Meets(c, pb, pe))
     {
       continue;
     }
     const vtkIdType cb = c * CellSpans::Chunk;
     const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
-    if (lo >= pb && hi < pe)
+    if (spans.Within(c, pb, pe))
     {
       // Every corner inside: every polygon with a corner.
       for (vtkIdType cell = cb; cell < ce; ++cell)
@@ -2071,35 +2088,43 @@ struct MeshPolygonNormalWorker
     double* out = this->CellNormals + 3 * begin;
     for (vtkIdType cell = begin; cell < end; ++cell, out += 3)
     {
-      const vtkIdType* ids = conn + offsets[cell];
-      const vtkIdType n = offsets[cell + 1] - offsets[cell];
-      // The displaced polygon's normal, area-weighted: a fan of cross products from corner 0.
-      double m[3] = { 0.0, 0.0, 0.0 };
-      FanSum(moved, ids, n, m);
-      double sign;
-      if (SignKnown)
+      OrientedNormal<SignKnown>(moved, points, normals, conn + offsets[cell],
+        offsets[cell + 1] - offsets[cell], signs[cell], out);
+    }
+  }
+
+  // The displaced polygon of the @a n corners @a ids: its normal, area-weighted (a fan of cross
+  // products from corner 0), oriented as its points' input normals: by @a sign (SignKnown), else
+  // found from the input polygon (then stored in @a sign).
+  template <bool SignKnown>
+  static VTK_ALWAYS_INLINE void OrientedNormal(const R* moved, const R* points, const R* normals,
+    const vtkIdType* ids, vtkIdType n, signed char& sign, double out[3])
+  {
+    double m[3] = { 0.0, 0.0, 0.0 };
+    FanSum(moved, ids, n, m);
+    double s;
+    if (SignKnown)
+    {
+      s = sign < 0 ? -1.0 : 1.0;
+    }
+    else
+    {
+      // The orientation: the input polygon's normal against its points' input normals.
+      double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
+      FanSum(points, ids, n, orig);
+      for (vtkIdType k = 0; k < n; ++k)
       {
-        sign = signs[cell] < 0 ? -1.0 : 1.0;
+        const R* nk = normals + 3 * ids[k];
+        nsum[0] += nk[0];
+        nsum[1] += nk[1];
+        nsum[2] += nk[2];
       }
-      else
-      {
-        // The orientation: the input polygon's normal against its points' input normals.
-        double orig[3] = { 0.0, 0.0, 0.0 }, nsum[3] = { 0.0, 0.0, 0.0 };
-        FanSum(points, ids, n, orig);
-        for (vtkIdType k = 0; k < n; ++k)
-        {
-          const R* nk = normals + 3 * ids[k];
-          nsum[0] += nk[0];
-          nsum[1] += nk[1];
-          nsum[2] += nk[2];
-        }
-        sign = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
-        signs[cell] = sign < 0.0 ? -1 : 1;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        out[k] = sign * m[k];
-      }
+      s = Dot(orig, nsum) < 0.0 ? -1.0 : 1.0;
+      sign = s < 0.0 ? -1 : 1;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = s * m[k];
     }
   }
 };
@@ -2165,6 +2190,208 @@ struct MeshPointNormalWorker : BlockOps<R, L>
               double sum[3];
               this->Sum(first + k, sum);
               WriteNormalAndTangent(c, first + k, sum);
+            }
+          }
+        }
+      }
+    }
+  }
+};
+
+// Mesh normals without links: a task of the points [pb, pe) (TaskSize of them) adds the oriented
+// normals of the polygons with a corner among its points (ForCellsTouching: in increasing polygon
+// order) to those corners' sums, held by the task (in cache), then writes its points' normals and
+// tangents in blocks as MeshPointNormalWorker does. Each point's sum is made by one task in
+// polygon order, as MeshPointNormalWorker's gather makes it: the same bits, at any thread count.
+// Polygons with corners in two tasks are computed by both; an orientation found on a first
+// execution is stored by the task that owns the polygon's first corner alone.
+template <typename R, typename L = R>
+struct MeshScatterNormalWorker : BlockOps<R, L>
+{
+  using Base = BlockOps<R, L>;
+  using Base::Block;
+  using Base::Float;
+  using typename Base::Flags;
+  using typename Base::Lanes;
+  // The points of a task (a multiple of Block): the polygons around a task's two ends, about two
+  // rows of a usual mesh, are computed by both tasks (1414-point rows, the 1M-point torus: about
+  // 9% more polygons with 16384 points a task, 2% with 65536, which the cycles show), so large
+  // tasks, but at least eight of them where the mesh allows. The results do not depend on it.
+  static vtkIdType TaskSize(vtkIdType numPts)
+  {
+    vtkIdType size = 16384;
+    while (size < 65536 && 16 * size <= numPts)
+    {
+      size *= 2;
+    }
+    return size;
+  }
+  const CellSpans& Spans;
+  const ArrayReader<R>& Moved;
+  signed char* Signs;
+  bool Known;
+  vtkSMPThreadLocal<std::vector<double>>& Sums;
+  vtkIdType NumPoints;
+  vtkIdType Size; // TaskSize(NumPoints)
+
+  // Above this work (CellSpans::Work: polygons read per polygon), the links' gather is cheaper.
+  static constexpr double MaxWork = 1.5;
+
+  vtkIdType Tasks() const { return (this->NumPoints + this->Size - 1) / this->Size; }
+
+  void operator()(vtkIdType t0, vtkIdType t1) const
+  {
+    vtkSurfaceDetailVectorize::RunWidest(*this, t0, t1);
+  }
+
+  VTK_ALWAYS_INLINE void Run(vtkIdType t0, vtkIdType t1) const
+  {
+    std::vector<double>& sums = this->Sums.Local();
+    sums.resize(4 * this->Size);
+    const vtkIdType numPts = this->NumPoints;
+    for (vtkIdType t = t0; t < t1; ++t)
+    {
+      const vtkIdType pb = t * this->Size, pe = std::min(numPts, pb + this->Size);
+      if (this->Known)
+      {
+        this->template Task<true>(pb, pe, sums.data());
+      }
+      else
+      {
+        this->template Task<false>(pb, pe, sums.data());
+      }
+    }
+  }
+
+  // Adds @a v to the sum of point @a j of the task (4 doubles a point: one vector add).
+  static VTK_ALWAYS_INLINE void Add(double* sums, std::uint64_t j, const Double4& v)
+  {
+    Double4 sum;
+    std::memcpy(&sum, sums + 4 * j, sizeof(sum));
+    sum += v;
+    std::memcpy(sums + 4 * j, &sum, sizeof(sum));
+  }
+
+  // Polygon @a cell's normal added to its corners' sums among the task's points [pb, pb + width)
+  // (Within: all its corners are), its orientation stored if the task owns its first corner.
+  // Triangles, the usual polygons, with their corner count known (loops unrolled).
+  template <bool SignKnown, bool Within>
+  VTK_ALWAYS_INLINE void AddPolygon(const vtkIdType* ids, vtkIdType n, vtkIdType cell, vtkIdType pb,
+    std::uint64_t width, double* sums) const
+  {
+    if (n == 3)
+    {
+      this->template AddPolygonOf<SignKnown, Within>(ids, 3, cell, pb, width, sums);
+    }
+    else
+    {
+      this->template AddPolygonOf<SignKnown, Within>(ids, n, cell, pb, width, sums);
+    }
+  }
+
+  template <bool SignKnown, bool Within>
+  VTK_ALWAYS_INLINE void AddPolygonOf(const vtkIdType* ids, vtkIdType n, vtkIdType cell,
+    vtkIdType pb, std::uint64_t width, double* sums) const
+  {
+    const Context<R>& c = this->C;
+    signed char sign = SignKnown ? this->Signs[cell] : 0;
+    double v[3];
+    MeshPolygonNormalWorker<R>::template OrientedNormal<SignKnown>(
+      this->Moved.P, c.Points->P, c.Normals->P, ids, n, sign, v);
+    if (!SignKnown && (Within || InRange(ids[0], pb, width)))
+    {
+      this->Signs[cell] = sign;
+    }
+    const Double4 v4 = { v[0], v[1], v[2], 0.0 };
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const std::uint64_t j = static_cast<std::uint64_t>(ids[k] - pb);
+      if (Within || j < width)
+      {
+        Add(sums, j, v4);
+      }
+    }
+  }
+
+  // The polygons' part of a task: ForCellsTouching's walk, with chunks whose corners are all the
+  // task's added without a test per corner.
+  template <bool SignKnown>
+  VTK_ALWAYS_INLINE void AddPolygons(vtkIdType pb, vtkIdType pe, double* sums) const
+  {
+    const PolyLinks& mesh = *this->C.Polys;
+    const vtkIdType* __restrict offsets = mesh.Offsets;
+    const vtkIdType* __restrict conn = mesh.Conn;
+    const std::uint64_t width = static_cast<std::uint64_t>(pe - pb);
+    vtkIdType first, last;
+    this->Spans.Candidates(pb, pe, first, last);
+    for (vtkIdType chunk = first; chunk < last; ++chunk)
+    {
+      if (!this->Spans.Meets(chunk, pb, pe))
+      {
+        continue;
+      }
+      const vtkIdType cb = chunk * CellSpans::Chunk;
+      const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
+      if (this->Spans.Within(chunk, pb, pe))
+      {
+        for (vtkIdType cell = cb; cell < ce; ++cell)
+        {
+          const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
+          if (n > 0)
+          {
+            this->template AddPolygon<SignKnown, true>(conn + b, n, cell, pb, width, sums);
+          }
+        }
+        continue;
+      }
+      for (vtkIdType cell = cb; cell < ce; ++cell)
+      {
+        const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
+        const vtkIdType* ids = conn + b;
+        bool touches = false;
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          touches |= InRange(ids[k], pb, width);
+        }
+        if (touches)
+        {
+          this->template AddPolygon<SignKnown, false>(ids, n, cell, pb, width, sums);
+        }
+      }
+    }
+  }
+
+  template <bool SignKnown>
+  VTK_ALWAYS_INLINE void Task(vtkIdType pb, vtkIdType pe, double* sums) const
+  {
+    const Context<R>& c = this->C;
+    std::fill_n(sums, 4 * (pe - pb), 0.0);
+    this->template AddPolygons<SignKnown>(pb, pe, sums);
+    alignas(64) Lanes n[3], fallback[3], m[3], x[4];
+    alignas(64) Flags redo;
+    for (vtkIdType first = pb; first < pe; first += Block)
+    {
+      const int count = static_cast<int>(std::min<vtkIdType>(pe - first, Block));
+      const double* sum = sums + 4 * (first - pb);
+      for (int k = 0; k < count; ++k)
+      {
+        m[0][k] = ToReal<L>(sum[4 * k]);
+        m[1][k] = ToReal<L>(sum[4 * k + 1]);
+        m[2][k] = ToReal<L>(sum[4 * k + 2]);
+      }
+      this->UnitNormals(first, count, n, fallback, redo);
+      this->Normals(first, count, fallback, m, redo);
+      this->OutputTangents(first, count, m, x, redo);
+      if constexpr (Float)
+      {
+        if (Base::Any(count, redo))
+        {
+          for (int k = 0; k < count; ++k)
+          {
+            if (redo[k])
+            {
+              double redone[3] = { sum[4 * k], sum[4 * k + 1], sum[4 * k + 2] };
+              WriteNormalAndTangent(c, first + k, redone);
             }
           }
         }
@@ -2558,6 +2785,14 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> FitNormals;
   bool HaveFitNormals = false;
 
+  // Mesh's cell spans, and whether the point ids are too scattered for them (Mesh then gathers
+  // through the links): from the polygons and the point count.
+  Key SpansKey;
+  vtkTimeStamp SpansTime;
+  CellSpans Spans;
+  bool SpansScattered = false;
+  bool HaveSpans = false;
+
   // Mesh's polygon orientations: from the polygons, the points and the normals.
   Key SignsKey;
   vtkTimeStamp SignsTime;
@@ -2593,7 +2828,7 @@ struct vtkDisplacementMapFilter::MeshCache
     return sizeof(vtkIdType) * (this->Links.Offsets.size() + this->Links.Links.size()) +
       sizeof(this->Groups[0]) * this->Groups.capacity() +
       sizeof(double) * (this->FitNormals.size() + this->Fits.size()) +
-      sizeof(float) * this->FitsFloat.size() + this->Signs.size();
+      sizeof(float) * this->FitsFloat.size() + this->Signs.size() + this->Spans.Bytes();
   }
 
   static bool Fresh(const Key& built, const Key& now, vtkMTimeType changed, const vtkTimeStamp& t)
@@ -2735,9 +2970,12 @@ int vtkDisplacementMapFilter::RequestData(
   vtkDataArray* dPdv = input->GetPointData()->GetArray("dPdv");
   const bool haveDerivs =
     dPdu && dPdv && dPdu->GetNumberOfComponents() == 3 && dPdv->GetNumberOfComponents() == 3;
-  const bool needLinks = this->NormalMode == Exact || this->NormalMode == Mesh ||
-    (this->NormalMode == Approximate && !haveDerivs);
-  if (needLinks && input->GetNumberOfStrips() > 0)
+  // The fits read the polygons through the links; Mesh through its cell spans (or links, see
+  // MeshScatterNormalWorker).
+  const bool needLinks =
+    this->NormalMode == Exact || (this->NormalMode == Approximate && !haveDerivs);
+  const bool needCells = needLinks || this->NormalMode == Mesh;
+  if (needCells && input->GetNumberOfStrips() > 0)
   {
     vtkErrorMacro("The input has triangle strips; normal mode " << this->GetNormalModeAsString()
                                                                 << " needs polygons. Run "
@@ -2923,11 +3161,14 @@ int vtkDisplacementMapFilter::RequestData(
       cache.HaveLinks && MeshCache::Fresh(cache.LinksKey, linksKey, linksChanged, cache.LinksTime);
     const bool haveGroups = cache.HaveGroups && cache.GroupsTolerance == this->SeamTolerance &&
       MeshCache::Fresh(cache.GroupsKey, groupsKey, groupsChanged, cache.GroupsTime);
-    // The links are built beside the seam sweep: Mesh normals need them only after pass 1 (built
-    // beside it), the fits of pass 1 as soon as it starts (built by the thread that then runs it,
-    // while another thread sweeps the seams).
+    // The links are built beside the seam sweep: the fits of pass 1 need them as soon as it starts
+    // (built by the thread that then runs it, while another thread sweeps the seams). Mesh normals
+    // need the cell spans only after pass 1 (built beside it); the links only where the point ids
+    // are scattered (built after pass 1, when the spans have told).
     const bool linksBeside = needLinks && !haveLinks;
-    const bool linksFirst = linksBeside && this->NormalMode != Mesh;
+    const bool haveSpans = this->NormalMode == Mesh && cache.HaveSpans &&
+      MeshCache::Fresh(cache.SpansKey, linksKey, linksChanged, cache.SpansTime);
+    const bool spansBeside = this->NormalMode == Mesh && !haveSpans;
     // False if a polygon names a point outside the input's.
     auto buildLinks = [&]()
     {
@@ -2941,10 +3182,24 @@ int vtkDisplacementMapFilter::RequestData(
       cache.HaveLinks = true;
       return true;
     };
-    // Where links are needed, building them checks the polygons' ids (the strips are none then);
-    // kept links (the polygons unchanged since a good build) check nothing, so the ids are
+    auto buildSpans = [&]()
+    {
+      cache.HaveSpans = false;
+      if (!cache.Spans.Build(mesh, numPts))
+      {
+        return false;
+      }
+      cache.SpansScattered = cache.Spans.Work(mesh, MeshScatterNormalWorker<R>::TaskSize(numPts)) >
+        MeshScatterNormalWorker<R>::MaxWork;
+      cache.SpansKey = linksKey;
+      cache.SpansTime.Modified();
+      cache.HaveSpans = true;
+      return true;
+    };
+    // Where links or spans are needed, building them checks the polygons' ids (the strips are none
+    // then); kept ones (the polygons unchanged since a good build) check nothing, so the ids are
     // checked here, before anything reads them.
-    if (checkIdsBeside && needLinks && !linksBeside)
+    if (checkIdsBeside && needCells && !linksBeside && !spansBeside)
     {
       if (!idsInRange())
       {
@@ -2953,7 +3208,7 @@ int vtkDisplacementMapFilter::RequestData(
       }
       checkIdsBeside = false;
     }
-    if (needLinks || this->MergeSeams || useDerivs)
+    if (needCells || this->MergeSeams || useDerivs)
     {
       mesh.Build(polys);
       ctx.Polys = &mesh;
@@ -3138,28 +3393,26 @@ int vtkDisplacementMapFilter::RequestData(
       {
         constexpr int interp = decltype(kind)::value;
         DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
-        // Pass 1 (threaded), the seam groups and the links (serial) read only the input and write
-        // apart: they run side by side, the serial ones on whichever threads pass 1 leaves (the
-        // links that pass 1 needs first, on the thread that then starts pass 1). Links wanted only
-        // after pass 1 (Mesh) come first in the task list instead, so that the two serial tasks
-        // start at once on two threads and pass 1 fills the time they leave (last, the links
-        // would follow the seams on one thread while the other ran out of work).
-        // The derivative-scale estimate (serial, for pass 1 only) is made by the thread that then
-        // starts pass 1 too.
-        const bool linksAside = linksBeside && !linksFirst;
+        // Pass 1 (threaded), the seam groups (serial), the links (serial) and the cell spans read
+        // only the input and write apart: they run side by side, the serial ones on whichever
+        // threads pass 1 leaves (the links that pass 1 needs first, on the thread that then starts
+        // pass 1). Spans wanted only after pass 1 (Mesh) come first in the task list instead, so
+        // that they and the seam sweep start at once on two threads and pass 1 fills the time they
+        // leave. The derivative-scale estimate (serial, for pass 1 only) is made by the thread that
+        // then starts pass 1 too.
         bool linksOk = true;
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
           {
             for (vtkIdType task = task0; task < task1; ++task)
             {
-              if (task == 0 && linksAside)
+              if (task == 0 && spansBeside)
               {
-                linksOk = buildLinks();
+                linksOk = buildSpans();
               }
               else if (task == 0)
               {
-                if (linksFirst)
+                if (linksBeside)
                 {
                   linksOk = buildLinks();
                   mesh.UseLinks(cache.Links);
@@ -3177,7 +3430,7 @@ int vtkDisplacementMapFilter::RequestData(
                   vtkSMPTools::For(0, numPts, Grain, worker);
                 }
               }
-              else if (task == 1 && needLinks)
+              else if (task == 1 && needCells)
               {
                 idsOk = findGroups();
               }
@@ -3195,7 +3448,7 @@ int vtkDisplacementMapFilter::RequestData(
               {
                 idsOk = (!checkIdsBeside || idsInRange()) && findGroups();
               }
-              else if (linksAside)
+              else if (spansBeside)
               {
                 vtkSMPTools::For(0, numPts, Grain, worker);
               }
@@ -3206,7 +3459,7 @@ int vtkDisplacementMapFilter::RequestData(
         {
           return;
         }
-        if (checkIdsBeside && needLinks)
+        if (checkIdsBeside && needCells)
         {
           idsChecked();
         }
@@ -3296,7 +3549,6 @@ int vtkDisplacementMapFilter::RequestData(
     if (this->NormalMode == Mesh)
     {
       ArrayReader<R> moved(outPoints->GetData());
-      Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
       MeshCache::Key signsKey = groupsKey;
       signsKey.Objects[5] = normals;
       const vtkMTimeType signsChanged =
@@ -3308,17 +3560,34 @@ int vtkDisplacementMapFilter::RequestData(
         cache.HaveSigns = false;
         cache.Signs.Resize(std::max<vtkIdType>(mesh.NumCells, 1));
       }
-      MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data(), cache.Signs.data(),
-        haveSigns };
-      vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
+      if (!cache.SpansScattered)
+      {
+        vtkSMPThreadLocal<std::vector<double>> sums;
+        MeshScatterNormalWorker<R> worker{ { ctx }, cache.Spans, moved, cache.Signs.data(),
+          haveSigns, sums, numPts, MeshScatterNormalWorker<R>::TaskSize(numPts) };
+        vtkSMPTools::For(0, worker.Tasks(), 1, worker);
+      }
+      else
+      {
+        // Scattered point ids: each polygon's normal once, then gathered through the links.
+        if (!haveLinks)
+        {
+          buildLinks();
+        }
+        mesh.UseLinks(cache.Links);
+        Buffer<double> cellNormals(3 * static_cast<size_t>(mesh.NumCells));
+        MeshPolygonNormalWorker<R> polygons{ ctx, moved, cellNormals.data(), cache.Signs.data(),
+          haveSigns };
+        vtkSMPTools::For(0, mesh.NumCells, Grain, polygons);
+        MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
+        vtkSMPTools::For(0, numPts, Grain, worker);
+      }
       if (!haveSigns)
       {
         cache.SignsKey = signsKey;
         cache.SignsTime.Modified();
         cache.HaveSigns = true;
       }
-      MeshPointNormalWorker<R> worker{ { ctx }, cellNormals.data() };
-      vtkSMPTools::For(0, numPts, Grain, worker);
     }
 
     // One normal per group member: the sum of the members' that share its input normal.
@@ -3430,4 +3699,6 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
   os << indent << "NonFiniteCount (last scan of the height map): " << this->NonFiniteCount << "\n";
   os << indent << "Mesh data kept between executions: " << this->Cache->Bytes() << " bytes\n";
+  os << indent << "Mesh normals through point links (point ids too scattered for cell spans): "
+     << (this->Cache->HaveSpans && this->Cache->SpansScattered ? "yes" : "no") << "\n";
 }

@@ -1917,6 +1917,181 @@ vtkSmartPointer<vtkPolyData> MeshWithRedonePoints(
 }
 }
 
+namespace
+{
+// @a mesh with its points renumbered: point i becomes perm[i] (a random permutation), its point
+// data with it, the polygons in the same order.
+vtkSmartPointer<vtkPolyData> Renumbered(vtkPolyData* mesh, std::vector<vtkIdType>& perm)
+{
+  const vtkIdType count = mesh->GetNumberOfPoints();
+  perm.resize(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    perm[i] = i;
+  }
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(5);
+  for (vtkIdType i = count - 1; i > 0; --i)
+  {
+    random->Next();
+    const vtkIdType j = std::min(i, static_cast<vtkIdType>(random->GetValue() * (i + 1)));
+    std::swap(perm[i], perm[j]);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    points->SetPoint(perm[i], mesh->GetPoint(i));
+  }
+  out->SetPoints(points);
+  vtkPointData* pd = mesh->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* src = pd->GetArray(a);
+    vtkSmartPointer<vtkDataArray> dst;
+    dst.TakeReference(src->NewInstance());
+    dst->SetName(src->GetName());
+    dst->SetNumberOfComponents(src->GetNumberOfComponents());
+    dst->SetNumberOfTuples(count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      dst->SetTuple(perm[i], i, src);
+    }
+    AddInSameRole(pd, src, out->GetPointData(), dst);
+  }
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      ids->SetId(k, perm[ids->GetId(k)]);
+    }
+    polys->InsertNextCell(ids);
+  }
+  out->SetPolys(polys);
+  return out;
+}
+
+// @a mesh (MakeMesh's triangle pairs) as quads.
+vtkSmartPointer<vtkPolyData> AsQuads(vtkPolyData* mesh)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(mesh);
+  vtkNew<vtkCellArray> quads;
+  vtkNew<vtkIdList> t0, t1;
+  for (vtkIdType c = 0; c + 1 < mesh->GetNumberOfCells(); c += 2)
+  {
+    // (a, b, d) and (a, d, c) -> (a, b, d, c)
+    mesh->GetCellPoints(c, t0);
+    mesh->GetCellPoints(c + 1, t1);
+    const vtkIdType q[4] = { t0->GetId(0), t0->GetId(1), t0->GetId(2), t1->GetId(2) };
+    quads->InsertNextCell(4, q);
+  }
+  out->SetPolys(quads);
+  return out;
+}
+
+// Whether Mesh normals went through the point links (PrintSelf).
+bool ThroughLinks(vtkDisplacementMapFilter* f)
+{
+  std::ostringstream os;
+  f->Print(os);
+  const std::string key =
+    "Mesh normals through point links (point ids too scattered for cell spans): ";
+  const size_t at = os.str().find(key);
+  EXPECT_NE(at, std::string::npos);
+  return at != std::string::npos && os.str().compare(at + key.size(), 3, "yes") == 0;
+}
+}
+
+// Mesh normals sum each point's polygons in polygon order, by point ranges over the polygons'
+// spans (usual meshes) or through the point links (scattered point ids): renumbering the points
+// (polygons in the same order) takes the links and must give every point the bits it had, at 1
+// and 2 threads, on first and later executions, with triangles and quads. MakeMesh's 257-point rows
+// put the ranges' ends (every 16384 points) mid-row, so that the polygons there, and chunks of
+// them, have corners in two ranges.
+TEST(DisplacementMapFilter, MeshNormalsDoNotDependOnPointNumbering)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  for (bool floatPoints : { false, true })
+  {
+    for (bool quads : { false, true })
+    {
+      auto mesh = MakeMesh(s, 256, 128, false, floatPoints);
+      // Points redone in double lanes (a zero normal, a tangent along its normal) on either side of
+      // the first ranges' end.
+      vtkPointData* pd = mesh->GetPointData();
+      pd->GetNormals()->SetTuple3(16383, 0.0, 0.0, 0.0);
+      double n[3];
+      pd->GetNormals()->GetTuple(16384, n);
+      pd->GetArray("Tangents")->SetTuple4(16384, n[0], n[1], n[2], 1.0);
+      if (quads)
+      {
+        mesh = AsQuads(mesh);
+      }
+      std::vector<vtkIdType> perm;
+      auto renumbered = Renumbered(mesh, perm);
+      std::vector<vtkSmartPointer<vtkPolyData>> outputs;
+      for (int threads : { 1, 2 })
+      {
+        vtkSMPTools::Initialize(threads);
+        for (vtkPolyData* input : { mesh.GetPointer(), renumbered.GetPointer() })
+        {
+          vtkNew<vtkDisplacementMapFilter> f;
+          f->SetInputData(0, input);
+          f->SetInputData(1, image);
+          f->SetNormalModeToMesh();
+          f->SetInterpolationToCubic();
+          f->MergeSeamsOff();
+          f->SetMidlevel(0.5);
+          for (double scale : { 0.1, 0.2 })
+          {
+            f->SetScale(scale);
+            f->Update();
+            EXPECT_EQ(ThroughLinks(f), input == renumbered.GetPointer());
+            auto out = vtkSmartPointer<vtkPolyData>::New();
+            out->DeepCopy(f->GetOutput());
+            outputs.push_back(out);
+          }
+        }
+      }
+      // outputs: (threads, input, scale)
+      for (size_t k = 0; k < outputs.size(); ++k)
+      {
+        const size_t same = k % 2;
+        for (const char* name : { "", "Normals", "Tangents" })
+        {
+          vtkDataArray* x = *name ? outputs[same]->GetPointData()->GetArray(name)
+                                  : outputs[same]->GetPoints()->GetData();
+          vtkDataArray* y =
+            *name ? outputs[k]->GetPointData()->GetArray(name) : outputs[k]->GetPoints()->GetData();
+          ASSERT_TRUE(x && y);
+          // The renumbered mesh's point perm[i] against the original's point i.
+          const bool moved = (k / 2) % 2 == 1;
+          const int nc = x->GetNumberOfComponents();
+          const size_t bytes = static_cast<size_t>(x->GetDataTypeSize()) * nc;
+          size_t differ = 0;
+          for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+          {
+            const vtkIdType j = moved ? perm[i] : i;
+            differ += std::memcmp(static_cast<const char*>(x->GetVoidPointer(0)) + bytes * i,
+                        static_cast<const char*>(y->GetVoidPointer(0)) + bytes * j, bytes) != 0;
+          }
+          EXPECT_EQ(differ, 0u) << (*name ? name : "Points") << " output " << k << " float "
+                                << floatPoints << " quads " << quads;
+        }
+        EXPECT_TRUE(AllFinite(outputs[k]));
+      }
+    }
+  }
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 // Each point's result depends on its own data and neighbours alone, not on where it falls in a
 // block of the lanes (nor on the block's other points, some of them redone in double lanes): one
 // unused point put first shifts every point by one lane, and the outputs shift with it, bit for
