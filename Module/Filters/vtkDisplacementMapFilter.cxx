@@ -2372,6 +2372,17 @@ struct MeshScatterNormalWorker : BlockOps<R, L>
     for (vtkIdType first = pb; first < pe; first += Block)
     {
       const int count = static_cast<int>(std::min<vtkIdType>(pe - first, Block));
+      // The next block's input and output lines, as pass 1 asks for them: the hardware
+      // prefetchers do not follow these four streams.
+      const vtkIdType next = first + Block;
+      if (next < pe)
+      {
+        const int nextCount = static_cast<int>(std::min<vtkIdType>(pe - next, Block));
+        Base::template PrefetchTuples<false>(c.Normals, next, nextCount);
+        Base::template PrefetchTuples<false>(c.Tangents, next, nextCount);
+        Base::template PrefetchTuples<true>(c.OutNormals, next, nextCount);
+        Base::template PrefetchTuples<true>(c.OutTangents, next, nextCount);
+      }
       const double* sum = sums + 4 * (first - pb);
       for (int k = 0; k < count; ++k)
       {
