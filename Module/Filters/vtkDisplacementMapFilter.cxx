@@ -484,6 +484,151 @@ struct PolyLinks
   }
 };
 
+// Which polygons touch a range of points, without links: the polygons in chunks of Chunk
+// consecutive ids, each chunk with the least and the largest point id of its corners. A usual
+// mesh numbers its polygons along its points (a grid's rows), so a chunk spans a few rows of
+// points and a range of points meets few chunks; scattered point ids (a renumbered mesh) make
+// every chunk span nearly all points (see Work).
+struct CellSpans
+{
+  static constexpr vtkIdType Chunk = 512;
+  // Per chunk: the least and the largest id of its corners (Lo > Hi: no corners); MaxHi is the
+  // running maximum of Hi, MinLo the running minimum of Lo from the last chunk down: both never
+  // decrease, so the chunks that may meet a range are found by two binary searches.
+  std::vector<vtkIdType> Lo, Hi, MaxHi, MinLo;
+
+  size_t Bytes() const { return sizeof(vtkIdType) * 4 * this->Lo.size(); }
+
+  // The polygons that ForCellsTouching reads over the ranges [t S, (t + 1) S) that cover the
+  // points, relative to the polygon count (1: each read once).
+  double Work(const PolyLinks& mesh, vtkIdType S) const
+  {
+    double read = 0.0;
+    for (size_t c = 0; c < this->Lo.size(); ++c)
+    {
+      if (this->Lo[c] <= this->Hi[c])
+      {
+        const vtkIdType b = static_cast<vtkIdType>(c) * Chunk;
+        const vtkIdType cells = std::min(mesh.NumCells - b, Chunk);
+        read +=
+          static_cast<double>(cells) * static_cast<double>(this->Hi[c] / S - this->Lo[c] / S + 1);
+      }
+    }
+    return mesh.NumCells > 0 ? read / static_cast<double>(mesh.NumCells) : 1.0;
+  }
+
+  // Builds the spans of @a mesh (one threaded pass over the connectivity). False if a polygon names
+  // a point outside [0, numPts) (the spans are then unusable): each chunk's least and largest id
+  // tell.
+  bool Build(const PolyLinks& mesh, vtkIdType numPts)
+  {
+    const vtkIdType chunks = (mesh.NumCells + Chunk - 1) / Chunk;
+    this->Lo.resize(chunks);
+    this->Hi.resize(chunks);
+    this->MaxHi.resize(chunks);
+    this->MinLo.resize(chunks);
+    vtkSMPTools::For(0, chunks, 64,
+      [&](vtkIdType c0, vtkIdType c1)
+      {
+        const vtkIdType* __restrict conn = mesh.Conn;
+        for (vtkIdType c = c0; c < c1; ++c)
+        {
+          const vtkIdType b = mesh.Offsets[c * Chunk];
+          const vtkIdType e = mesh.Offsets[std::min(mesh.NumCells, (c + 1) * Chunk)];
+          vtkIdType lo = std::numeric_limits<vtkIdType>::max();
+          vtkIdType hi = std::numeric_limits<vtkIdType>::min();
+          for (vtkIdType k = b; k < e; ++k)
+          {
+            lo = std::min(lo, conn[k]);
+            hi = std::max(hi, conn[k]);
+          }
+          this->Lo[c] = lo;
+          this->Hi[c] = hi;
+        }
+      });
+    bool inRange = true;
+    vtkIdType maxHi = std::numeric_limits<vtkIdType>::min();
+    for (vtkIdType c = 0; c < chunks; ++c)
+    {
+      inRange &= this->Lo[c] > this->Hi[c] || (this->Lo[c] >= 0 && this->Hi[c] < numPts);
+      maxHi = std::max(maxHi, this->Hi[c]);
+      this->MaxHi[c] = maxHi;
+    }
+    vtkIdType minLo = std::numeric_limits<vtkIdType>::max();
+    for (vtkIdType c = chunks - 1; c >= 0; --c)
+    {
+      minLo = std::min(minLo, this->Lo[c]);
+      this->MinLo[c] = minLo;
+    }
+    return inRange;
+  }
+};
+
+// Whether @a id lies in [pb, pb + width).
+VTK_ALWAYS_INLINE bool InRange(vtkIdType id, vtkIdType pb, std::uint64_t width)
+{
+  return static_cast<std::uint64_t>(id - pb) < width;
+}
+
+// Calls body(cell) for every polygon of @a mesh with a corner in [pb, pe), in increasing id order
+// (a polygon with several corners there, once).
+template <typename Body>
+VTK_ALWAYS_INLINE void ForCellsTouching(
+  const PolyLinks& mesh, const CellSpans& spans, vtkIdType pb, vtkIdType pe, Body&& body)
+{
+  const vtkIdType first = static_cast<vtkIdType>(
+    std::lower_bound(spans.MaxHi.begin(), spans.MaxHi.end(), pb) - spans.MaxHi.begin());
+  const vtkIdType last = static_cast<vtkIdType>(
+    std::lower_bound(spans.MinLo.begin(), spans.MinLo.end(), pe) - spans.MinLo.begin());
+  const vtkIdType* __restrict offsets = mesh.Offsets;
+  const vtkIdType* __restrict conn = mesh.Conn;
+  const std::uint64_t width = static_cast<std::uint64_t>(pe - pb);
+  for (vtkIdType c = first; c < last; ++c)
+  {
+    const vtkIdType lo = spans.Lo[c], hi = spans.Hi[c];
+    if (lo >= pe || hi < pb)
+    {
+      continue;
+    }
+    const vtkIdType cb = c * CellSpans::Chunk;
+    const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
+    if (lo >= pb && hi < pe)
+    {
+      // Every corner inside: every polygon with a corner.
+      for (vtkIdType cell = cb; cell < ce; ++cell)
+      {
+        if (offsets[cell + 1] > offsets[cell])
+        {
+          body(cell);
+        }
+      }
+      continue;
+    }
+    for (vtkIdType cell = cb; cell < ce; ++cell)
+    {
+      const vtkIdType b = offsets[cell], e = offsets[cell + 1];
+      bool touches;
+      if (e - b == 3)
+      {
+        touches = InRange(conn[b], pb, width) | InRange(conn[b + 1], pb, width) |
+          InRange(conn[b + 2], pb, width);
+      }
+      else
+      {
+        touches = false;
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          touches |= InRange(conn[k], pb, width);
+        }
+      }
+      if (touches)
+      {
+        body(cell);
+      }
+    }
+  }
+}
+
 // NaN becomes 0 and infinity the largest double.
 inline double Finite(double x)
 {
