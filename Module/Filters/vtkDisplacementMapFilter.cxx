@@ -2878,8 +2878,9 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> FitNormals;
   bool HaveFitNormals = false;
 
-  // The cell spans, and whether the point ids are too scattered for them: from the polygons and the
-  // point count.
+  // The cell spans (the fits' ranges of points find their polygons through them), and whether the
+  // point ids are too scattered for them (the fits then gather through the links): from the
+  // polygons and the point count.
   Key SpansKey;
   vtkTimeStamp SpansTime;
   CellSpans Spans;
@@ -3490,11 +3491,12 @@ int vtkDisplacementMapFilter::RequestData(
         DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
         // Pass 1 (threaded), the seam groups and the links (serial) read only the input and write
         // apart: they run side by side, the serial ones on whichever threads pass 1 leaves (the
-        // links that pass 1 needs first, on the thread that then starts pass 1). Links wanted only
-        // after pass 1 (Mesh) come first in the task list instead, so that the two serial tasks
-        // start at once on two threads and pass 1 fills the time they leave (last, the links
-        // would follow the seams on one thread while the other ran out of work).
-        // The derivative-scale estimate (serial, for pass 1 only) is made by the thread that then
+        // cell spans, or links, that the fits of pass 1 need first, on the thread that then starts
+        // pass 1: the spans' build is threaded, but the other thread sweeps the seams). Links
+        // wanted only after pass 1 (Mesh) come first in the task list instead, so that the two
+        // serial tasks start at once on two threads and pass 1 fills the time they leave (last, the
+        // links would follow the seams on one thread while the other ran out of work). The
+        // derivative-scale estimate (serial, for pass 1 only) is made by the thread that then
         // starts pass 1 too.
         bool linksOk = true;
         vtkSMPTools::For(0, 3, 1,
@@ -3520,7 +3522,7 @@ int vtkDisplacementMapFilter::RequestData(
                   }
                   mesh.UseLinks(cache.Links);
                 }
-                else if (fitsNeedCells)
+                else if (linksOk && fitsNeedCells)
                 {
                   ctx.Spans = &cache.Spans;
                 }
