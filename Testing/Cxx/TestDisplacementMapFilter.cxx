@@ -489,7 +489,9 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
   auto image = MakeHeightImage(s.Height, 128, 64);
   // Double arrays, and float ones (float lanes, whose flagged points are redone in double lanes):
   // a mesh big enough to be split between threads, with points that are redone (a zero and a
-  // NaN normal, a tangent along the normal) near the start and the middle.
+  // NaN normal, a tangent along the normal) near the start and the middle. Mesh normals sum each
+  // point's polygons by ranges of 16384 points here, which end mid-row (rows of 257 points), so
+  // that polygons and chunks of them have corners in two ranges.
   for (bool floatPoints : { false, true })
   {
     auto mesh = MakeMesh(s, 256, 128, false, floatPoints);
