@@ -493,6 +493,8 @@ struct PolyLinks
 struct CellSpans
 {
   static constexpr vtkIdType Chunk = 512;
+  // Above this Work (polygons read per polygon), the links' gather is cheaper than the spans.
+  static constexpr double MaxWork = 1.5;
   // Per chunk: the least and the largest id of its corners (Lo > Hi: no corners); MaxHi is the
   // running maximum of Hi, MinLo the running minimum of Lo from the last chunk down: both never
   // decrease, so the chunks that may meet a range are found by two binary searches.
@@ -735,6 +737,10 @@ struct Context
   R* Fits = nullptr;
   int FitStride = 0;
   bool FitsKnown = false;
+  // Where set, the fits' sums are made per range of points through these spans (RangeFitSums), in
+  // per-thread records (FitScratch); else they are gathered point by point through the links.
+  const CellSpans* Spans = nullptr;
+  vtkSMPThreadLocal<std::vector<double>>* FitScratch = nullptr;
 };
 
 // The unit input normal, or zero when it has no direction.
@@ -922,6 +928,226 @@ VTK_ALWAYS_INLINE void FitSums(const Context<R>& c, vtkIdType i, double p[8], do
   dt2 = sumDt2;
   near = minD2;
   far = maxD2;
+}
+
+// FitSums's sums for a range of points at once, without links. FitSums adds, for point i, the
+// terms of every (polygon, neighbour j) occurrence in increasing polygon order and, within a
+// polygon, corner order. The terms of (i, j) and of (j, i) are the same bits (the differences and
+// dt only change sign, and each term is a product of two of them), so a polygon's pair terms are
+// made once and added to both corners. Visiting the polygons that touch the range in increasing
+// id order (ForCellsTouching) and adding each corner's terms in corner order gives every point of
+// the range FitSums's additions in FitSums's order: the same bits, and half its products.
+//
+// The sums of a point make one record of Size doubles: (WantP) P's bs[4], bt[4] and the least and
+// largest squared distance; (WantN) the normal's bs[4], bt[4]; last the sum of dt^2.
+template <bool WantP, bool WantN>
+struct FitRecord
+{
+  static constexpr int P = 0;
+  static constexpr int Near = 8;
+  static constexpr int Far = 9;
+  static constexpr int N = WantP ? 10 : 0;
+  static constexpr int Dt2 = N + (WantN ? 8 : 0);
+  static constexpr int Size = Dt2 + 1;
+};
+
+// Doubles per FitRecord.
+inline int FitRecordSize(bool wantP, bool wantN)
+{
+  return (wantP ? 10 : 0) + (wantN ? 8 : 0) + 1;
+}
+
+VTK_ALWAYS_INLINE void AddTo(double* sum, const Double4& v)
+{
+  Double4 a;
+  std::memcpy(&a, sum, sizeof(a));
+  a += v;
+  std::memcpy(sum, &a, sizeof(a));
+}
+
+// ForCellsTouching's body: adds each polygon's terms to the records of its corners in
+// [First, First + Width) (@a Sums holds First's record, then the next points').
+template <bool WantP, bool WantN, typename R>
+struct AddFitTerms
+{
+  using Rec = FitRecord<WantP, WantN>;
+  const vtkIdType* Offsets;
+  const vtkIdType* Conn;
+  const R* Points;
+  const R* TC;
+  vtkIdType TNC;
+  const double* Normals;
+  double* Sums;
+  vtkIdType First;
+  std::uint64_t Width;
+
+  // Neighbour j's terms in point i's sums, FitSums's operations.
+  struct Terms
+  {
+    Double4 BsP, BtP, BsN, BtN;
+    double Dt2, D2;
+  };
+
+  VTK_ALWAYS_INLINE void Make(vtkIdType i, vtkIdType j, Terms& u) const
+  {
+    const R* tc = this->TC;
+    const vtkIdType tnc = this->TNC;
+    const double dt = static_cast<double>(tc[tnc * j + 1]) - static_cast<double>(tc[tnc * i + 1]);
+    u.Dt2 = dt * dt;
+    if (WantP)
+    {
+      const R* points = this->Points;
+      const double gi[4] = { static_cast<double>(points[3 * i]),
+        static_cast<double>(points[3 * i + 1]), static_cast<double>(points[3 * i + 2]),
+        static_cast<double>(tc[tnc * i]) };
+      const double gj[4] = { static_cast<double>(points[3 * j]),
+        static_cast<double>(points[3 * j + 1]), static_cast<double>(points[3 * j + 2]),
+        static_cast<double>(tc[tnc * j]) };
+      Double4 f, own;
+      std::memcpy(&f, gj, sizeof(f));
+      std::memcpy(&own, gi, sizeof(own));
+      f -= own;
+      u.BsP = f[3] * f;
+      u.BtP = dt * f;
+      u.D2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    }
+    if (WantN)
+    {
+      Double4 f, own;
+      std::memcpy(&f, this->Normals + 4 * j, sizeof(f));
+      std::memcpy(&own, this->Normals + 4 * i, sizeof(own));
+      f -= own;
+      u.BsN = f[3] * f;
+      u.BtN = dt * f;
+    }
+  }
+
+  static VTK_ALWAYS_INLINE void Add(double* r, const Terms& u)
+  {
+    if (WantP)
+    {
+      AddTo(r + Rec::P, u.BsP);
+      AddTo(r + Rec::P + 4, u.BtP);
+      r[Rec::Near] = std::min(r[Rec::Near], u.D2);
+      r[Rec::Far] = std::max(r[Rec::Far], u.D2);
+    }
+    if (WantN)
+    {
+      AddTo(r + Rec::N, u.BsN);
+      AddTo(r + Rec::N + 4, u.BtN);
+    }
+    r[Rec::Dt2] += u.Dt2;
+  }
+
+  // Add(r, u) then Add(r, v), the record read and written once.
+  static VTK_ALWAYS_INLINE void Add2(double* r, const Terms& u, const Terms& v)
+  {
+    auto add = [](double* sum, const Double4& a, const Double4& b)
+    {
+      Double4 x;
+      std::memcpy(&x, sum, sizeof(x));
+      x += a;
+      x += b;
+      std::memcpy(sum, &x, sizeof(x));
+    };
+    if (WantP)
+    {
+      add(r + Rec::P, u.BsP, v.BsP);
+      add(r + Rec::P + 4, u.BtP, v.BtP);
+      r[Rec::Near] = std::min(std::min(r[Rec::Near], u.D2), v.D2);
+      r[Rec::Far] = std::max(std::max(r[Rec::Far], u.D2), v.D2);
+    }
+    if (WantN)
+    {
+      add(r + Rec::N, u.BsN, v.BsN);
+      add(r + Rec::N + 4, u.BtN, v.BtN);
+    }
+    r[Rec::Dt2] = (r[Rec::Dt2] + u.Dt2) + v.Dt2;
+  }
+
+  VTK_ALWAYS_INLINE void operator()(vtkIdType cell) const
+  {
+    const vtkIdType b = this->Offsets[cell], n = this->Offsets[cell + 1] - b;
+    const vtkIdType* ids = this->Conn + b;
+    if (n == 3)
+    {
+      // A triangle of three distinct points (the usual case): three pairs, each corner in the
+      // range given its two.
+      const vtkIdType i0 = ids[0], i1 = ids[1], i2 = ids[2];
+      if ((i0 != i1) & (i0 != i2) & (i1 != i2))
+      {
+        const std::uint64_t k0 = static_cast<std::uint64_t>(i0 - this->First);
+        const std::uint64_t k1 = static_cast<std::uint64_t>(i1 - this->First);
+        const std::uint64_t k2 = static_cast<std::uint64_t>(i2 - this->First);
+        Terms u01, u02, u12;
+        this->Make(i0, i1, u01);
+        this->Make(i0, i2, u02);
+        this->Make(i1, i2, u12);
+        if (k0 < this->Width)
+        {
+          Add2(this->Sums + Rec::Size * k0, u01, u02);
+        }
+        if (k1 < this->Width)
+        {
+          Add2(this->Sums + Rec::Size * k1, u01, u12);
+        }
+        if (k2 < this->Width)
+        {
+          Add2(this->Sums + Rec::Size * k2, u02, u12);
+        }
+        return;
+      }
+    }
+    // Any polygon: each corner in the range (a point named twice, twice, as its links list the
+    // polygon twice), its neighbours in corner order.
+    for (vtkIdType a = 0; a < n; ++a)
+    {
+      const vtkIdType i = ids[a];
+      const std::uint64_t k = static_cast<std::uint64_t>(i - this->First);
+      if (k >= this->Width)
+      {
+        continue;
+      }
+      double* r = this->Sums + Rec::Size * k;
+      for (vtkIdType q = 0; q < n; ++q)
+      {
+        const vtkIdType j = ids[q];
+        if (j != i)
+        {
+          Terms u;
+          this->Make(i, j, u);
+          Add(r, u);
+        }
+      }
+    }
+  }
+};
+
+// FitSums's sums for the points [pb, pe), into their records from @a sums on.
+template <bool WantP, bool WantN, typename R>
+VTK_ALWAYS_INLINE void RangeFitSums(const Context<R>& c, vtkIdType pb, vtkIdType pe, double* sums)
+{
+  using Rec = FitRecord<WantP, WantN>;
+  for (vtkIdType k = 0; k < pe - pb; ++k)
+  {
+    double* r = sums + Rec::Size * k;
+    std::fill_n(r, Rec::Size, 0.0);
+    if (WantP)
+    {
+      r[Rec::Near] = std::numeric_limits<double>::max();
+    }
+  }
+  const AddFitTerms<WantP, WantN, R> add{ c.Polys->Offsets, c.Polys->Conn, c.Points->P,
+    c.TCoords->P, c.TCoords->NC, c.FitNormals, sums, pb, static_cast<std::uint64_t>(pe - pb) };
+  ForCellsTouching(*c.Polys, *c.Spans, pb, pe, add);
+}
+
+// RangeFitSums for one point (a point whose kept fits float could not hold, fitted again), out of
+// line: one copy, whichever build of pass 1 calls it (the bits are the same in each).
+template <bool WantP, bool WantN, typename R>
+void PointFitSumsThroughSpans(const Context<R>& c, vtkIdType i, double* record)
+{
+  RangeFitSums<WantP, WantN>(c, i, i + 1, record);
 }
 
 // The displacement d at point @a i, with the height h and its derivatives in (s,t); one
@@ -1266,6 +1492,15 @@ struct DisplaceWorker : BlockOps<R, L>
   using typename Base::Lanes;
   using DoubleLanes = double[Block];
   const Texels<T>& Tex;
+  // A float lanes' point redone in double lanes (this worker's [begin, end)): the fit sums of the
+  // points from SumsFirst on, made by the float lanes' task (null: none were made).
+  const double* Sums = nullptr;
+  vtkIdType SumsFirst = 0;
+
+  // Points per range of RangeFitSums, at most: pass 1's tasks (Grain), so that a task's polygons
+  // are read once but those around its ends (about two rows of a usual mesh, read by both tasks).
+  // 8192 and 4096 were no faster (their records stay in cache, but more ends are read twice).
+  static constexpr vtkIdType FitSlice = 16384;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
@@ -1277,9 +1512,53 @@ struct DisplaceWorker : BlockOps<R, L>
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
     const Context<R>& c = this->C;
+    const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
+    const bool wantP = !c.DPdu;
+    const bool fits = (exact || (wantP && c.NormalMode == vtkDisplacementMapFilter::Approximate));
+    const int size = FitRecordSize(wantP, exact);
+    // The fits' sums of each range, then its blocks, which read them (one call of Blocks, which
+    // is inlined: each instruction set's build holds one copy).
+    const bool ranges = !this->Sums && c.Spans && fits && !c.FitsKnown;
+    const vtkIdType slice = ranges ? FitSlice : end - begin;
+    std::vector<double>* sums = ranges ? &c.FitScratch->Local() : nullptr;
+    if (sums)
+    {
+      sums->resize(static_cast<size_t>(size) * slice);
+    }
+    for (vtkIdType sb = begin; sb < end; sb += slice)
+    {
+      const vtkIdType se = std::min(end, sb + slice);
+      const double* blockSums =
+        this->Sums ? this->Sums + size * (begin - this->SumsFirst) : nullptr;
+      if (ranges)
+      {
+        if (wantP && exact)
+        {
+          RangeFitSums<true, true>(c, sb, se, sums->data());
+        }
+        else if (wantP)
+        {
+          RangeFitSums<true, false>(c, sb, se, sums->data());
+        }
+        else
+        {
+          RangeFitSums<false, true>(c, sb, se, sums->data());
+        }
+        blockSums = sums->data();
+      }
+      this->Blocks(sb, se, blockSums);
+    }
+  }
+
+  // Pass 1 over the points [begin, end) in blocks; @a sums holds the fits' sums from begin's
+  // record on, or is null (then the fits gather them, or read kept fits).
+  VTK_ALWAYS_INLINE void Blocks(vtkIdType begin, vtkIdType end, const double* sums) const
+  {
+    const Context<R>& c = this->C;
     const bool analytic = c.NormalMode == vtkDisplacementMapFilter::Approximate ||
       c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
+    const int size = FitRecordSize(!c.DPdu, exact);
     alignas(64) Lanes n[3], fallback[3], d, ds, dt, ps[3], pt[3], ns[3], nt[3], m[3], x[4];
     alignas(64) Flags redo;
     for (vtkIdType first = begin; first < end; first += Block)
@@ -1289,12 +1568,18 @@ struct DisplaceWorker : BlockOps<R, L>
       {
         this->PrefetchBlock(first + Block, end, analytic);
       }
+      const double* blockSums = sums ? sums + size * (first - begin) : nullptr;
+      if (sums && first + Block < end)
+      {
+        PrefetchBytes<false>(blockSums + size * Block,
+          sizeof(double) * size * std::min<vtkIdType>(end - first - Block, Block));
+      }
       this->UnitNormals(first, count, n, fallback, redo);
       this->Heights(first, count, d, ds, dt, redo);
       this->Points(first, count, n, d, x);
       if (analytic)
       {
-        this->Derivatives(first, count, exact, ps, pt, ns, nt, redo);
+        this->Derivatives(first, count, exact, ps, pt, ns, nt, redo, blockSums);
         if (exact)
         {
           this->template Directions<true>(count, n, d, ds, dt, ps, pt, ns, nt, m, redo);
@@ -1311,7 +1596,7 @@ struct DisplaceWorker : BlockOps<R, L>
       {
         if (Base::Any(count, redo))
         {
-          const DisplaceWorker<Interp, T, R, double> again{ { c }, this->Tex };
+          const DisplaceWorker<Interp, T, R, double> again{ { c }, this->Tex, blockSums, first };
           for (int k = 0; k < count; ++k)
           {
             if (redo[k])
@@ -1506,7 +1791,7 @@ struct DisplaceWorker : BlockOps<R, L>
   // P_s, P_t (dPdu/dPdv scaled, or fitted) and, for Exact, the fitted n_s, n_t. Float lanes
   // flag the points whose fits float cannot hold (see FitDouble).
   VTK_ALWAYS_INLINE void Derivatives(vtkIdType first, int count, bool exact, Lanes ps[3],
-    Lanes pt[3], Lanes ns[3], Lanes nt[3], [[maybe_unused]] Flags redo) const
+    Lanes pt[3], Lanes ns[3], Lanes nt[3], [[maybe_unused]] Flags redo, const double* sums) const
   {
     const Context<R>& c = this->C;
     if (c.DPdu)
@@ -1535,15 +1820,15 @@ struct DisplaceWorker : BlockOps<R, L>
     {
       if (wantP && exact)
       {
-        this->template Fit<true, true>(first, count, ps, pt, ns, nt, redo);
+        this->template Fit<true, true>(first, count, ps, pt, ns, nt, redo, sums);
       }
       else if (wantP)
       {
-        this->template Fit<true, false>(first, count, ps, pt, ns, nt, redo);
+        this->template Fit<true, false>(first, count, ps, pt, ns, nt, redo, sums);
       }
       else
       {
-        this->template Fit<false, true>(first, count, ps, pt, ns, nt, redo);
+        this->template Fit<false, true>(first, count, ps, pt, ns, nt, redo, sums);
       }
       return;
     }
@@ -1601,15 +1886,15 @@ struct DisplaceWorker : BlockOps<R, L>
     alignas(64) Flags unkept;
     if (wantP && exact)
     {
-      this->template FitDouble<true, true>(i, 1, fps, fpt, fns, fnt, unkept, false);
+      this->template FitDouble<true, true>(i, 1, fps, fpt, fns, fnt, unkept, false, nullptr);
     }
     else if (wantP)
     {
-      this->template FitDouble<true, false>(i, 1, fps, fpt, fns, fnt, unkept, false);
+      this->template FitDouble<true, false>(i, 1, fps, fpt, fns, fnt, unkept, false, nullptr);
     }
     else
     {
-      this->template FitDouble<false, true>(i, 1, fps, fpt, fns, fnt, unkept, false);
+      this->template FitDouble<false, true>(i, 1, fps, fpt, fns, fnt, unkept, false, nullptr);
     }
     for (int j = 0; j < 3; ++j)
     {
@@ -1633,7 +1918,7 @@ struct DisplaceWorker : BlockOps<R, L>
   // p(s,t) is singular there), the derivatives are 0 and the normal falls back on the input's.
   template <bool WantP, bool WantN>
   VTK_ALWAYS_INLINE void Fit(vtkIdType first, int count, Lanes ps[3], Lanes pt[3], Lanes ns[3],
-    Lanes nt[3], [[maybe_unused]] Flags redo) const
+    Lanes nt[3], [[maybe_unused]] Flags redo, const double* sums) const
   {
     alignas(64) Flags unkept;
     if constexpr (Float)
@@ -1641,7 +1926,7 @@ struct DisplaceWorker : BlockOps<R, L>
       // Solved in double, rounded to float and kept (re-executions read the kept values: the
       // same lanes); the points whose fits float cannot hold keep NaN and are redone.
       alignas(64) DoubleLanes fps[3], fpt[3], fns[3], fnt[3];
-      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, false);
+      this->template FitDouble<WantP, WantN>(first, count, fps, fpt, fns, fnt, unkept, false, sums);
       for (int q = 0; q < 3; ++q)
       {
         for (int k = 0; k < count; ++k)
@@ -1688,7 +1973,7 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     else
     {
-      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt, unkept, true);
+      this->template FitDouble<WantP, WantN>(first, count, ps, pt, ns, nt, unkept, true, sums);
     }
   }
 
@@ -1765,29 +2050,65 @@ struct DisplaceWorker : BlockOps<R, L>
       });
   }
 
+  // Point @a i's fit record, gathered through the links where they are set, else made through
+  // the spans.
+  template <bool WantP, bool WantN>
+  VTK_ALWAYS_INLINE void PointFitSums(vtkIdType i, double* r) const
+  {
+    using Rec = FitRecord<WantP, WantN>;
+    const Context<R>& c = this->C;
+    if (!c.Polys->LinkOffsets)
+    {
+      PointFitSumsThroughSpans<WantP, WantN>(c, i, r);
+      return;
+    }
+    double p[8], n[8], near, far;
+    FitSums<WantP, WantN>(c, i, p, n, r[Rec::Dt2], near, far);
+    if (WantP)
+    {
+      std::copy_n(p, 8, r + Rec::P);
+      r[Rec::Near] = near;
+      r[Rec::Far] = far;
+    }
+    if (WantN)
+    {
+      std::copy_n(n, 8, r + Rec::N);
+    }
+  }
+
   // With float arrays (double lanes: the redone points) the fits are kept rounded to float and
   // the lanes get the rounded values, which a re-execution reads back, except at points with a
   // fitted value that float cannot hold at its precision (FlagUnkept, FlagVanished; @a unkept):
   // these keep NaN, and their lanes the double values. Float lanes (Fit) round and keep alike.
+  //
+  // @a sums holds the block's fit sums (RangeFitSums's records); null: each point's are gathered.
   template <bool WantP, bool WantN>
   VTK_ALWAYS_INLINE void FitDouble(vtkIdType first, int count, DoubleLanes ps[3], DoubleLanes pt[3],
-    DoubleLanes ns[3], DoubleLanes nt[3], Flags unkept, bool store) const
+    DoubleLanes ns[3], DoubleLanes nt[3], Flags unkept, bool store, const double* sums) const
   {
+    using Rec = FitRecord<WantP, WantN>;
     const Context<R>& c = this->C;
     alignas(64) DoubleLanes m[3], bp[6], bn[6], near, far;
     for (int k = 0; k < count; ++k)
     {
-      double pk[8], nk[8];
-      FitSums<WantP, WantN>(c, first + k, pk, nk, m[2][k], near[k], far[k]);
-      const double* mk = WantN ? nk : pk;
-      m[0][k] = mk[3];
-      m[1][k] = mk[7];
+      double own[Rec::Size];
+      const double* r = sums ? sums + Rec::Size * k : own;
+      if (!sums)
+      {
+        this->template PointFitSums<WantP, WantN>(first + k, own);
+      }
+      constexpr int mk = WantN ? Rec::N : Rec::P;
+      m[0][k] = r[mk + 3];
+      m[1][k] = r[mk + 7];
+      m[2][k] = r[Rec::Dt2];
+      near[k] = WantP ? r[Rec::Near] : std::numeric_limits<double>::max();
+      far[k] = WantP ? r[Rec::Far] : 0.0;
       for (int q = 0; q < 3; ++q)
       {
-        bp[q][k] = pk[q];
-        bp[3 + q][k] = pk[4 + q];
-        bn[q][k] = nk[q];
-        bn[3 + q][k] = nk[4 + q];
+        bp[q][k] = WantP ? r[Rec::P + q] : 0.0;
+        bp[3 + q][k] = WantP ? r[Rec::P + 4 + q] : 0.0;
+        bn[q][k] = WantN ? r[Rec::N + q] : 0.0;
+        bn[3 + q][k] = WantN ? r[Rec::N + 4 + q] : 0.0;
       }
     }
     for (int k = 0; k < count; ++k)
@@ -2248,9 +2569,6 @@ struct MeshScatterNormalWorker : BlockOps<R, L>
   vtkSMPThreadLocal<std::vector<double>>& Sums;
   vtkIdType NumPoints;
   vtkIdType Size; // TaskSize(NumPoints)
-
-  // Above this work (CellSpans::Work: polygons read per polygon), the links' gather is cheaper.
-  static constexpr double MaxWork = 1.5;
 
   vtkIdType Tasks() const { return (this->NumPoints + this->Size - 1) / this->Size; }
 
@@ -2811,8 +3129,9 @@ struct vtkDisplacementMapFilter::MeshCache
   Buffer<double> FitNormals;
   bool HaveFitNormals = false;
 
-  // Mesh's cell spans, and whether the point ids are too scattered for them (Mesh then gathers
-  // through the links): from the polygons and the point count.
+  // The cell spans (the fits' and Mesh normals' ranges of points find their polygons through
+  // them), and whether the point ids are too scattered for them (both then go through the links):
+  // from the polygons and the point count.
   Key SpansKey;
   vtkTimeStamp SpansTime;
   CellSpans Spans;
@@ -2996,11 +3315,11 @@ int vtkDisplacementMapFilter::RequestData(
   vtkDataArray* dPdv = input->GetPointData()->GetArray("dPdv");
   const bool haveDerivs =
     dPdu && dPdv && dPdu->GetNumberOfComponents() == 3 && dPdv->GetNumberOfComponents() == 3;
-  // The fits read the polygons through the links; Mesh through its cell spans (or links, see
-  // MeshScatterNormalWorker).
-  const bool needLinks =
+  // The fits and Mesh normals read each point's polygons through the cell spans or (point ids too
+  // scattered for them) the links.
+  const bool fitsNeedCells =
     this->NormalMode == Exact || (this->NormalMode == Approximate && !haveDerivs);
-  const bool needCells = needLinks || this->NormalMode == Mesh;
+  const bool needCells = fitsNeedCells || this->NormalMode == Mesh;
   if (needCells && input->GetNumberOfStrips() > 0)
   {
     vtkErrorMacro("The input has triangle strips; normal mode " << this->GetNormalModeAsString()
@@ -3165,6 +3484,8 @@ int vtkDisplacementMapFilter::RequestData(
       ctx.Tangents = tan.get();
       ctx.OutTangents = wTangents.get();
     }
+    vtkSMPThreadLocal<std::vector<double>> fitScratch;
+    ctx.FitScratch = &fitScratch;
     PolyLinks mesh;
     MeshCache& cache = *this->Cache;
     MeshCache::Key linksKey;
@@ -3187,13 +3508,14 @@ int vtkDisplacementMapFilter::RequestData(
       cache.HaveLinks && MeshCache::Fresh(cache.LinksKey, linksKey, linksChanged, cache.LinksTime);
     const bool haveGroups = cache.HaveGroups && cache.GroupsTolerance == this->SeamTolerance &&
       MeshCache::Fresh(cache.GroupsKey, groupsKey, groupsChanged, cache.GroupsTime);
-    // The links are built beside the seam sweep: the fits of pass 1 need them as soon as it starts
-    // (built by the thread that then runs it, while another thread sweeps the seams). Mesh normals
-    // need the cell spans only after pass 1 (built beside it); the links only where the point ids
-    // are scattered (built after pass 1, when the spans have told).
-    const bool linksBeside = needLinks && !haveLinks;
-    const bool haveSpans = this->NormalMode == Mesh && cache.HaveSpans &&
+    // Beside the seam sweep: the fits of pass 1 need the cell spans (and, where the ids are too
+    // scattered for them, the links) as soon as it starts (built by the thread that then runs it,
+    // while another thread sweeps the seams); Mesh normals need the spans only after pass 1 (built
+    // beside it), the links only where the ids are scattered (built after pass 1, when the spans
+    // have told).
+    const bool haveSpans = needCells && cache.HaveSpans &&
       MeshCache::Fresh(cache.SpansKey, linksKey, linksChanged, cache.SpansTime);
+    const bool spansFirst = fitsNeedCells && !haveSpans;
     const bool spansBeside = this->NormalMode == Mesh && !haveSpans;
     // False if a polygon names a point outside the input's.
     auto buildLinks = [&]()
@@ -3215,8 +3537,9 @@ int vtkDisplacementMapFilter::RequestData(
       {
         return false;
       }
-      cache.SpansScattered = cache.Spans.Work(mesh, MeshScatterNormalWorker<R>::TaskSize(numPts)) >
-        MeshScatterNormalWorker<R>::MaxWork;
+      // Scattered point ids: each range of points (pass 1's at most Grain points, Mesh's tasks
+      // multiples of it) would read most polygons; the links' gather is then cheaper.
+      cache.SpansScattered = cache.Spans.Work(mesh, Grain) > CellSpans::MaxWork;
       cache.SpansKey = linksKey;
       cache.SpansTime.Modified();
       cache.HaveSpans = true;
@@ -3225,7 +3548,7 @@ int vtkDisplacementMapFilter::RequestData(
     // Where links or spans are needed, building them checks the polygons' ids (the strips are none
     // then); kept ones (the polygons unchanged since a good build) check nothing, so the ids are
     // checked here, before anything reads them.
-    if (checkIdsBeside && needCells && !linksBeside && !spansBeside)
+    if (checkIdsBeside && needCells && !spansFirst && !spansBeside)
     {
       if (!idsInRange())
       {
@@ -3238,10 +3561,6 @@ int vtkDisplacementMapFilter::RequestData(
     {
       mesh.Build(polys);
       ctx.Polys = &mesh;
-      if (needLinks && !linksBeside)
-      {
-        mesh.UseLinks(cache.Links);
-      }
     }
     if (this->NormalMode == Exact)
     {
@@ -3419,13 +3738,13 @@ int vtkDisplacementMapFilter::RequestData(
       {
         constexpr int interp = decltype(kind)::value;
         DisplaceWorker<interp, T, R> worker{ { ctx }, tex };
-        // Pass 1 (threaded), the seam groups (serial), the links (serial) and the cell spans read
-        // only the input and write apart: they run side by side, the serial ones on whichever
-        // threads pass 1 leaves (the links that pass 1 needs first, on the thread that then starts
-        // pass 1). Spans wanted only after pass 1 (Mesh) come first in the task list instead, so
-        // that they and the seam sweep start at once on two threads and pass 1 fills the time they
-        // leave. The derivative-scale estimate (serial, for pass 1 only) is made by the thread that
-        // then starts pass 1 too.
+        // Pass 1 (threaded), the seam groups (serial) and the cell spans (or links) read only the
+        // input and write apart: they run side by side on whichever threads pass 1 leaves. The
+        // spans (and links) that the fits of pass 1 need first are built by the thread that then
+        // starts pass 1, while another thread sweeps the seams; spans wanted only after pass 1
+        // (Mesh) come first in the task list instead, so that they and the seam sweep start at
+        // once on two threads and pass 1 fills the time they leave. The derivative-scale estimate
+        // (serial, for pass 1 only) is made by the thread that then starts pass 1 too.
         bool linksOk = true;
         vtkSMPTools::For(0, 3, 1,
           [&](vtkIdType task0, vtkIdType task1)
@@ -3438,10 +3757,21 @@ int vtkDisplacementMapFilter::RequestData(
               }
               else if (task == 0)
               {
-                if (linksBeside)
+                if (spansFirst)
                 {
-                  linksOk = buildLinks();
+                  linksOk = buildSpans();
+                }
+                if (linksOk && fitsNeedCells && cache.SpansScattered)
+                {
+                  if (!haveLinks)
+                  {
+                    linksOk = buildLinks();
+                  }
                   mesh.UseLinks(cache.Links);
+                }
+                else if (linksOk && fitsNeedCells)
+                {
+                  ctx.Spans = &cache.Spans;
                 }
                 if (useDerivs && haveScale)
                 {
@@ -3488,10 +3818,6 @@ int vtkDisplacementMapFilter::RequestData(
         if (checkIdsBeside && needCells)
         {
           idsChecked();
-        }
-        if (needLinks)
-        {
-          mesh.UseLinks(cache.Links);
         }
         // One displacement per group: the mean of the members' own.
         forEachGroup(
@@ -3725,6 +4051,6 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
   os << indent << "NonFiniteCount (last scan of the height map): " << this->NonFiniteCount << "\n";
   os << indent << "Mesh data kept between executions: " << this->Cache->Bytes() << " bytes\n";
-  os << indent << "Mesh normals through point links (point ids too scattered for cell spans): "
+  os << indent << "Point ids too scattered for cell spans (point links used instead): "
      << (this->Cache->HaveSpans && this->Cache->SpansScattered ? "yes" : "no") << "\n";
 }

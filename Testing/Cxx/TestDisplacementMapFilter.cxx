@@ -2002,8 +2002,7 @@ bool ThroughLinks(vtkDisplacementMapFilter* f)
 {
   std::ostringstream os;
   f->Print(os);
-  const std::string key =
-    "Mesh normals through point links (point ids too scattered for cell spans): ";
+  const std::string key = "Point ids too scattered for cell spans (point links used instead): ";
   const size_t at = os.str().find(key);
   EXPECT_NE(at, std::string::npos);
   return at != std::string::npos && os.str().compare(at + key.size(), 3, "yes") == 0;
@@ -2232,4 +2231,139 @@ TEST(DisplacementMapFilter, SameBitsInEveryBuild)
 #else
   GTEST_SKIP() << "runs itself through /proc/self/exe";
 #endif
+}
+
+// --- issue 5, tenth round: the fits without point links -----------------------------------------
+namespace
+{
+// @a mesh (MakeMesh's) with the triangle pairs of its first row made quads and one triangle made
+// degenerate (a corner named twice), so that the fits meet polygons that are not three distinct
+// points.
+vtkSmartPointer<vtkPolyData> WithOddPolygons(vtkPolyData* mesh, int U)
+{
+  auto odd = vtkSmartPointer<vtkPolyData>::New();
+  odd->ShallowCopy(mesh);
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> a, b;
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    mesh->GetCellPoints(c, a);
+    if (c < 2 * U && c % 2 == 0)
+    {
+      // (a, b, d) and (a, d, c): the quad (a, b, d, c).
+      mesh->GetCellPoints(c + 1, b);
+      const vtkIdType quad[4] = { a->GetId(0), a->GetId(1), a->GetId(2), b->GetId(2) };
+      polys->InsertNextCell(4, quad);
+      ++c;
+      continue;
+    }
+    if (c == cells / 2 + 7)
+    {
+      a->SetId(2, a->GetId(0));
+    }
+    polys->InsertNextCell(a);
+  }
+  odd->SetPolys(polys);
+  return odd;
+}
+
+// Whether the filter's last execution found the point ids too scattered for cell spans
+// (PrintSelf).
+bool UsedPointLinks(vtkDisplacementMapFilter* f)
+{
+  std::ostringstream os;
+  f->Print(os);
+  return os.str().find("(point links used instead): yes") != std::string::npos;
+}
+}
+
+// The fits (Exact; Approximate without dPdu/dPdv) add each point's neighbours in polygon order:
+// for ranges of points over the polygons' cell spans (usual meshes: each polygon's pair terms added
+// to its corners), or gathered through the point links (scattered point ids). Renumbering the
+// points (polygons in the same order) takes the links, and must give every point the bits it had:
+// float and double arrays, with and without dPdu/dPdv, at 1 and 2 threads, on first and later
+// executions, with quads and a degenerate triangle (seams not merged: their means add the members
+// in id order). MakeMesh's 257-point rows put the ends of the
+// ranges (pass 1's tasks, at most 16384 points) mid-row, so that the polygons there have corners in
+// two ranges; points that float lanes redo in double lanes (a zero normal, a tangent along the
+// normal) lie near such an end.
+TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  const int U = 256, V = 128;
+  for (bool floatPoints : { false, true })
+  {
+    for (bool derivatives : { false, true })
+    {
+      auto mesh = WithOddPolygons(MakeMesh(s, U, V, derivatives, floatPoints), U);
+      const vtkIdType count = mesh->GetNumberOfPoints();
+      ASSERT_GT(count, 2 * 16384);
+      vtkPointData* pd = mesh->GetPointData();
+      pd->GetNormals()->SetTuple3(16384 + 3, 0.0, 0.0, 0.0);
+      double n[3];
+      pd->GetNormals()->GetTuple(16384 - 2, n);
+      pd->GetArray("Tangents")->SetTuple4(16384 - 2, n[0], n[1], n[2], 1.0);
+      std::vector<vtkIdType> perm;
+      auto renumbered = Renumbered(mesh, perm);
+      for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
+      {
+        for (int threads : { 1, 2 })
+        {
+          vtkSMPTools::Initialize(threads);
+          vtkNew<vtkDisplacementMapFilter> a, b;
+          for (vtkDisplacementMapFilter* f : { a.Get(), b.Get() })
+          {
+            f->SetInputData(0, f == a.Get() ? mesh : renumbered);
+            f->SetInputData(1, image);
+            f->SetNormalMode(mode);
+            f->SetScale(0.1);
+            f->SetMidlevel(0.5);
+            f->SetInterpolation(vtkDisplacementMapFilter::Cubic);
+            // The seam groups' means add their members in id order, which renumbering changes.
+            f->MergeSeamsOff();
+          }
+          for (int execution = 0; execution < 2; ++execution)
+          {
+            const std::string what = std::string(floatPoints ? "float" : "double") +
+              (derivatives ? " dPdu/dPdv" : "") + " mode " + std::to_string(mode) + " threads " +
+              std::to_string(threads) + " execution " + std::to_string(execution);
+            a->SetScale(0.1 + 0.05 * execution);
+            b->SetScale(0.1 + 0.05 * execution);
+            a->Update();
+            b->Update();
+            const bool fits = mode == vtkDisplacementMapFilter::Exact || !derivatives;
+            if (fits)
+            {
+              EXPECT_FALSE(UsedPointLinks(a)) << what;
+              EXPECT_TRUE(UsedPointLinks(b)) << what;
+            }
+            vtkPolyData* x = a->GetOutput();
+            vtkPolyData* y = b->GetOutput();
+            vtkIdType differ = 0;
+            for (const char* name : { "", "Normals", "Tangents" })
+            {
+              vtkDataArray* ax =
+                *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
+              vtkDataArray* ay =
+                *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
+              ASSERT_TRUE(ax && ay) << name << " " << what;
+              const size_t bytes =
+                static_cast<size_t>(ax->GetDataTypeSize()) * ax->GetNumberOfComponents();
+              const auto* px = static_cast<const unsigned char*>(ax->GetVoidPointer(0));
+              const auto* py = static_cast<const unsigned char*>(ay->GetVoidPointer(0));
+              for (vtkIdType i = 0; i < count; ++i)
+              {
+                differ += std::memcmp(px + bytes * i, py + bytes * perm[i], bytes) != 0;
+              }
+            }
+            EXPECT_EQ(differ, 0) << what;
+            EXPECT_TRUE(AllFinite(x)) << what;
+          }
+        }
+      }
+    }
+  }
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
