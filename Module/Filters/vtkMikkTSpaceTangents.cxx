@@ -2671,8 +2671,8 @@ private:
   // One task's counts, lanes and slots; kept per thread from task to task.
   struct TaskSlots
   {
-    // Per vertex of the task: its number of corners (at [x + 1]; [nv + 1] counts the
-    // corners of other vertices), its next slot, its corners of orientation 1.
+    // Per vertex x of the task: its number of corners (at [x + 1]), its next slot, its
+    // corners of orientation 1.
     std::vector<std::int32_t> Count, Cursor, Ones;
     // The vertices with corners, one to a lane; per group of Lanes lanes its first slot and
     // its largest fan.
@@ -2711,9 +2711,9 @@ private:
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
     const std::uint32_t nv = static_cast<std::uint32_t>(ve - vb);
-    if (ts.Count.size() < nv + 2)
+    if (ts.Count.size() < nv + 1)
     {
-      ts.Count.resize(nv + 2);
+      ts.Count.resize(nv + 1);
       ts.Cursor.resize(nv);
       ts.Ones.resize(nv);
       ts.Lane.resize(nv);
@@ -2721,14 +2721,19 @@ private:
       ts.GroupSlots.resize(nv / Lanes + 2);
     }
     std::int32_t* __restrict count = ts.Count.data();
-    std::fill_n(count, nv + 2, 0);
+    std::fill_n(count, nv + 1, 0);
     for (const std::int32_t* ch = cb; ch < ce; ++ch)
     {
       const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
       for (vtkIdType c = 3 * t0; c < 3 * t1; ++c)
       {
+        // A branch: the corners of other vertices come in runs, and counting them in one
+        // place would chain their increments through memory.
         const std::uint32_t x = static_cast<std::uint32_t>(w[c] - vb);
-        ++count[x < nv ? x + 1 : nv + 1];
+        if (x < nv)
+        {
+          ++count[x + 1];
+        }
       }
     }
     std::int32_t* __restrict lane = ts.Lane.data();
@@ -2827,39 +2832,44 @@ private:
         fb.GroupFirst[g] = groupFirst[l0 / Lanes + g];
         fb.GroupSlots[g] = groupSlots[l0 / Lanes + g];
       }
+      // Checks fold into a flag (loops with an early exit do not vectorise).
+      int bad = 0;
       for (int j = 0; j < nb; ++j)
       {
-        const std::int32_t x = lane[l0 + j], v = vb + x, k = count[x + 1];
-        const double* u = this->UnitNormals + 3 * std::size_t(v);
-        if (!(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6) ||
-          (ones[x] != 0 && ones[x] != k))
-        {
-          return false;
-        }
-        fb.Vertex[j] = v;
+        const std::int32_t x = lane[l0 + j], k = count[x + 1], o = ones[x];
+        fb.Vertex[j] = vb + x;
         fb.K[j] = k;
-        fb.Handedness[j] = ones[x] != 0 ? 1.0f : -1.0f;
-        const int c0 = fb.GroupFirst[j / Lanes] + j % Lanes;
-        for (int q = 0; q < 6; ++q)
-        {
-          block->FirstDir[q][j] = fb.Dir[q][c0];
-        }
+        fb.Handedness[j] = o != 0 ? 1.0f : -1.0f;
+        bad |= (o != 0) & (o != k);
+      }
+      const double* __restrict un = this->UnitNormals;
+      const PT* __restrict pts = this->P;
+      for (int j = 0; j < nb; ++j)
+      {
+        const std::size_t v = static_cast<std::size_t>(fb.Vertex[j]);
+        const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
+        bad |= !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
         for (int q = 0; q < 3; ++q)
         {
           fb.NV[q][j] = u[q];
           fb.NR[q][j] = static_cast<Real>(u[q]);
-          fb.Position[q][j] = Real(this->P[3 * std::size_t(v) + q]);
+          fb.Position[q][j] = Real(pts[3 * v + q]);
         }
+      }
+      if (bad)
+      {
+        return false;
       }
       fb.NumberOfVertices = nb;
       Pad(fb);
-      // Pad repeats each group's first lane into the lanes past the block's vertices.
+      // Each lane's first corner; the lanes past the block's vertices repeat their group's
+      // first lane, as Pad made them.
       float(*__restrict firstDir)[SlotBlock<Real>::MaxVertices] = block->FirstDir;
-      for (int j = nb; j < ((nb + Lanes - 1) & ~(Lanes - 1)); ++j)
+      for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
       {
         for (int q = 0; q < 6; ++q)
         {
-          firstDir[q][j] = firstDir[q][j & ~(Lanes - 1)];
+          std::copy_n(fb.Dir[q] + fb.GroupFirst[g], Lanes, firstDir[q] + Lanes * g);
         }
       }
       ReferencesOf(fb, (nb + Lanes - 1) & ~(Lanes - 1),
