@@ -1931,16 +1931,20 @@ private:
     Block<std::int32_t> w(3 * nt);
     Block<std::array<float, 6>> dir(nt);
     Block<unsigned char> orient(nt);
+    // The spans of the triangle chunks, for the task-local slots (AVX-512 build only).
+    const bool local = vtkSurfaceDetailVectorize::HaveAVX512();
+    std::vector<std::int32_t> spanLo(local ? (nt + SpanTriangles - 1) / SpanTriangles : 0),
+      spanHi(spanLo.size());
     if (!this->Triangles(offsets, conn, nTris, weld.Get(), referenced ? referenced->Get() : nullptr,
-          w.Get(), dir.Get(), orient.Get()))
+          w.Get(), dir.Get(), orient.Get(), local ? spanLo.data() : nullptr,
+          local ? spanHi.data() : nullptr))
     {
       return false;
     }
     Block<double> unitNormals(3 * static_cast<std::size_t>(this->NumberOfPoints));
     this->ComputeUnitNormals(unitNormals.Get());
     std::vector<std::int32_t> taskFirst, taskChunks;
-    if (vtkSurfaceDetailVectorize::HaveAVX512() &&
-      this->TaskChunks(w.Get(), nTris, taskFirst, taskChunks))
+    if (local && this->TaskChunks(spanLo, spanHi, taskFirst, taskChunks))
     {
       if (!this->LocalVertices(w.Get(), nTris, taskFirst, taskChunks, dir.Get(), orient.Get(),
             weld.Get(), out))
@@ -2260,25 +2264,30 @@ private:
   template <typename IdT>
   bool Triangles(const IdT* offsets, const IdT* conn, vtkIdType nTris, const std::int32_t* weld,
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
-    unsigned char* orient) const
+    unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi) const
   {
     if (offsets[nTris] != 3 * nTris)
     {
       return false;
     }
     std::atomic<bool> fail(false);
-    vtkSMPTools::For(0, nTris,
-      [&](vtkIdType b, vtkIdType e)
+    // Whole chunks of SpanTriangles, each a block of TriangleRange.
+    vtkSMPTools::For(0, (nTris + SpanTriangles - 1) / SpanTriangles,
+      [&](vtkIdType cb, vtkIdType ce)
       {
         if (fail.load(std::memory_order_relaxed))
         {
           return;
         }
+        const vtkIdType b = cb * SpanTriangles, e = std::min(nTris, ce * SpanTriangles);
         const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
-          ? TrianglesAVX512(*this, b, e, offsets, conn, weld, referenced, w, dir, orient)
+          ? TrianglesAVX512(
+              *this, b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi)
           : vtkSurfaceDetailVectorize::HaveAVX2()
-          ? TrianglesAVX2(*this, b, e, offsets, conn, weld, referenced, w, dir, orient)
-          : this->TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+          ? TrianglesAVX2(
+              *this, b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi)
+          : this->TriangleRange(
+              b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
         if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
@@ -2291,30 +2300,34 @@ private:
   SURFACEDETAIL_TARGET_AVX2 static bool TrianglesAVX2(const FastMikk& self, vtkIdType b,
     vtkIdType e, const IdT* offsets, const IdT* conn, const std::int32_t* weld,
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
-    unsigned char* orient)
+    unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+    return self.TriangleRange(
+      b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
   template <typename IdT>
   SURFACEDETAIL_TARGET_AVX512 static bool TrianglesAVX512(const FastMikk& self, vtkIdType b,
     vtkIdType e, const IdT* offsets, const IdT* conn, const std::int32_t* weld,
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
-    unsigned char* orient)
+    unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+    return self.TriangleRange(
+      b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
   // As the fans: blocks of triangles, each checked and listed, then one loop of plain
   // arithmetic that the compiler vectorises (checks fold into a 0/1 flag). The checks of a
   // block fold into flags too, tested once per block: loops with an early exit do not
-  // vectorise.
+  // vectorise. With spanLo and spanHi, also each block's least and largest welded id (see
+  // TaskChunks); b is then a multiple of SpanTriangles.
   template <typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
-    std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient) const
+    std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient, std::int32_t* spanLo,
+    std::int32_t* spanHi) const
   {
-    constexpr int Size = 128;
+    constexpr int Size = static_cast<int>(SpanTriangles);
     struct Columns
     {
       alignas(32) std::int32_t X[3][Size]; // offsets of the corners' coordinates
@@ -2377,6 +2390,17 @@ private:
       if (bad != 0)
       {
         return false;
+      }
+      if (spanLo)
+      {
+        std::int32_t lo = std::numeric_limits<std::int32_t>::max(), hi = 0;
+        for (int j = 0; j < 3 * m; ++j)
+        {
+          lo = std::min(lo, wb[j]);
+          hi = std::max(hi, wb[j]);
+        }
+        spanLo[t0 / Size] = lo;
+        spanHi[t0 / Size] = hi;
       }
       this->TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
       int good = 1;
@@ -2605,7 +2629,7 @@ private:
   // corners' records (points after and before, the triangle's directions and orientation)
   // are written and read while in cache, instead of written to and gathered from the global
   // arrays (36 MB and a gather of the 24 MB of directions on the 1M torus).
-  static constexpr vtkIdType SpanTriangles = 256;
+  static constexpr vtkIdType SpanTriangles = 128;
   static constexpr std::int32_t TaskVertices = 2048;
   // The tasks may read each triangle this many times on average (twice each: counting and
   // filling); meshes whose welded ids are more scattered use the global lists.
@@ -2614,30 +2638,16 @@ private:
   // Per task, the chunks whose corners' least and largest welded ids enclose some of its
   // vertices, in increasing order (taskFirst: CSR starts). False if that is more than
   // MaxScans chunks per chunk.
-  bool TaskChunks(const std::int32_t* w, vtkIdType nTris, std::vector<std::int32_t>& taskFirst,
-    std::vector<std::int32_t>& taskChunks) const
+  bool TaskChunks(std::vector<std::int32_t>& lo, std::vector<std::int32_t>& hi,
+    std::vector<std::int32_t>& taskFirst, std::vector<std::int32_t>& taskChunks) const
   {
-    const vtkIdType nChunks = (nTris + SpanTriangles - 1) / SpanTriangles;
+    const vtkIdType nChunks = static_cast<vtkIdType>(lo.size());
     const vtkIdType nTasks = (vtkIdType(this->NumberOfPoints) + TaskVertices - 1) / TaskVertices;
-    std::vector<std::int32_t> lo(static_cast<std::size_t>(nChunks)),
-      hi(static_cast<std::size_t>(nChunks));
-    vtkSMPTools::For(0, nChunks,
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType ch = b; ch < e; ++ch)
-        {
-          const std::int32_t* __restrict x = w + 3 * SpanTriangles * ch;
-          const vtkIdType n = 3 * std::min(SpanTriangles, nTris - SpanTriangles * ch);
-          std::int32_t l = std::numeric_limits<std::int32_t>::max(), h = 0;
-          for (vtkIdType i = 0; i < n; ++i)
-          {
-            l = std::min(l, x[i]);
-            h = std::max(h, x[i]);
-          }
-          lo[ch] = l / TaskVertices;
-          hi[ch] = h / TaskVertices;
-        }
-      });
+    for (vtkIdType ch = 0; ch < nChunks; ++ch)
+    {
+      lo[ch] /= TaskVertices;
+      hi[ch] /= TaskVertices;
+    }
     vtkIdType scans = 0;
     for (vtkIdType ch = 0; ch < nChunks; ++ch)
     {
