@@ -1646,15 +1646,6 @@ VTK_ALWAYS_INLINE bool FanIsOneRun(const std::int32_t* next, const std::int32_t*
   return LargeFanIsOneRun(next, prev, k);
 }
 
-// Where each vertex's list starts in a CSR of vertex lists (the list of v ends where that of
-// v + 1 starts): for all the vertices (Base 0) or for those of one task, from Base on.
-struct ListStarts
-{
-  const std::int32_t* Data;
-  std::int32_t Base;
-  std::int32_t operator[](std::int32_t v) const { return this->Data[v - this->Base]; }
-};
-
 // A range [0, n) cut into a fixed number of chunks that depends on n alone (at most 64, at
 // least 16384 items each, or one): passes whose results depend on the order of the items
 // (counting sorts, running sums) run per chunk in parallel and stay the same whatever the
@@ -2591,7 +2582,7 @@ private:
   // The fans of the vertices [b, e), in the best instruction set the processor has.
   bool FansOf(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    ListStarts first, const std::int32_t* corners, const std::int32_t* weld, float* out) const
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld, float* out) const
   {
     return vtkSurfaceDetailVectorize::HaveAVX512()
       ? FansAVX512(*this, b, e, nextIds, prevIds, dir, orient, first, corners, weld, out)
@@ -2615,7 +2606,7 @@ private:
         }
         const FlushSubnormals flush(std::is_same<Real, float>::value);
         if (!this->FansOf(std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
-              ListStarts{ first, 0 }, corners, weld, out))
+              first, corners, weld, out))
         {
           fail.store(true, std::memory_order_relaxed);
         }
@@ -3003,7 +2994,7 @@ private:
   // for bit (no fused multiply-add, and sums stay in order).
   SURFACEDETAIL_TARGET_AVX2 static bool FansAVX2(const FastMikk& self, std::int32_t b,
     std::int32_t e, const std::int32_t* nextIds, const std::int32_t* prevIds,
-    const std::array<float, 6>* dir, const unsigned char* orient, ListStarts first,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, const std::int32_t* weld, float* out)
   {
     return self.Fans<true>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
@@ -3014,7 +3005,7 @@ private:
   // CMakeLists, and sums in the same order).
   SURFACEDETAIL_TARGET_AVX512 static bool FansAVX512(const FastMikk& self, std::int32_t b,
     std::int32_t e, const std::int32_t* nextIds, const std::int32_t* prevIds,
-    const std::array<float, 6>* dir, const unsigned char* orient, ListStarts first,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, const std::int32_t* weld, float* out)
   {
     return self.SlotFans(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
@@ -3023,7 +3014,7 @@ private:
   template <bool Wide>
   VTK_ALWAYS_INLINE bool Fans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    ListStarts first, const std::int32_t* corners, const std::int32_t* weld,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
     float* out) const
   {
     std::unique_ptr<FanBlock<Real>> block(new FanBlock<Real>);
@@ -3065,7 +3056,7 @@ private:
   // baseline build, in SumFans in the others (see WeighCorners).
   template <bool Wide>
   VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const unsigned char* orient, ListStarts first,
+    const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
     const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
   {
     const double* u = this->UnitNormals + 3 * std::size_t(v);
@@ -3297,7 +3288,7 @@ private:
   // pairing finds the same links), and the links chain all the triangles into one run.
   template <bool Wide>
   VTK_ALWAYS_INLINE static bool SumFans(FanBlock<Real>& fb, const std::array<float, 6>* dir,
-    const std::int32_t* nextIds, const std::int32_t* prevIds, ListStarts first, float* out)
+    const std::int32_t* nextIds, const std::int32_t* prevIds, const std::int32_t* first, float* out)
   {
     const int nv = fb.NumberOfVertices;
     int ok = 1;
@@ -3384,7 +3375,7 @@ private:
   }
   VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    ListStarts first, const std::int32_t* corners, const std::int32_t* weld,
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
     float* out) const
   {
     using Block = SlotBlock<Real>;
@@ -3433,7 +3424,7 @@ private:
   // uses gets the default frame at once).
   VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    ListStarts first, const std::int32_t* corners, SlotBlock<Real>& fb, float* out) const
+    const std::int32_t* first, const std::int32_t* corners, SlotBlock<Real>& fb, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     const double* u = this->UnitNormals + 3 * std::size_t(v);
