@@ -1937,8 +1937,8 @@ private:
     std::vector<std::int32_t> taskFirst, taskChunks;
     if (local && this->TaskChunks(spanLo, spanHi, taskFirst, taskChunks))
     {
-      if (!this->LocalVertices(w.Get(), nTris, taskFirst, taskChunks, dir.Get(), orient.Get(),
-            weld.Get(), out))
+      if (!this->LocalVertices(
+            w.Get(), nTris, taskFirst, taskChunks, dir.Get(), orient.Get(), weld.Get(), out))
       {
         return false;
       }
@@ -2274,11 +2274,10 @@ private:
         const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
           ? TrianglesAVX512(
               *this, b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi)
-          : vtkSurfaceDetailVectorize::HaveAVX2()
-          ? TrianglesAVX2(
-              *this, b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi)
-          : this->TriangleRange(
-              b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
+          : vtkSurfaceDetailVectorize::HaveAVX2() ? TrianglesAVX2(*this, b, e, offsets, conn, weld,
+                                                      referenced, w, dir, orient, spanLo, spanHi)
+                                                  : this->TriangleRange(b, e, offsets, conn, weld,
+                                                      referenced, w, dir, orient, spanLo, spanHi);
         if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
@@ -2582,7 +2581,8 @@ private:
   // The fans of the vertices [b, e), in the best instruction set the processor has.
   bool FansOf(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
     const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld, float* out) const
+    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
+    float* out) const
   {
     return vtkSurfaceDetailVectorize::HaveAVX512()
       ? FansAVX512(*this, b, e, nextIds, prevIds, dir, orient, first, corners, weld, out)
@@ -2605,8 +2605,8 @@ private:
           return;
         }
         const FlushSubnormals flush(std::is_same<Real, float>::value);
-        if (!this->FansOf(std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
-              first, corners, weld, out))
+        if (!this->FansOf(std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient, first,
+              corners, weld, out))
         {
           fail.store(true, std::memory_order_relaxed);
         }
@@ -2614,21 +2614,24 @@ private:
     return !fail;
   }
 
-  // The vertices in tasks of TaskVertices, each task's vertex lists built by the task from the
-  // chunks of SpanTriangles triangles that may have corners among its vertices (TaskChunks),
-  // read in triangle order: its lists are those of VertexCorners, in the same order, and the
-  // corners' records (points after and before, the triangle's directions and orientation)
-  // are written and read while in cache, instead of written to and gathered from the global
-  // arrays (36 MB and a gather of the 24 MB of directions on the 1M torus).
+  // In the AVX-512 build, the vertices go in tasks of TaskVertices, each of which reads the
+  // chunks of SpanTriangles triangles that may have corners among its vertices (TaskChunks)
+  // in triangle order and copies its vertices' corners straight into its fans' slots
+  // (LocalSlots): no global vertex lists (VertexCorners: 36 MB written on the 1M torus, 13%
+  // of the cycles) and no copies from them into the slots (GatherSlots: half the fan pass).
+  // A task's slots (~400 kB on the torus) stay in the level-2 cache from their copy to the
+  // corner loop. Tasks of 1024 vertices took 2% more cycles on the torus (more chunks read
+  // twice), of 4096 1% fewer, for twice the slots.
   static constexpr vtkIdType SpanTriangles = 128;
   static constexpr std::int32_t TaskVertices = 2048;
-  // The tasks may read each triangle this many times on average (twice each: counting and
-  // filling); meshes whose welded ids are more scattered use the global lists.
+  // The tasks may read each chunk this many times on average (each read is two passes: the
+  // count and the copy); meshes whose welded ids are more scattered (a mesh numbered at
+  // random) use the global lists. The 1M torus: 1.5 times.
   static constexpr vtkIdType MaxScans = 3;
 
-  // Per task, the chunks whose corners' least and largest welded ids enclose some of its
-  // vertices, in increasing order (taskFirst: CSR starts). False if that is more than
-  // MaxScans chunks per chunk.
+  // Per task, the chunks whose corners' least and largest welded ids (lo and hi, which are
+  // turned into task numbers) enclose some of its vertices, in increasing order (taskFirst:
+  // CSR starts). False if that is more than MaxScans chunks per chunk.
   bool TaskChunks(std::vector<std::int32_t>& lo, std::vector<std::int32_t>& hi,
     std::vector<std::int32_t>& taskFirst, std::vector<std::int32_t>& taskChunks) const
   {
@@ -2672,21 +2675,22 @@ private:
   // One task's counts, lanes and slots; kept per thread from task to task.
   struct TaskSlots
   {
-    // Per vertex x of the task: its number of corners (at [x + 1]), its next slot, its
-    // corners of orientation 1.
+    // Per vertex x of the task: its number of corners (at [x + 1]), its next slot, the
+    // number of its corners of orientation 1.
     std::vector<std::int32_t> Count, Cursor, Ones;
     // The vertices with corners, one to a lane; per group of Lanes lanes its first slot and
     // its largest fan.
     std::vector<std::int32_t> Lane, GroupFirst, GroupSlots;
-    // The slots (see SlotBlock): next and previous ids at [c] and [c + SlotStride], dP/ds
-    // and dP/dt at [c + q SlotStride]; a constant stride, so that the copies into the slots
-    // address each array by a constant displacement from the one slot index. One block of
-    // 8 SlotStride values (2 MB or more: huge pages, from vtkSurfaceDetailMemory's cache at
-    // the next execution).
+    // The slots (see SlotBlock), each group's rows of corners one after the other, and in
+    // a row the eight arrays side by side (RowStride 8 Lanes): next ids at [c], previous
+    // ids at [c + Lanes], dP/ds and dP/dt at [c + (q + 2) Lanes]. A copy into a slot then
+    // writes eight values at constant offsets from one index, and a group's row is eight
+    // whole cache lines. Room for the largest task (2 MB or more: huge pages, from
+    // vtkSurfaceDetailMemory's cache at the next execution).
     std::shared_ptr<Block<unsigned char>> Slots;
   };
-  static constexpr std::size_t SlotStride =
-    MaxFastFan * std::size_t(TaskVertices + SlotBlock<Real>::Lanes);
+  static constexpr std::size_t MaxTaskSlots =
+    8 * MaxFastFan * std::size_t(TaskVertices + SlotBlock<Real>::Lanes);
 
   // A SlotBlock, and its first corners' directions for References, allocated by each task:
   // the compiler then knows that they alias nothing else, and vectorises the loops over
@@ -2699,15 +2703,14 @@ private:
 
   // The fans of the vertices [vb, ve) in the AVX-512 build, from the triangles of the chunks
   // [cb, ce) of taskChunks (see TaskChunks). The task counts its vertices' corners, gives
-  // each vertex with corners a lane (as SlotFans does, in vertex order, but in one layout
+  // each vertex with corners a lane (in vertex order, as SlotFans does, but in one layout
   // for the whole task), then copies each corner of its vertices, in triangle order (the
-  // order of VertexCorners' lists), straight into its slot: no vertex lists, and the
-  // triangles' directions are read in triangle order. Then the blocks of SlotBlock's
-  // vertices as in SlotFans, same bits. False if a check fails or a fan is too large.
-  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris,
-    const std::int32_t* cb, const std::int32_t* ce, std::int32_t vb, std::int32_t ve,
-    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* weld,
-    TaskSlots& ts, float* out) const
+  // order of VertexCorners' lists, so each fan's sums are SlotFans' to the bit), straight
+  // into its slot, reading the triangles' directions in their order. Then SlotFans' steps
+  // per block of SlotBlock's vertices. False if a check fails or a fan is too large.
+  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
+    const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
@@ -2755,8 +2758,8 @@ private:
         if (!this->Welded || weld[v] == v) // else a copy of a smaller point, filled later
         {
           const double* u = this->UnitNormals + 3 * std::size_t(v);
-          FinalTangent(
-            V3{ u[0], u[1], u[2] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out + 4 * std::size_t(v));
+          FinalTangent(V3{ u[0], u[1], u[2] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 },
+            out + 4 * std::size_t(v));
         }
         continue;
       }
@@ -2779,7 +2782,7 @@ private:
     }
     if (!ts.Slots)
     {
-      ts.Slots = std::make_shared<Block<unsigned char>>(8 * SlotStride * sizeof(float));
+      ts.Slots = std::make_shared<Block<unsigned char>>(MaxTaskSlots * sizeof(float));
     }
     std::int32_t* __restrict ids = reinterpret_cast<std::int32_t*>(ts.Slots->Get());
     float* __restrict d = reinterpret_cast<float*>(ts.Slots->Get());
@@ -2873,8 +2876,8 @@ private:
           std::copy_n(fb.Dir[q] + fb.GroupFirst[g], Lanes, firstDir[q] + Lanes * g);
         }
       }
-      ReferencesOf(fb, (nb + Lanes - 1) & ~(Lanes - 1),
-        [firstDir](int j, int q) { return firstDir[q][j]; });
+      ReferencesOf(
+        fb, (nb + Lanes - 1) & ~(Lanes - 1), [firstDir](int j, int q) { return firstDir[q][j]; });
       // The fan's ids in corner order, as in VertexCorners' lists.
       auto oneRun = [&](int j)
       {
@@ -2897,8 +2900,8 @@ private:
 
   SURFACEDETAIL_TARGET_AVX512 static bool LocalSlotsAVX512(const FastMikk& self,
     const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce,
-    std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
-    const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out)
+    std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* weld, TaskSlots& ts, float* out)
   {
     return self.LocalSlots(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
   }
@@ -2937,8 +2940,8 @@ private:
 
   // Welded points share their vertex's frame if a polygon uses them; the frame of a point
   // no polygon uses is the default one, as in the general path.
-  void CopyWelded(const std::int32_t* weld, const std::atomic<unsigned char>* referenced,
-    float* out) const
+  void CopyWelded(
+    const std::int32_t* weld, const std::atomic<unsigned char>* referenced, float* out) const
   {
     auto unused = [&](std::int32_t p, float* t)
     {

@@ -426,8 +426,8 @@ TEST(vtkMikkTSpaceTangents, FastPathRenumberedPointsSameFrames)
     vtkIdType differ = 0;
     for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
     {
-      differ += std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]),
-                  4 * sizeof(float)) != 0
+      differ +=
+        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
         ? 1
         : 0;
     }
