@@ -2262,15 +2262,16 @@ private:
       return false;
     }
     std::atomic<bool> fail(false);
-    // Whole chunks of SpanTriangles, each a block of TriangleRange.
-    vtkSMPTools::For(0, (nTris + SpanTriangles - 1) / SpanTriangles,
+    // For the spans, whole chunks of SpanTriangles, each a block of TriangleRange.
+    const vtkIdType unit = spanLo ? SpanTriangles : 1;
+    vtkSMPTools::For(0, (nTris + unit - 1) / unit,
       [&](vtkIdType cb, vtkIdType ce)
       {
         if (fail.load(std::memory_order_relaxed))
         {
           return;
         }
-        const vtkIdType b = cb * SpanTriangles, e = std::min(nTris, ce * SpanTriangles);
+        const vtkIdType b = cb * unit, e = std::min(nTris, ce * unit);
         const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
           ? TrianglesAVX512(
               *this, b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi)
@@ -2578,19 +2579,6 @@ private:
     return true;
   }
 
-  // The fans of the vertices [b, e), in the best instruction set the processor has.
-  bool FansOf(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
-    float* out) const
-  {
-    return vtkSurfaceDetailVectorize::HaveAVX512()
-      ? FansAVX512(*this, b, e, nextIds, prevIds, dir, orient, first, corners, weld, out)
-      : vtkSurfaceDetailVectorize::HaveAVX2()
-      ? FansAVX2(*this, b, e, nextIds, prevIds, dir, orient, first, corners, weld, out)
-      : this->Fans<false>(b, e, nextIds, prevIds, dir, orient, first, corners, weld, out);
-  }
-
   // Every vertex's fan from the global vertex lists (VertexCorners).
   bool Vertices(const std::int32_t* nextIds, const std::int32_t* prevIds,
     const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
@@ -2605,8 +2593,15 @@ private:
           return;
         }
         const FlushSubnormals flush(std::is_same<Real, float>::value);
-        if (!this->FansOf(std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient, first,
-              corners, weld, out))
+        const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
+          ? FansAVX512(*this, std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
+              first, corners, weld, out)
+          : vtkSurfaceDetailVectorize::HaveAVX2()
+          ? FansAVX2(*this, std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient, first,
+              corners, weld, out)
+          : this->Fans<false>(std::int32_t(b), std::int32_t(e), nextIds, prevIds, dir, orient,
+              first, corners, weld, out);
+        if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
         }
@@ -3245,16 +3240,40 @@ private:
   // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
   // directions, and with every direction within a quarter turn of these (with a margin),
   // no two are. For the first @a count vertices of a FanBlock or a SlotBlock (whose
-  // references are in double or in Real), from their first triangles' directions in dir.
+  // references are in double or in Real).
   template <typename BlockT>
   VTK_ALWAYS_INLINE static void References(BlockT& fb, const std::array<float, 6>* dir, int count)
   {
+    using RT = std::remove_reference_t<decltype(fb.R[0][0])>;
     const float* __restrict d = dir[0].data();
     const std::int32_t* __restrict first6 = fb.First6;
-    ReferencesOf(fb, count, [d, first6](int j, int q) { return d[first6[j] + q]; });
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    double* __restrict good = fb.Good;
+    RT* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    RT* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < count; ++j)
+    {
+      const std::int32_t t = first6[j];
+      const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
+      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
+      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
+      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
+      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
+      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+      r0x[j] = RT(ip * p[0]);
+      r0y[j] = RT(ip * p[1]);
+      r0z[j] = RT(ip * p[2]);
+      r1x[j] = RT(iq * q[0]);
+      r1y[j] = RT(iq * q[1]);
+      r1z[j] = RT(iq * q[2]);
+    }
   }
 
-  // The same from the directions dirOf(j, q), q < 6, of each vertex j's first triangle.
+  // The same from the directions dirOf(j, q), q < 6, of each vertex j's first triangle (the
+  // task-local slots: their own copies, read without gathers, which made this loop scalar).
   template <typename BlockT, typename DirOf>
   VTK_ALWAYS_INLINE static void ReferencesOf(BlockT& fb, int count, DirOf&& dirOf)
   {
