@@ -1951,6 +1951,9 @@ private:
       Block<std::int32_t> nextIds(3 * nt + 8), prevIds(3 * nt + 8);
       std::fill_n(nextIds.Get() + 3 * nt, 8, 0);
       std::fill_n(prevIds.Get() + 3 * nt, 8, 0);
+      // A pole (a fan too large for the fast path) is found while the vertex lists are
+      // sized, rather than in the per-vertex pass, which may have done most of its work by
+      // then.
       if (!this->VertexCorners(
             w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get()) ||
         !this->Vertices(nextIds.Get(), prevIds.Get(), dir.Get(), orient.Get(), first.Get(),
