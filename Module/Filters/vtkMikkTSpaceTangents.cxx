@@ -24,6 +24,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkPolygon.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
@@ -1795,8 +1796,8 @@ struct SlotBlock
   // corners): its vertex, number of corners and handedness; its unit normal (in double and
   // in Real), position, the offset of its first triangle's directions, the projections of
   // those (unit vectors, see References), whether checks passed; the corners' sums of
-  // weighted dP/ds, of turns and of id mixes (see FanBlock), whether they passed the
-  // quarter-turn checks, the closed-fan test's answer, the tangent.
+  // weighted dP/ds, of turns and of id mixes (see FanBlock), the closed-fan test's answer,
+  // the tangent.
   std::int32_t Vertex[MaxVertices];
   float Handedness[MaxVertices];
   alignas(64) std::int32_t K[MaxVertices];
@@ -1809,14 +1810,18 @@ struct SlotBlock
   alignas(64) Real S[3][MaxVertices];
   alignas(64) Real Turns[MaxVertices];
   alignas(64) std::uint64_t Cycles[MaxVertices];
-  alignas(64) std::int32_t Within[MaxVertices];
   alignas(64) std::int32_t Closed[MaxVertices];
   alignas(64) float Tangent[3][MaxVertices];
-  // Per slot: the ids of its corner's next and previous points times 3 (the offsets of
-  // their coordinates), and its triangle's dP/ds and dP/dt.
-  alignas(64) std::int32_t Next[MaxSlots];
-  alignas(64) std::int32_t Prev[MaxSlots];
-  alignas(64) float Dir[6][MaxSlots];
+  // Per slot, in SlotStorage or in a task's slots (see FastMikk::TaskSlots), 64-byte
+  // aligned: the ids of its corner's next and previous points times 3 (the offsets of their
+  // coordinates), and its triangle's dP/ds and dP/dt.
+  std::int32_t* Next;
+  std::int32_t* Prev;
+  float* Dir[6];
+  // From one corner of a lane to the next in each of the arrays above: Lanes in SlotStorage,
+  // 8 Lanes in a task's slots, where the eight arrays' slots of a row of corners are side by
+  // side.
+  int RowStride = Lanes;
 
   int GroupStart(int g) const { return g > 0 ? GroupFirst[g - 1] + Lanes * GroupSlots[g - 1] : 0; }
   // The block's slots with one more fan, of k corners.
@@ -1825,6 +1830,26 @@ struct SlotBlock
     const int g = NumberOfVertices / Lanes;
     return NumberOfVertices % Lanes == 0 ? GroupStart(g) + Lanes * k
                                          : GroupFirst[g] + Lanes * std::max(k, GroupSlots[g]);
+  }
+};
+
+// The slots of one SlotBlock.
+struct SlotStorage
+{
+  static constexpr int MaxSlots = 1024;
+  alignas(64) std::int32_t Next[MaxSlots];
+  alignas(64) std::int32_t Prev[MaxSlots];
+  alignas(64) float Dir[6][MaxSlots];
+  template <typename Real>
+  void Attach(SlotBlock<Real>& fb)
+  {
+    static_assert(MaxSlots == SlotBlock<Real>::MaxSlots, "storage for a whole block");
+    fb.Next = this->Next;
+    fb.Prev = this->Prev;
+    for (int x = 0; x < 6; ++x)
+    {
+      fb.Dir[x] = this->Dir[x];
+    }
   }
 };
 
@@ -1897,30 +1922,49 @@ private:
     Block<std::int32_t> w(3 * nt);
     Block<std::array<float, 6>> dir(nt);
     Block<unsigned char> orient(nt);
+    // The spans of the triangle chunks, for the task-local slots (AVX-512 build only).
+    const bool local = vtkSurfaceDetailVectorize::HaveAVX512();
+    std::vector<std::int32_t> spanLo(local ? (nt + SpanTriangles - 1) / SpanTriangles : 0),
+      spanHi(spanLo.size());
     if (!this->Triangles(offsets, conn, nTris, weld.Get(), referenced ? referenced->Get() : nullptr,
-          w.Get(), dir.Get(), orient.Get()))
-    {
-      return false;
-    }
-    Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
-    Block<std::int32_t> corners(3 * nt);
-    // Eight more: a fan's next and prev values are read eight at a time.
-    Block<std::int32_t> nextIds(3 * nt + 8), prevIds(3 * nt + 8);
-    std::fill_n(nextIds.Get() + 3 * nt, 8, 0);
-    std::fill_n(prevIds.Get() + 3 * nt, 8, 0);
-    // A pole (a fan too large for the fast path) is found while the vertex lists are sized,
-    // rather than in the per-vertex pass, which may have done most of its work by then.
-    if (!this->VertexCorners(
-          w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get()))
+          w.Get(), dir.Get(), orient.Get(), local ? spanLo.data() : nullptr,
+          local ? spanHi.data() : nullptr))
     {
       return false;
     }
     Block<double> unitNormals(3 * static_cast<std::size_t>(this->NumberOfPoints));
     this->ComputeUnitNormals(unitNormals.Get());
-    if (!this->Vertices(nextIds.Get(), prevIds.Get(), dir.Get(), orient.Get(), first.Get(),
-          corners.Get(), weld.Get(), referenced ? referenced->Get() : nullptr, out))
+    std::vector<std::int32_t> taskFirst, taskChunks;
+    if (local && this->TaskChunks(spanLo, spanHi, taskFirst, taskChunks))
     {
-      return false;
+      if (!this->LocalVertices(
+            w.Get(), nTris, taskFirst, taskChunks, dir.Get(), orient.Get(), weld.Get(), out))
+      {
+        return false;
+      }
+    }
+    else
+    {
+      Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
+      Block<std::int32_t> corners(3 * nt);
+      // Eight more: a fan's next and prev values are read eight at a time.
+      Block<std::int32_t> nextIds(3 * nt + 8), prevIds(3 * nt + 8);
+      std::fill_n(nextIds.Get() + 3 * nt, 8, 0);
+      std::fill_n(prevIds.Get() + 3 * nt, 8, 0);
+      // A pole (a fan too large for the fast path) is found while the vertex lists are
+      // sized, rather than in the per-vertex pass, which may have done most of its work by
+      // then.
+      if (!this->VertexCorners(
+            w.Get(), nTris, first.Get(), corners.Get(), nextIds.Get(), prevIds.Get()) ||
+        !this->Vertices(nextIds.Get(), prevIds.Get(), dir.Get(), orient.Get(), first.Get(),
+          corners.Get(), weld.Get(), out))
+      {
+        return false;
+      }
+    }
+    if (this->Welded)
+    {
+      this->CopyWelded(weld.Get(), referenced->Get(), out);
     }
     return true;
   }
@@ -2214,25 +2258,30 @@ private:
   template <typename IdT>
   bool Triangles(const IdT* offsets, const IdT* conn, vtkIdType nTris, const std::int32_t* weld,
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
-    unsigned char* orient) const
+    unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi) const
   {
     if (offsets[nTris] != 3 * nTris)
     {
       return false;
     }
     std::atomic<bool> fail(false);
-    vtkSMPTools::For(0, nTris,
-      [&](vtkIdType b, vtkIdType e)
+    // For the spans, whole chunks of SpanTriangles, each a block of TriangleRange.
+    const vtkIdType unit = spanLo ? SpanTriangles : 1;
+    vtkSMPTools::For(0, (nTris + unit - 1) / unit,
+      [&](vtkIdType cb, vtkIdType ce)
       {
         if (fail.load(std::memory_order_relaxed))
         {
           return;
         }
+        const vtkIdType b = cb * unit, e = std::min(nTris, ce * unit);
         const bool done = vtkSurfaceDetailVectorize::HaveAVX512()
-          ? TrianglesAVX512(*this, b, e, offsets, conn, weld, referenced, w, dir, orient)
-          : vtkSurfaceDetailVectorize::HaveAVX2()
-          ? TrianglesAVX2(*this, b, e, offsets, conn, weld, referenced, w, dir, orient)
-          : this->TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+          ? TrianglesAVX512(
+              *this, b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi)
+          : vtkSurfaceDetailVectorize::HaveAVX2() ? TrianglesAVX2(*this, b, e, offsets, conn, weld,
+                                                      referenced, w, dir, orient, spanLo, spanHi)
+                                                  : this->TriangleRange(b, e, offsets, conn, weld,
+                                                      referenced, w, dir, orient, spanLo, spanHi);
         if (!done)
         {
           fail.store(true, std::memory_order_relaxed);
@@ -2245,30 +2294,34 @@ private:
   SURFACEDETAIL_TARGET_AVX2 static bool TrianglesAVX2(const FastMikk& self, vtkIdType b,
     vtkIdType e, const IdT* offsets, const IdT* conn, const std::int32_t* weld,
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
-    unsigned char* orient)
+    unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+    return self.TriangleRange(
+      b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
   template <typename IdT>
   SURFACEDETAIL_TARGET_AVX512 static bool TrianglesAVX512(const FastMikk& self, vtkIdType b,
     vtkIdType e, const IdT* offsets, const IdT* conn, const std::int32_t* weld,
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
-    unsigned char* orient)
+    unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.TriangleRange(b, e, offsets, conn, weld, referenced, w, dir, orient);
+    return self.TriangleRange(
+      b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
   // As the fans: blocks of triangles, each checked and listed, then one loop of plain
   // arithmetic that the compiler vectorises (checks fold into a 0/1 flag). The checks of a
   // block fold into flags too, tested once per block: loops with an early exit do not
-  // vectorise.
+  // vectorise. With spanLo and spanHi, also each block's least and largest welded id (see
+  // TaskChunks); b is then a multiple of SpanTriangles.
   template <typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
-    std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient) const
+    std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient, std::int32_t* spanLo,
+    std::int32_t* spanHi) const
   {
-    constexpr int Size = 128;
+    constexpr int Size = static_cast<int>(SpanTriangles);
     struct Columns
     {
       alignas(32) std::int32_t X[3][Size]; // offsets of the corners' coordinates
@@ -2331,6 +2384,17 @@ private:
       if (bad != 0)
       {
         return false;
+      }
+      if (spanLo)
+      {
+        std::int32_t lo = std::numeric_limits<std::int32_t>::max(), hi = 0;
+        for (int j = 0; j < 3 * m; ++j)
+        {
+          lo = std::min(lo, wb[j]);
+          hi = std::max(hi, wb[j]);
+        }
+        spanLo[t0 / Size] = lo;
+        spanHi[t0 / Size] = hi;
       }
       this->TriangleColumns(cb.X, cb.U, m, cb.Good, cb.Sign, cb.D);
       int good = 1;
@@ -2518,10 +2582,10 @@ private:
     return true;
   }
 
+  // Every vertex's fan from the global vertex lists (VertexCorners).
   bool Vertices(const std::int32_t* nextIds, const std::int32_t* prevIds,
     const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, const std::int32_t* weld,
-    const std::atomic<unsigned char>* referenced, float* out) const
+    const std::int32_t* corners, const std::int32_t* weld, float* out) const
   {
     std::atomic<bool> fail(false);
     vtkSMPTools::For(0, vtkIdType(this->NumberOfPoints),
@@ -2545,16 +2609,338 @@ private:
           fail.store(true, std::memory_order_relaxed);
         }
       });
-    if (fail)
+    return !fail;
+  }
+
+  // In the AVX-512 build, the vertices go in tasks of TaskVertices, each of which reads the
+  // chunks of SpanTriangles triangles that may have corners among its vertices (TaskChunks)
+  // in triangle order and copies its vertices' corners straight into its fans' slots
+  // (LocalSlots): no global vertex lists (VertexCorners: 36 MB written on the 1M torus, 13%
+  // of the cycles) and no copies from them into the slots (GatherSlots: half the fan pass).
+  // A task's slots (~400 kB on the torus) stay in the level-2 cache from their copy to the
+  // corner loop. Tasks of 1024 vertices took 2% more cycles on the torus (more chunks read
+  // twice), of 4096 1% fewer, for twice the slots.
+  static constexpr vtkIdType SpanTriangles = 128;
+  static constexpr std::int32_t TaskVertices = 2048;
+  // The tasks may read each chunk this many times on average (each read is two passes: the
+  // count and the copy); meshes whose welded ids are more scattered (a mesh numbered at
+  // random) use the global lists. The 1M torus: 1.5 times.
+  static constexpr vtkIdType MaxScans = 3;
+
+  // Per task, the chunks whose corners' least and largest welded ids (lo and hi, which are
+  // turned into task numbers) enclose some of its vertices, in increasing order (taskFirst:
+  // CSR starts). False if that is more than MaxScans chunks per chunk.
+  bool TaskChunks(std::vector<std::int32_t>& lo, std::vector<std::int32_t>& hi,
+    std::vector<std::int32_t>& taskFirst, std::vector<std::int32_t>& taskChunks) const
+  {
+    const vtkIdType nChunks = static_cast<vtkIdType>(lo.size());
+    const vtkIdType nTasks = (vtkIdType(this->NumberOfPoints) + TaskVertices - 1) / TaskVertices;
+    for (vtkIdType ch = 0; ch < nChunks; ++ch)
+    {
+      lo[ch] /= TaskVertices;
+      hi[ch] /= TaskVertices;
+    }
+    vtkIdType scans = 0;
+    for (vtkIdType ch = 0; ch < nChunks; ++ch)
+    {
+      scans += hi[ch] - lo[ch] + 1;
+    }
+    if (scans > MaxScans * nChunks)
     {
       return false;
     }
-    if (!this->Welded)
+    taskFirst.assign(static_cast<std::size_t>(nTasks) + 1, 0);
+    for (vtkIdType ch = 0; ch < nChunks; ++ch)
     {
-      return true;
+      for (std::int32_t t = lo[ch]; t <= hi[ch]; ++t)
+      {
+        ++taskFirst[t + 1];
+      }
     }
-    // Welded points share their vertex's frame if a polygon uses them; the frame of a point
-    // no polygon uses is the default one, as in the general path.
+    std::partial_sum(taskFirst.begin(), taskFirst.end(), taskFirst.begin());
+    std::vector<std::int32_t> cursor(taskFirst.begin(), taskFirst.end() - 1);
+    taskChunks.resize(static_cast<std::size_t>(scans));
+    for (vtkIdType ch = 0; ch < nChunks; ++ch)
+    {
+      for (std::int32_t t = lo[ch]; t <= hi[ch]; ++t)
+      {
+        taskChunks[cursor[t]++] = static_cast<std::int32_t>(ch);
+      }
+    }
+    return true;
+  }
+
+  // One task's counts, lanes and slots; kept per thread from task to task.
+  struct TaskSlots
+  {
+    // Per vertex x of the task: its number of corners (at [x + 1]), its next slot, the
+    // number of its corners of orientation 1.
+    std::vector<std::int32_t> Count, Cursor, Ones;
+    // The vertices with corners, one to a lane; per group of Lanes lanes its first slot and
+    // its largest fan.
+    std::vector<std::int32_t> Lane, GroupFirst, GroupSlots;
+    // The slots (see SlotBlock), each group's rows of corners one after the other, and in
+    // a row the eight arrays side by side (RowStride 8 Lanes): next ids at [c], previous
+    // ids at [c + Lanes], dP/ds and dP/dt at [c + (q + 2) Lanes]. A copy into a slot then
+    // writes eight values at constant offsets from one index, and a group's row is eight
+    // whole cache lines. Room for the largest task (2 MB or more: huge pages, from
+    // vtkSurfaceDetailMemory's cache at the next execution).
+    std::shared_ptr<Block<unsigned char>> Slots;
+  };
+  static constexpr std::size_t MaxTaskSlots =
+    8 * MaxFastFan * std::size_t(TaskVertices + SlotBlock<Real>::Lanes);
+
+  // A SlotBlock, and its first corners' directions for References, allocated by each task:
+  // the compiler then knows that they alias nothing else, and vectorises the loops over
+  // their lanes.
+  struct TaskBlock
+  {
+    SlotBlock<Real> Fans;
+    alignas(64) float FirstDir[6][SlotBlock<Real>::MaxVertices];
+  };
+
+  // The fans of the vertices [vb, ve) in the AVX-512 build, from the triangles of the chunks
+  // [cb, ce) of taskChunks (see TaskChunks). The task counts its vertices' corners, gives
+  // each vertex with corners a lane (in vertex order, as SlotFans does, but in one layout
+  // for the whole task), then copies each corner of its vertices, in triangle order (the
+  // order of VertexCorners' lists, so each fan's sums are SlotFans' to the bit), straight
+  // into its slot, reading the triangles' directions in their order. Then SlotFans' steps
+  // per block of SlotBlock's vertices. False if a check fails or a fan is too large.
+  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
+    const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
+  {
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    constexpr int RowStride = 8 * Lanes;
+    const std::uint32_t nv = static_cast<std::uint32_t>(ve - vb);
+    if (ts.Count.size() < nv + 1)
+    {
+      ts.Count.resize(nv + 1);
+      ts.Cursor.resize(nv);
+      ts.Ones.resize(nv);
+      ts.Lane.resize(nv);
+      ts.GroupFirst.resize(nv / Lanes + 2);
+      ts.GroupSlots.resize(nv / Lanes + 2);
+    }
+    std::int32_t* __restrict count = ts.Count.data();
+    std::fill_n(count, nv + 1, 0);
+    for (const std::int32_t* ch = cb; ch < ce; ++ch)
+    {
+      const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
+      for (vtkIdType c = 3 * t0; c < 3 * t1; ++c)
+      {
+        // A branch: the corners of other vertices come in runs, and counting them in one
+        // place would chain their increments through memory.
+        const std::uint32_t x = static_cast<std::uint32_t>(w[c] - vb);
+        if (x < nv)
+        {
+          ++count[x + 1];
+        }
+      }
+    }
+    std::int32_t* __restrict lane = ts.Lane.data();
+    std::int32_t* __restrict groupFirst = ts.GroupFirst.data();
+    std::int32_t* __restrict groupSlots = ts.GroupSlots.data();
+    std::int32_t* __restrict cursor = ts.Cursor.data();
+    int nl = 0;
+    for (std::uint32_t x = 0; x < nv; ++x)
+    {
+      const std::int32_t k = count[x + 1];
+      if (k > MaxFastFan)
+      {
+        return false;
+      }
+      const std::int32_t v = vb + static_cast<std::int32_t>(x);
+      if (k == 0)
+      {
+        if (!this->Welded || weld[v] == v) // else a copy of a smaller point, filled later
+        {
+          const double* u = this->UnitNormals + 3 * std::size_t(v);
+          FinalTangent(V3{ u[0], u[1], u[2] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 },
+            out + 4 * std::size_t(v));
+        }
+        continue;
+      }
+      if (nl % Lanes == 0)
+      {
+        groupSlots[nl / Lanes] = 0;
+      }
+      groupSlots[nl / Lanes] = std::max(groupSlots[nl / Lanes], k);
+      lane[nl++] = static_cast<std::int32_t>(x);
+    }
+    const int groups = (nl + Lanes - 1) / Lanes;
+    groupFirst[0] = 0;
+    for (int g = 0; g < groups; ++g)
+    {
+      groupFirst[g + 1] = groupFirst[g] + RowStride * groupSlots[g];
+    }
+    for (int j = 0; j < nl; ++j)
+    {
+      cursor[lane[j]] = groupFirst[j / Lanes] + j % Lanes;
+    }
+    if (!ts.Slots)
+    {
+      ts.Slots = std::make_shared<Block<unsigned char>>(MaxTaskSlots * sizeof(float));
+    }
+    std::int32_t* __restrict ids = reinterpret_cast<std::int32_t*>(ts.Slots->Get());
+    float* __restrict d = reinterpret_cast<float*>(ts.Slots->Get());
+    std::int32_t* __restrict ones = ts.Ones.data();
+    std::fill_n(ones, nv, 0);
+    for (const std::int32_t* ch = cb; ch < ce; ++ch)
+    {
+      const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
+      for (vtkIdType t = t0; t < t1; ++t)
+      {
+        const std::int32_t a = w[3 * t], b = w[3 * t + 1], c = w[3 * t + 2];
+        const std::array<float, 6> dt = dir[t];
+        const std::int32_t o = orient[t];
+        // The corner at id, whose next and previous points are n and p.
+        auto copy = [&](std::int32_t id, std::int32_t n, std::int32_t p)
+        {
+          const std::uint32_t x = static_cast<std::uint32_t>(id - vb);
+          if (x < nv)
+          {
+            const std::size_t slot = static_cast<std::size_t>(cursor[x]);
+            cursor[x] += RowStride;
+            ids[slot] = 3 * n;
+            ids[slot + Lanes] = 3 * p;
+            for (int q = 0; q < 6; ++q)
+            {
+              d[slot + (q + 2) * Lanes] = dt[q];
+            }
+            ones[x] += o;
+          }
+        };
+        copy(a, b, c);
+        copy(b, c, a);
+        copy(c, a, b);
+      }
+    }
+    std::unique_ptr<TaskBlock> block(new TaskBlock);
+    SlotBlock<Real>& fb = block->Fans;
+    fb.Next = ids;
+    fb.Prev = ids + Lanes;
+    for (int q = 0; q < 6; ++q)
+    {
+      fb.Dir[q] = d + (q + 2) * Lanes;
+    }
+    fb.RowStride = RowStride;
+    constexpr int MaxVertices = SlotBlock<Real>::MaxVertices;
+    for (int l0 = 0; l0 < nl; l0 += MaxVertices)
+    {
+      const int nb = std::min(MaxVertices, nl - l0);
+      for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
+      {
+        fb.GroupFirst[g] = groupFirst[l0 / Lanes + g];
+        fb.GroupSlots[g] = groupSlots[l0 / Lanes + g];
+      }
+      // Checks fold into a flag (loops with an early exit do not vectorise).
+      int bad = 0;
+      for (int j = 0; j < nb; ++j)
+      {
+        const std::int32_t x = lane[l0 + j], k = count[x + 1], o = ones[x];
+        fb.Vertex[j] = vb + x;
+        fb.K[j] = k;
+        fb.Handedness[j] = o != 0 ? 1.0f : -1.0f;
+        bad |= (o != 0) & (o != k);
+      }
+      const double* __restrict un = this->UnitNormals;
+      const PT* __restrict pts = this->P;
+      for (int j = 0; j < nb; ++j)
+      {
+        const std::size_t v = static_cast<std::size_t>(fb.Vertex[j]);
+        const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
+        bad |= !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
+        for (int q = 0; q < 3; ++q)
+        {
+          fb.NV[q][j] = u[q];
+          fb.NR[q][j] = static_cast<Real>(u[q]);
+          fb.Position[q][j] = Real(pts[3 * v + q]);
+        }
+      }
+      if (bad)
+      {
+        return false;
+      }
+      fb.NumberOfVertices = nb;
+      Pad(fb);
+      // Each lane's first corner; the lanes past the block's vertices repeat their group's
+      // first lane, as Pad made them.
+      float(*__restrict firstDir)[SlotBlock<Real>::MaxVertices] = block->FirstDir;
+      for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
+      {
+        for (int q = 0; q < 6; ++q)
+        {
+          std::copy_n(fb.Dir[q] + fb.GroupFirst[g], Lanes, firstDir[q] + Lanes * g);
+        }
+      }
+      ReferencesOf(
+        fb, (nb + Lanes - 1) & ~(Lanes - 1), [firstDir](int j, int q) { return firstDir[q][j]; });
+      // The fan's ids in corner order, as in VertexCorners' lists.
+      auto oneRun = [&](int j)
+      {
+        std::int32_t n[MaxFastFan + 8] = {}, p[MaxFastFan + 8] = {};
+        const int c0 = fb.GroupFirst[j / Lanes] + j % Lanes;
+        for (int a = 0; a < fb.K[j]; ++a)
+        {
+          n[a] = fb.Next[c0 + fb.RowStride * a] / 3;
+          p[a] = fb.Prev[c0 + fb.RowStride * a] / 3;
+        }
+        return FanIsOneRun<true>(n, p, fb.K[j]);
+      };
+      if (!this->WeighSlots(fb) || !SumSlots(fb, oneRun, out))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  SURFACEDETAIL_TARGET_AVX512 static bool LocalSlotsAVX512(const FastMikk& self,
+    const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce,
+    std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* weld, TaskSlots& ts, float* out)
+  {
+    return self.LocalSlots(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
+  }
+
+  // Every vertex's fan by tasks (LocalSlots), in the AVX-512 build.
+  bool LocalVertices(const std::int32_t* w, vtkIdType nTris,
+    const std::vector<std::int32_t>& taskFirst, const std::vector<std::int32_t>& taskChunks,
+    const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* weld,
+    float* out) const
+  {
+    std::atomic<bool> fail(false);
+    vtkSMPThreadLocal<TaskSlots> slots;
+    const vtkIdType nTasks = static_cast<vtkIdType>(taskFirst.size()) - 1;
+    vtkSMPTools::For(0, nTasks, 1,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        TaskSlots& ts = slots.Local();
+        const FlushSubnormals flush(std::is_same<Real, float>::value);
+        for (vtkIdType task = b; task < e; ++task)
+        {
+          if (fail.load(std::memory_order_relaxed))
+          {
+            return;
+          }
+          const std::int32_t vb = static_cast<std::int32_t>(task * TaskVertices);
+          const std::int32_t ve = std::min(this->NumberOfPoints, vb + TaskVertices);
+          if (!LocalSlotsAVX512(*this, w, nTris, taskChunks.data() + taskFirst[task],
+                taskChunks.data() + taskFirst[task + 1], vb, ve, dir, orient, weld, ts, out))
+          {
+            fail.store(true, std::memory_order_relaxed);
+          }
+        }
+      });
+    return !fail;
+  }
+
+  // Welded points share their vertex's frame if a polygon uses them; the frame of a point
+  // no polygon uses is the default one, as in the general path.
+  void CopyWelded(
+    const std::int32_t* weld, const std::atomic<unsigned char>* referenced, float* out) const
+  {
     auto unused = [&](std::int32_t p, float* t)
     {
       const V3 n = this->UnitNormal(p);
@@ -2590,7 +2976,6 @@ private:
           }
         }
       });
-    return true;
   }
 
   VTK_ALWAYS_INLINE V3 UnitNormal(std::int32_t v) const
@@ -2890,6 +3275,37 @@ private:
     }
   }
 
+  // The same from the directions dirOf(j, q), q < 6, of each vertex j's first triangle (the
+  // task-local slots: their own copies, read without gathers, which made this loop scalar).
+  template <typename BlockT, typename DirOf>
+  VTK_ALWAYS_INLINE static void ReferencesOf(BlockT& fb, int count, DirOf&& dirOf)
+  {
+    using RT = std::remove_reference_t<decltype(fb.R[0][0])>;
+    const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
+    double* __restrict good = fb.Good;
+    RT* __restrict r0x = fb.R[0], * __restrict r0y = fb.R[1], * __restrict r0z = fb.R[2];
+    RT* __restrict r1x = fb.R[3], * __restrict r1y = fb.R[4], * __restrict r1z = fb.R[5];
+    for (int j = 0; j < count; ++j)
+    {
+      const double x[3] = { dirOf(j, 0), dirOf(j, 1), dirOf(j, 2) },
+                   y[3] = { dirOf(j, 3), dirOf(j, 4), dirOf(j, 5) };
+      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
+      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
+      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
+      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
+      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+      r0x[j] = RT(ip * p[0]);
+      r0y[j] = RT(ip * p[1]);
+      r0z[j] = RT(ip * p[2]);
+      r1x[j] = RT(iq * q[0]);
+      r1y[j] = RT(iq * q[1]);
+      r1z[j] = RT(iq * q[2]);
+    }
+  }
+
   // Per vertex, the weighted sum of dP/ds projected (the projection of the sum): the sums
   // in corner order, then the rest in one loop over the block's vertices. A fan that the
   // closed-fan test (see FastTurn) does not show to be one run must pass FanIsOneRun: each
@@ -2989,7 +3405,9 @@ private:
   {
     using Block = SlotBlock<Real>;
     std::unique_ptr<Block> block(new Block);
+    std::unique_ptr<SlotStorage> storage(new SlotStorage);
     Block& fb = *block;
+    storage->Attach(fb);
     for (std::int32_t v = b; v < e;)
     {
       fb.NumberOfVertices = 0;
@@ -3014,7 +3432,12 @@ private:
       // The last group's lanes past the block's vertices too (Pad gave them copies).
       References(fb, dir,
         (fb.NumberOfVertices + SlotBlock<Real>::Lanes - 1) & ~(SlotBlock<Real>::Lanes - 1));
-      if (!this->WeighSlots(fb) || !SumSlots(fb, nextIds, prevIds, first, out))
+      auto oneRun = [&](int j)
+      {
+        const std::int32_t f = first[fb.Vertex[j]];
+        return FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]);
+      };
+      if (!this->WeighSlots(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
@@ -3110,8 +3533,8 @@ private:
       const int g = j / Lanes, i = j % Lanes, k = fb.K[j];
       for (int s = k; s < fb.GroupSlots[g]; ++s)
       {
-        const int c = fb.GroupFirst[g] + Lanes * s + i;
-        const int from = fb.GroupFirst[g] + (k > 0 ? Lanes * (k - 1) + i : Lanes * s);
+        const int c = fb.GroupFirst[g] + fb.RowStride * s + i;
+        const int from = fb.GroupFirst[g] + (k > 0 ? fb.RowStride * (k - 1) + i : fb.RowStride * s);
         fb.Next[c] = fb.Next[from];
         fb.Prev[c] = fb.Prev[from];
         for (int x = 0; x < 6; ++x)
@@ -3140,10 +3563,11 @@ private:
       const Real* __restrict nx = fb.NR[0] + j0, * __restrict ny = fb.NR[1] + j0, * __restrict nz = fb.NR[2] + j0;
       const Real* __restrict r0x = fb.R[0] + j0, * __restrict r0y = fb.R[1] + j0, * __restrict r0z = fb.R[2] + j0;
       const Real* __restrict r1x = fb.R[3] + j0, * __restrict r1y = fb.R[4] + j0, * __restrict r1z = fb.R[5] + j0;
-      Real* __restrict sx = fb.S[0] + j0, * __restrict sy = fb.S[1] + j0, * __restrict sz = fb.S[2] + j0;
-      Real* __restrict turns = fb.Turns + j0;
-      std::uint64_t* __restrict cycles = fb.Cycles + j0;
-      std::int32_t* __restrict ok = fb.Within + j0;
+      // The sums in local arrays (in registers): the compiler then knows that they alias
+      // none of the values read, wherever the slots are (a task's slots: see LocalSlots).
+      alignas(64) Real sx[Lanes], sy[Lanes], sz[Lanes], turns[Lanes];
+      alignas(64) std::uint64_t cycles[Lanes];
+      alignas(64) std::int32_t ok[Lanes];
       // One array at a time, whole vectors: stores of single lanes would stall the loads
       // of the loop below (no store forwarding from several stores to one load).
       std::fill_n(sx, Lanes, Real(0));
@@ -3154,7 +3578,7 @@ private:
       std::fill_n(ok, Lanes, 1);
       for (int s = 0; s < fb.GroupSlots[g]; ++s)
       {
-        const int c0 = fb.GroupFirst[g] + Lanes * s;
+        const int c0 = fb.GroupFirst[g] + fb.RowStride * s;
         const std::int32_t* __restrict next = fb.Next + c0, * __restrict prev = fb.Prev + c0;
         const float* __restrict dsx = fb.Dir[0] + c0, * __restrict dsy = fb.Dir[1] + c0, * __restrict dsz = fb.Dir[2] + c0;
         const float* __restrict dtx = fb.Dir[3] + c0, * __restrict dty = fb.Dir[4] + c0, * __restrict dtz = fb.Dir[5] + c0;
@@ -3183,6 +3607,11 @@ private:
           sz[i] = live ? sz[i] + weight * osz : sz[i];
         }
       }
+      std::copy_n(sx, Lanes, fb.S[0] + j0);
+      std::copy_n(sy, Lanes, fb.S[1] + j0);
+      std::copy_n(sz, Lanes, fb.S[2] + j0);
+      std::copy_n(turns, Lanes, fb.Turns + j0);
+      std::copy_n(cycles, Lanes, fb.Cycles + j0);
       for (int i = 0; i < Lanes; ++i)
       {
         within &= ok[i];
@@ -3196,8 +3625,9 @@ private:
   // not show to be one run must pass FanIsOneRun: each edge at v joins exactly two
   // triangles or bounds the fan (then the general path's greedy pairing finds the same
   // links), and the links chain all the triangles into one run.
-  VTK_ALWAYS_INLINE static bool SumSlots(SlotBlock<Real>& fb, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const std::int32_t* first, float* out)
+  // OneRun(j): whether FanIsOneRun holds for lane j's fan.
+  template <typename OneRun>
+  VTK_ALWAYS_INLINE static bool SumSlots(SlotBlock<Real>& fb, OneRun&& oneRun, float* out)
   {
     const int nv = fb.NumberOfVertices;
     const double* __restrict nx = fb.NV[0], * __restrict ny = fb.NV[1], * __restrict nz = fb.NV[2];
@@ -3232,13 +3662,9 @@ private:
       {
         return false;
       }
-      if (!fb.Closed[j])
+      if (!fb.Closed[j] && !oneRun(j))
       {
-        const std::int32_t f = first[fb.Vertex[j]];
-        if (!FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]))
-        {
-          return false;
-        }
+        return false;
       }
       float* o = out + 4 * std::size_t(fb.Vertex[j]);
       o[0] = fb.Tangent[0][j];

@@ -349,6 +349,95 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
 
 namespace
 {
+// The same surface with its points numbered at random (Fisher-Yates, fixed seed): point i
+// of the input is point newId[i] of the output.
+vtkSmartPointer<vtkPolyData> Renumber(vtkPolyData* in, std::vector<vtkIdType>& newId)
+{
+  const vtkIdType n = in->GetNumberOfPoints();
+  newId.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    newId[i] = i;
+  }
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(4711);
+  for (vtkIdType i = n - 1; i > 0; --i)
+  {
+    random->Next();
+    const vtkIdType j = std::min(i, static_cast<vtkIdType>(random->GetValue() * (i + 1)));
+    std::swap(newId[i], newId[j]);
+  }
+  vtkNew<vtkIdList> source;
+  source->SetNumberOfIds(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    source->SetId(newId[i], i);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(in->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(n);
+  in->GetPoints()->GetData()->GetTuples(source, points->GetData());
+  out->SetPoints(points);
+  out->GetPointData()->CopyAllocate(in->GetPointData(), n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    out->GetPointData()->CopyData(in->GetPointData(), source->GetId(i), i);
+  }
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < in->GetNumberOfPolys(); ++c)
+  {
+    in->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      ids->SetId(k, newId[ids->GetId(k)]);
+    }
+    polys->InsertNextCell(ids);
+  }
+  out->SetPolys(polys);
+  return out;
+}
+} // namespace
+
+// In the AVX-512 build the fast path builds its vertex lists task by task, each task from
+// the triangles whose points' ids come near its own; a mesh whose points are numbered at
+// random (every run of triangles spans almost all ids) takes the global vertex lists
+// instead. Each point's frame depends only on its fan (its corners in triangle order), not
+// on the numbering, so both must give every point the same bits, at any thread count (and
+// in every build: this test runs in the -avx2 and -baseline runs too).
+TEST(vtkMikkTSpaceTangents, FastPathRenumberedPointsSameFrames)
+{
+  auto torus = MakeTorus(300, 150);
+  std::vector<vtkIdType> newId;
+  auto renumbered = Renumber(torus, newId);
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    FilterRun a(torus);
+    FilterRun b(renumbered);
+    EXPECT_EQ(a.Errors->Count + b.Errors->Count + a.Warnings->Count + b.Warnings->Count, 0);
+    auto* ta = vtkFloatArray::SafeDownCast(a.Output()->GetPointData()->GetArray("Tangents"));
+    auto* tb = vtkFloatArray::SafeDownCast(b.Output()->GetPointData()->GetArray("Tangents"));
+    ASSERT_NE(ta, nullptr);
+    ASSERT_NE(tb, nullptr);
+    ASSERT_EQ(ta->GetNumberOfTuples(), torus->GetNumberOfPoints());
+    ASSERT_EQ(tb->GetNumberOfTuples(), torus->GetNumberOfPoints());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+    {
+      differ +=
+        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
+        ? 1
+        : 0;
+    }
+    EXPECT_EQ(differ, 0) << threads << " threads";
+  }
+  vtkSMPTools::Initialize(0);
+}
+
+namespace
+{
 // The tangents of the fast path's test meshes, end to end: single and double precision,
 // welded (every vertex a fan of six) and unwelded (the weld's hash finds the twins).
 std::vector<float> FastPathTangents()
