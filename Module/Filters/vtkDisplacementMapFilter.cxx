@@ -2424,8 +2424,19 @@ struct MeshPolygonNormalWorker
     double* out = this->CellNormals + 3 * begin;
     for (vtkIdType cell = begin; cell < end; ++cell, out += 3)
     {
-      OrientedNormal<SignKnown>(moved, points, normals, conn + offsets[cell],
-        offsets[cell + 1] - offsets[cell], signs[cell], out);
+      const vtkIdType n = offsets[cell + 1] - offsets[cell];
+      if (n == 0)
+      {
+        // No corner to read (the last polygon's would be past the connectivity's end): no
+        // normal, the orientation OrientedNormal gives polygons of one or two points.
+        out[0] = out[1] = out[2] = 0.0;
+        if (!SignKnown)
+        {
+          signs[cell] = 1;
+        }
+        continue;
+      }
+      OrientedNormal<SignKnown>(moved, points, normals, conn + offsets[cell], n, signs[cell], out);
     }
   }
 
@@ -2638,8 +2649,10 @@ struct MeshScatterNormalWorker : BlockOps<R, L>
     const Double4 v4 = { v[0], v[1], v[2], 0.0 };
     for (vtkIdType k = 0; k < n; ++k)
     {
+      // Tested even where the spans say every corner is the task's (Within): a connectivity changed
+      // in place without Modified() must not make the task write outside its sums.
       const std::uint64_t j = static_cast<std::uint64_t>(ids[k] - pb);
-      if (Within || j < width)
+      if (j < width)
       {
         Add(sums, j, v4);
       }
