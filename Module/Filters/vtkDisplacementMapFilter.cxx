@@ -2476,31 +2476,59 @@ struct MeshPolygonNormalWorker
   }
 };
 
-// Each point's normal: the sum of its polygons' in increasing polygon order (in double), then
-// normalised and its tangent re-orthogonalised in blocks (BlockOps: with double lanes
-// WriteNormalAndTangent's bits; with float lanes, flagged points redone by it).
+// Mesh normals' last step, shared by both ways of making the sums: each point's normal from the sum
+// of its polygons' normals (in double), normalised and its tangent re-orthogonalised in blocks
+// (BlockOps: with double lanes WriteNormalAndTangent's bits; with float lanes, flagged points
+// redone by it).
 template <typename R, typename L = R>
-struct MeshPointNormalWorker : BlockOps<R, L>
+struct MeshNormalBlocks : BlockOps<R, L>
 {
   using Base = BlockOps<R, L>;
   using Base::Block;
   using Base::Float;
   using typename Base::Flags;
   using typename Base::Lanes;
-  const double* CellNormals;
 
-  VTK_ALWAYS_INLINE void Sum(vtkIdType i, double sum[3]) const
+  // The points [first, first + count) (count <= Block), their sums in @a sums (4 doubles a point,
+  // the last unused).
+  VTK_ALWAYS_INLINE void FinishBlock(vtkIdType first, int count, const double* sums) const
   {
-    const PolyLinks& mesh = *this->C.Polys;
-    sum[0] = sum[1] = sum[2] = 0.0;
-    for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
+    alignas(64) Lanes n[3], fallback[3], m[3], x[4];
+    alignas(64) Flags redo;
+    for (int k = 0; k < count; ++k)
     {
-      const double* p = this->CellNormals + 3 * mesh.Links[l];
-      sum[0] += p[0];
-      sum[1] += p[1];
-      sum[2] += p[2];
+      m[0][k] = ToReal<L>(sums[4 * k]);
+      m[1][k] = ToReal<L>(sums[4 * k + 1]);
+      m[2][k] = ToReal<L>(sums[4 * k + 2]);
+    }
+    this->UnitNormals(first, count, n, fallback, redo);
+    this->Normals(first, count, fallback, m, redo);
+    this->OutputTangents(first, count, m, x, redo);
+    if constexpr (Float)
+    {
+      if (Base::Any(count, redo))
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          if (redo[k])
+          {
+            double redone[3] = { sums[4 * k], sums[4 * k + 1], sums[4 * k + 2] };
+            WriteNormalAndTangent(this->C, first + k, redone);
+          }
+        }
+      }
     }
   }
+};
+
+// Each point's normal: the sum of its polygons' in increasing polygon order (in double), gathered
+// through the links a block at a time, then MeshNormalBlocks's step.
+template <typename R, typename L = R>
+struct MeshPointNormalWorker : MeshNormalBlocks<R, L>
+{
+  using Base = MeshNormalBlocks<R, L>;
+  using Base::Block;
+  const double* CellNormals;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
@@ -2509,38 +2537,27 @@ struct MeshPointNormalWorker : BlockOps<R, L>
 
   VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
   {
-    const Context<R>& c = this->C;
-    alignas(64) Lanes n[3], fallback[3], m[3], x[4];
-    alignas(64) Flags redo;
+    const PolyLinks& mesh = *this->C.Polys;
+    alignas(64) double sums[4 * Block];
     for (vtkIdType first = begin; first < end; first += Block)
     {
       const int count = static_cast<int>(std::min<vtkIdType>(end - first, Block));
       for (int k = 0; k < count; ++k)
       {
-        double sum[3];
-        this->Sum(first + k, sum);
-        m[0][k] = ToReal<L>(sum[0]);
-        m[1][k] = ToReal<L>(sum[1]);
-        m[2][k] = ToReal<L>(sum[2]);
-      }
-      this->UnitNormals(first, count, n, fallback, redo);
-      this->Normals(first, count, fallback, m, redo);
-      this->OutputTangents(first, count, m, x, redo);
-      if constexpr (Float)
-      {
-        if (Base::Any(count, redo))
+        const vtkIdType i = first + k;
+        double x = 0.0, y = 0.0, z = 0.0;
+        for (vtkIdType l = mesh.LinkOffsets[i]; l < mesh.LinkOffsets[i + 1]; ++l)
         {
-          for (int k = 0; k < count; ++k)
-          {
-            if (redo[k])
-            {
-              double sum[3];
-              this->Sum(first + k, sum);
-              WriteNormalAndTangent(c, first + k, sum);
-            }
-          }
+          const double* p = this->CellNormals + 3 * mesh.Links[l];
+          x += p[0];
+          y += p[1];
+          z += p[2];
         }
+        sums[4 * k] = x;
+        sums[4 * k + 1] = y;
+        sums[4 * k + 2] = z;
       }
+      this->FinishBlock(first, count, sums);
     }
   }
 };
@@ -2548,18 +2565,15 @@ struct MeshPointNormalWorker : BlockOps<R, L>
 // Mesh normals without links: a task of the points [pb, pe) (TaskSize of them) adds the oriented
 // normals of the polygons with a corner among its points (ForCellsTouching: in increasing polygon
 // order) to those corners' sums, held by the task (in cache), then writes its points' normals and
-// tangents in blocks as MeshPointNormalWorker does. Each point's sum is made by one task in
-// polygon order, as MeshPointNormalWorker's gather makes it: the same bits, at any thread count.
+// tangents in blocks (MeshNormalBlocks). Each point's sum is made by one task in polygon order, as
+// MeshPointNormalWorker's gather makes it: the same bits, at any thread count.
 // Polygons with corners in two tasks are computed by both; an orientation found on a first
 // execution is stored by the task that owns the polygon's first corner alone.
 template <typename R, typename L = R>
-struct MeshScatterNormalWorker : BlockOps<R, L>
+struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
 {
-  using Base = BlockOps<R, L>;
+  using Base = MeshNormalBlocks<R, L>;
   using Base::Block;
-  using Base::Float;
-  using typename Base::Flags;
-  using typename Base::Lanes;
   // The points of a task (a multiple of Block): the polygons around a task's two ends, about two
   // rows of a usual mesh, are computed by both tasks (1414-point rows, the 1M-point torus: about
   // 9% more polygons with 16384 points a task, 2% with 65536, which the cycles show), so large
@@ -2713,8 +2727,6 @@ struct MeshScatterNormalWorker : BlockOps<R, L>
     const Context<R>& c = this->C;
     std::fill_n(sums, 4 * (pe - pb), 0.0);
     this->template AddPolygons<SignKnown>(pb, pe, sums);
-    alignas(64) Lanes n[3], fallback[3], m[3], x[4];
-    alignas(64) Flags redo;
     for (vtkIdType first = pb; first < pe; first += Block)
     {
       const int count = static_cast<int>(std::min<vtkIdType>(pe - first, Block));
@@ -2729,30 +2741,7 @@ struct MeshScatterNormalWorker : BlockOps<R, L>
         Base::template PrefetchTuples<true>(c.OutNormals, next, nextCount);
         Base::template PrefetchTuples<true>(c.OutTangents, next, nextCount);
       }
-      const double* sum = sums + 4 * (first - pb);
-      for (int k = 0; k < count; ++k)
-      {
-        m[0][k] = ToReal<L>(sum[4 * k]);
-        m[1][k] = ToReal<L>(sum[4 * k + 1]);
-        m[2][k] = ToReal<L>(sum[4 * k + 2]);
-      }
-      this->UnitNormals(first, count, n, fallback, redo);
-      this->Normals(first, count, fallback, m, redo);
-      this->OutputTangents(first, count, m, x, redo);
-      if constexpr (Float)
-      {
-        if (Base::Any(count, redo))
-        {
-          for (int k = 0; k < count; ++k)
-          {
-            if (redo[k])
-            {
-              double redone[3] = { sum[4 * k], sum[4 * k + 1], sum[4 * k + 2] };
-              WriteNormalAndTangent(c, first + k, redone);
-            }
-          }
-        }
-      }
+      this->FinishBlock(first, count, sums + 4 * (first - pb));
     }
   }
 };
