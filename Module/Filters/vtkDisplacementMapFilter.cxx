@@ -3072,6 +3072,41 @@ void EstimateDerivativeScale(
 // large ones in chunks big enough to amortise the scheduling.
 constexpr vtkIdType Grain = 16384;
 
+// Exact's Context::FitNormals: each point's input normal made unit with FastNormalize's operations
+// (a zero, infinite or NaN length leaves it as it is), and its s. Branch-free, so that the loop
+// vectorises: square roots and divisions are exact per lane, the bits are FastNormalize's.
+template <typename R>
+struct FitNormalsWorker
+{
+  const ArrayReader<R>& Normals;
+  const ArrayReader<R>& TCoords;
+  double* Out;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    vtkSurfaceDetailVectorize::RunWidest(*this, begin, end);
+  }
+
+  VTK_ALWAYS_INLINE void Run(vtkIdType begin, vtkIdType end) const
+  {
+    const R* __restrict n = this->Normals.P;
+    const R* __restrict tc = this->TCoords.P;
+    const vtkIdType tnc = this->TCoords.NC;
+    double* __restrict out = this->Out;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const double v[3] = { n[3 * i], n[3 * i + 1], n[3 * i + 2] };
+      const double len = std::sqrt(Dot(v, v));
+      const bool scale = (len > 0.0) & (len < std::numeric_limits<double>::infinity());
+      const double inv = 1.0 / len;
+      out[4 * i] = scale ? v[0] * inv : v[0];
+      out[4 * i + 1] = scale ? v[1] * inv : v[1];
+      out[4 * i + 2] = scale ? v[2] * inv : v[2];
+      out[4 * i + 3] = tc[tnc * i];
+    }
+  }
+};
+
 template <typename T>
 vtkIdType CountNonFinite(const Texels<T>& tex)
 {
@@ -3578,17 +3613,7 @@ int vtkDisplacementMapFilter::RequestData(
       {
         cache.HaveFitNormals = false;
         fitNormals.Resize(4 * static_cast<size_t>(numPts));
-        vtkSMPTools::For(0, numPts, Grain,
-          [&](vtkIdType begin, vtkIdType end)
-          {
-            for (vtkIdType i = begin; i < end; ++i)
-            {
-              double* n = fitNormals.data() + 4 * i;
-              nrm.Get3(i, n);
-              FastNormalize(n);
-              n[3] = tc.Get(i, 0);
-            }
-          });
+        vtkSMPTools::For(0, numPts, Grain, FitNormalsWorker<R>{ nrm, tc, fitNormals.data() });
         cache.NormalsKey = normalsKey;
         cache.NormalsTime.Modified();
         cache.HaveFitNormals = true;
