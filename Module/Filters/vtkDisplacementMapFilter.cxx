@@ -607,8 +607,9 @@ VTK_ALWAYS_INLINE bool InRange(vtkIdType id, vtkIdType pb, std::uint64_t width)
   return static_cast<std::uint64_t>(id - pb) < width;
 }
 
-// Calls body(cell) for every polygon of @a mesh with a corner in [pb, pe), in increasing id order
-// (a polygon with several corners there, once).
+// Calls body(cell, end) for every polygon of @a mesh with a corner in [pb, pe), in increasing id
+// order (a polygon with several corners there, once). The body returns how many polygons it did
+// (more than one: it did the next ones, before @a end, too, whether they touch the range or not).
 template <typename Body>
 VTK_ALWAYS_INLINE void ForCellsTouching(
   const PolyLinks& mesh, const CellSpans& spans, vtkIdType pb, vtkIdType pe, Body&& body)
@@ -629,16 +630,13 @@ VTK_ALWAYS_INLINE void ForCellsTouching(
     if (spans.Within(c, pb, pe))
     {
       // Every corner inside: every polygon with a corner.
-      for (vtkIdType cell = cb; cell < ce; ++cell)
+      for (vtkIdType cell = cb; cell < ce;)
       {
-        if (offsets[cell + 1] > offsets[cell])
-        {
-          body(cell);
-        }
+        cell += offsets[cell + 1] > offsets[cell] ? body(cell, ce) : 1;
       }
       continue;
     }
-    for (vtkIdType cell = cb; cell < ce; ++cell)
+    for (vtkIdType cell = cb; cell < ce;)
     {
       const vtkIdType b = offsets[cell], e = offsets[cell + 1];
       bool touches;
@@ -655,10 +653,7 @@ VTK_ALWAYS_INLINE void ForCellsTouching(
           touches |= InRange(conn[k], pb, width);
         }
       }
-      if (touches)
-      {
-        body(cell);
-      }
+      cell += touches ? body(cell, ce) : 1;
     }
   }
 }
@@ -957,14 +952,6 @@ inline int FitRecordSize(bool wantP, bool wantN)
   return (wantP ? 10 : 0) + (wantN ? 8 : 0) + 1;
 }
 
-VTK_ALWAYS_INLINE void AddTo(double* sum, const Double4& v)
-{
-  Double4 a;
-  std::memcpy(&a, sum, sizeof(a));
-  a += v;
-  std::memcpy(sum, &a, sizeof(a));
-}
-
 // ForCellsTouching's body: adds each polygon's terms to the records of its corners in
 // [First, First + Width) (@a Sums holds First's record, then the next points').
 template <bool WantP, bool WantN, typename R>
@@ -1022,50 +1009,42 @@ struct AddFitTerms
     }
   }
 
-  static VTK_ALWAYS_INLINE void Add(double* r, const Terms& u)
+  // Each of @a terms added to record @a r in turn, the record read and written once.
+  template <typename... T>
+  static VTK_ALWAYS_INLINE void AddAll(double* r, const T&... terms)
   {
-    if (WantP)
-    {
-      AddTo(r + Rec::P, u.BsP);
-      AddTo(r + Rec::P + 4, u.BtP);
-      r[Rec::Near] = std::min(r[Rec::Near], u.D2);
-      r[Rec::Far] = std::max(r[Rec::Far], u.D2);
-    }
-    if (WantN)
-    {
-      AddTo(r + Rec::N, u.BsN);
-      AddTo(r + Rec::N + 4, u.BtN);
-    }
-    r[Rec::Dt2] += u.Dt2;
-  }
-
-  // Add(r, u) then Add(r, v), the record read and written once.
-  static VTK_ALWAYS_INLINE void Add2(double* r, const Terms& u, const Terms& v)
-  {
-    auto add = [](double* sum, const Double4& a, const Double4& b)
+    auto add = [](double* sum, const auto&... v)
     {
       Double4 x;
       std::memcpy(&x, sum, sizeof(x));
-      x += a;
-      x += b;
+      ((x += v), ...);
       std::memcpy(sum, &x, sizeof(x));
     };
     if (WantP)
     {
-      add(r + Rec::P, u.BsP, v.BsP);
-      add(r + Rec::P + 4, u.BtP, v.BtP);
-      r[Rec::Near] = std::min(std::min(r[Rec::Near], u.D2), v.D2);
-      r[Rec::Far] = std::max(std::max(r[Rec::Far], u.D2), v.D2);
+      add(r + Rec::P, terms.BsP...);
+      add(r + Rec::P + 4, terms.BtP...);
+      double near = r[Rec::Near], far = r[Rec::Far];
+      ((near = std::min(near, terms.D2)), ...);
+      ((far = std::max(far, terms.D2)), ...);
+      r[Rec::Near] = near;
+      r[Rec::Far] = far;
     }
     if (WantN)
     {
-      add(r + Rec::N, u.BsN, v.BsN);
-      add(r + Rec::N + 4, u.BtN, v.BtN);
+      add(r + Rec::N, terms.BsN...);
+      add(r + Rec::N + 4, terms.BtN...);
     }
-    r[Rec::Dt2] = (r[Rec::Dt2] + u.Dt2) + v.Dt2;
+    double dt2 = r[Rec::Dt2];
+    ((dt2 += terms.Dt2), ...);
+    r[Rec::Dt2] = dt2;
   }
 
-  VTK_ALWAYS_INLINE void operator()(vtkIdType cell) const
+  // Adds polygon @a cell's terms, or those of @a cell and the next one (before @a end) where they
+  // are a fan's two triangles (a, b, d), (a, d, c), as quads split into triangles are: their
+  // shared pair's terms made once, and each record of a shared corner read and written once (the
+  // same additions in the same order). Returns the number of polygons done.
+  VTK_ALWAYS_INLINE vtkIdType operator()(vtkIdType cell, vtkIdType end) const
   {
     const vtkIdType b = this->Offsets[cell], n = this->Offsets[cell + 1] - b;
     const vtkIdType* ids = this->Conn + b;
@@ -1083,19 +1062,49 @@ struct AddFitTerms
         this->Make(i0, i1, u01);
         this->Make(i0, i2, u02);
         this->Make(i1, i2, u12);
+        if (cell + 1 < end && this->Offsets[cell + 2] - this->Offsets[cell + 1] == 3)
+        {
+          // The next triangle (i0, i2, i3): its pair (i0, i2) is this one's.
+          const vtkIdType* next = this->Conn + this->Offsets[cell + 1];
+          const vtkIdType i3 = next[2];
+          if ((next[0] == i0) & (next[1] == i2) & (i3 != i0) & (i3 != i1) & (i3 != i2))
+          {
+            const std::uint64_t k3 = static_cast<std::uint64_t>(i3 - this->First);
+            Terms u03, u23;
+            this->Make(i0, i3, u03);
+            this->Make(i2, i3, u23);
+            if (k0 < this->Width)
+            {
+              AddAll(this->Sums + Rec::Size * k0, u01, u02, u02, u03);
+            }
+            if (k1 < this->Width)
+            {
+              AddAll(this->Sums + Rec::Size * k1, u01, u12);
+            }
+            if (k2 < this->Width)
+            {
+              AddAll(this->Sums + Rec::Size * k2, u02, u12, u02, u23);
+            }
+            if (k3 < this->Width)
+            {
+              AddAll(this->Sums + Rec::Size * k3, u03, u23);
+            }
+            return 2;
+          }
+        }
         if (k0 < this->Width)
         {
-          Add2(this->Sums + Rec::Size * k0, u01, u02);
+          AddAll(this->Sums + Rec::Size * k0, u01, u02);
         }
         if (k1 < this->Width)
         {
-          Add2(this->Sums + Rec::Size * k1, u01, u12);
+          AddAll(this->Sums + Rec::Size * k1, u01, u12);
         }
         if (k2 < this->Width)
         {
-          Add2(this->Sums + Rec::Size * k2, u02, u12);
+          AddAll(this->Sums + Rec::Size * k2, u02, u12);
         }
-        return;
+        return 1;
       }
     }
     // Any polygon: each corner in the range (a point named twice, twice, as its links list the
@@ -1116,10 +1125,11 @@ struct AddFitTerms
         {
           Terms u;
           this->Make(i, j, u);
-          Add(r, u);
+          AddAll(r, u);
         }
       }
     }
+    return 1;
   }
 };
 
