@@ -4,6 +4,7 @@
 
 #include "DisplacementTestSurfaces.h"
 #include "EveryBuildTestHelpers.h"
+#include "RenumberedPointsTestHelpers.h"
 
 #include "vtkDisplacementMapFilter.h"
 
@@ -13,6 +14,7 @@
 #include <vtkExecutive.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -40,6 +42,11 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#ifdef __linux__
+#include <sys/mman.h> // mmap, a guard page after a connectivity array
+#include <unistd.h>   // sysconf
+#endif
 
 using namespace DisplacementTest;
 
@@ -1921,63 +1928,6 @@ vtkSmartPointer<vtkPolyData> MeshWithRedonePoints(
 
 namespace
 {
-// @a mesh with its points renumbered: point i becomes perm[i] (a random permutation), its point
-// data with it, the polygons in the same order.
-vtkSmartPointer<vtkPolyData> Renumbered(vtkPolyData* mesh, std::vector<vtkIdType>& perm)
-{
-  const vtkIdType count = mesh->GetNumberOfPoints();
-  perm.resize(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    perm[i] = i;
-  }
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(5);
-  for (vtkIdType i = count - 1; i > 0; --i)
-  {
-    random->Next();
-    const vtkIdType j = std::min(i, static_cast<vtkIdType>(random->GetValue() * (i + 1)));
-    std::swap(perm[i], perm[j]);
-  }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(mesh->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    points->SetPoint(perm[i], mesh->GetPoint(i));
-  }
-  out->SetPoints(points);
-  vtkPointData* pd = mesh->GetPointData();
-  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* src = pd->GetArray(a);
-    vtkSmartPointer<vtkDataArray> dst;
-    dst.TakeReference(src->NewInstance());
-    dst->SetName(src->GetName());
-    dst->SetNumberOfComponents(src->GetNumberOfComponents());
-    dst->SetNumberOfTuples(count);
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      dst->SetTuple(perm[i], i, src);
-    }
-    AddInSameRole(pd, src, out->GetPointData(), dst);
-  }
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-  {
-    mesh->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      ids->SetId(k, perm[ids->GetId(k)]);
-    }
-    polys->InsertNextCell(ids);
-  }
-  out->SetPolys(polys);
-  return out;
-}
-
 // @a mesh (MakeMesh's triangle pairs) as quads.
 vtkSmartPointer<vtkPolyData> AsQuads(vtkPolyData* mesh)
 {
@@ -2035,8 +1985,8 @@ TEST(DisplacementMapFilter, MeshNormalsDoNotDependOnPointNumbering)
       {
         mesh = AsQuads(mesh);
       }
-      std::vector<vtkIdType> perm;
-      auto renumbered = Renumbered(mesh, perm);
+      const std::vector<vtkIdType> perm = RenumberedPoints::RandomIds(mesh->GetNumberOfPoints(), 5);
+      auto renumbered = RenumberedPoints::Moved(mesh, perm, mesh->GetNumberOfPoints());
       std::vector<vtkSmartPointer<vtkPolyData>> outputs;
       for (int threads : { 1, 2 })
       {
@@ -2093,6 +2043,79 @@ TEST(DisplacementMapFilter, MeshNormalsDoNotDependOnPointNumbering)
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+#ifdef __linux__
+// Point ids too scattered for the cell spans send Mesh normals and the fits through the point
+// links, which visit the polygons one at a time. A polygon with no points, last in the list,
+// must not be read: its connectivity ends where the memory does (a guard page after it), and
+// an empty polygon adds nothing, so every output is the same without it, bit for bit.
+TEST(DisplacementMapFilter, EmptyLastPolygonNotReadThroughLinks)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  auto grid = MakeMesh(s, 256, 128, false, true);
+  auto mesh = RenumberedPoints::Moved(
+    grid, RenumberedPoints::RandomIds(grid->GetNumberOfPoints(), 9), grid->GetNumberOfPoints());
+  vtkDataArray* offsets = mesh->GetPolys()->GetOffsetsArray();
+  vtkDataArray* connectivity = mesh->GetPolys()->GetConnectivityArray();
+  const vtkIdType nCells = mesh->GetPolys()->GetNumberOfCells();
+  const vtkIdType nConn = connectivity->GetNumberOfValues();
+  const size_t page = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  const size_t bytes = (nConn * sizeof(vtkIdType) + page - 1) / page * page;
+  void* memory =
+    mmap(nullptr, bytes + page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  ASSERT_NE(memory, MAP_FAILED);
+  ASSERT_EQ(mprotect(static_cast<char*>(memory) + bytes, page, PROT_NONE), 0);
+  {
+    vtkIdType* conn = reinterpret_cast<vtkIdType*>(static_cast<char*>(memory) + bytes) - nConn;
+    for (vtkIdType k = 0; k < nConn; ++k)
+    {
+      conn[k] = static_cast<vtkIdType>(connectivity->GetComponent(k, 0));
+    }
+    vtkNew<vtkIdTypeArray> guardedOffsets, guardedConn;
+    guardedOffsets->SetNumberOfValues(nCells + 2);
+    for (vtkIdType c = 0; c <= nCells; ++c)
+    {
+      guardedOffsets->SetValue(c, static_cast<vtkIdType>(offsets->GetComponent(c, 0)));
+    }
+    guardedOffsets->SetValue(nCells + 1, nConn); // the empty polygon
+    guardedConn->SetArray(conn, nConn, 1);
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(guardedOffsets, guardedConn);
+    vtkNew<vtkPolyData> withEmpty;
+    withEmpty->ShallowCopy(mesh);
+    withEmpty->SetPolys(polys);
+    for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
+           vtkDisplacementMapFilter::Mesh })
+    {
+      vtkNew<vtkDisplacementMapFilter> a, b;
+      for (vtkDisplacementMapFilter* f : { a.Get(), b.Get() })
+      {
+        f->SetInputData(0, f == a.Get() ? mesh.Get() : withEmpty.Get());
+        f->SetInputData(1, image);
+        f->SetNormalMode(mode);
+        f->SetScale(0.1);
+        f->Update();
+      }
+      EXPECT_TRUE(ThroughLinks(b));
+      for (const char* name : { "", "Normals", "Tangents" })
+      {
+        vtkPolyData* x = a->GetOutput();
+        vtkPolyData* y = b->GetOutput();
+        vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
+        vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
+        ASSERT_TRUE(u && v) << name << " mode " << mode;
+        ASSERT_EQ(u->GetNumberOfValues(), v->GetNumberOfValues());
+        EXPECT_EQ(0,
+          std::memcmp(u->GetVoidPointer(0), v->GetVoidPointer(0),
+            static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfValues()))
+          << (*name ? name : "Points") << " mode " << mode;
+      }
+    }
+  }
+  munmap(memory, bytes + page);
+}
+#endif
+
 // Each point's result depends on its own data and neighbours alone, not on where it falls in a
 // block of the lanes (nor on the block's other points, some of them redone in double lanes): one
 // unused point put first shifts every point by one lane, and the outputs shift with it, bit for
@@ -2106,45 +2129,14 @@ TEST(DisplacementMapFilter, ResultsDoNotDependOnBlockPosition)
     for (bool derivatives : { false, true })
     {
       auto mesh = MeshWithRedonePoints(s, derivatives, floatPoints);
-      vtkPointData* pd = mesh->GetPointData();
       const vtkIdType count = mesh->GetNumberOfPoints();
-      auto shifted = vtkSmartPointer<vtkPolyData>::New();
-      vtkNew<vtkPoints> points;
-      points->SetDataType(mesh->GetPoints()->GetDataType());
-      points->SetNumberOfPoints(count + 1);
-      points->SetPoint(0, 5.0, 5.0, 5.0);
+      std::vector<vtkIdType> plusOne(static_cast<size_t>(count));
       for (vtkIdType i = 0; i < count; ++i)
       {
-        points->SetPoint(i + 1, mesh->GetPoint(i));
+        plusOne[i] = i + 1;
       }
-      shifted->SetPoints(points);
-      for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-      {
-        vtkDataArray* src = pd->GetArray(a);
-        vtkSmartPointer<vtkDataArray> dst;
-        dst.TakeReference(src->NewInstance());
-        dst->SetName(src->GetName());
-        dst->SetNumberOfComponents(src->GetNumberOfComponents());
-        dst->SetNumberOfTuples(count + 1);
-        dst->SetTuple(0, 0, src);
-        for (vtkIdType i = 0; i < count; ++i)
-        {
-          dst->SetTuple(i + 1, i, src);
-        }
-        AddInSameRole(pd, src, shifted->GetPointData(), dst);
-      }
-      vtkNew<vtkCellArray> polys;
-      vtkNew<vtkIdList> ids;
-      for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-      {
-        mesh->GetCellPoints(c, ids);
-        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-        {
-          ids->SetId(k, ids->GetId(k) + 1);
-        }
-        polys->InsertNextCell(ids);
-      }
-      shifted->SetPolys(polys);
+      const double far[3] = { 5.0, 5.0, 5.0 };
+      auto shifted = RenumberedPoints::Moved(mesh, plusOne, count + 1, far);
       for (int mode : AllModes)
       {
         auto a = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
@@ -2305,8 +2297,8 @@ TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
       double n[3];
       pd->GetNormals()->GetTuple(16384 - 2, n);
       pd->GetArray("Tangents")->SetTuple4(16384 - 2, n[0], n[1], n[2], 1.0);
-      std::vector<vtkIdType> perm;
-      auto renumbered = Renumbered(mesh, perm);
+      const std::vector<vtkIdType> perm = RenumberedPoints::RandomIds(mesh->GetNumberOfPoints(), 5);
+      auto renumbered = RenumberedPoints::Moved(mesh, perm, mesh->GetNumberOfPoints());
       for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
       {
         for (int threads : { 1, 2 })

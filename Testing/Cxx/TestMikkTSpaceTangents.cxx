@@ -2,6 +2,7 @@
 // arrays and cells, thread-count independence.
 #include "EveryBuildTestHelpers.h"
 #include "MikkTSpaceTestMeshes.h"
+#include "RenumberedPointsTestHelpers.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -347,59 +348,6 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
   }
 }
 
-namespace
-{
-// The same surface with its points numbered at random (Fisher-Yates, fixed seed): point i
-// of the input is point newId[i] of the output.
-vtkSmartPointer<vtkPolyData> Renumber(vtkPolyData* in, std::vector<vtkIdType>& newId)
-{
-  const vtkIdType n = in->GetNumberOfPoints();
-  newId.resize(static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    newId[i] = i;
-  }
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(4711);
-  for (vtkIdType i = n - 1; i > 0; --i)
-  {
-    random->Next();
-    const vtkIdType j = std::min(i, static_cast<vtkIdType>(random->GetValue() * (i + 1)));
-    std::swap(newId[i], newId[j]);
-  }
-  vtkNew<vtkIdList> source;
-  source->SetNumberOfIds(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    source->SetId(newId[i], i);
-  }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(in->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(n);
-  in->GetPoints()->GetData()->GetTuples(source, points->GetData());
-  out->SetPoints(points);
-  out->GetPointData()->CopyAllocate(in->GetPointData(), n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    out->GetPointData()->CopyData(in->GetPointData(), source->GetId(i), i);
-  }
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < in->GetNumberOfPolys(); ++c)
-  {
-    in->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      ids->SetId(k, newId[ids->GetId(k)]);
-    }
-    polys->InsertNextCell(ids);
-  }
-  out->SetPolys(polys);
-  return out;
-}
-} // namespace
-
 // In the AVX-512 build the fast path builds its vertex lists task by task, each task from
 // the triangles whose points' ids come near its own; a mesh whose points are numbered at
 // random (every run of triangles spans almost all ids) takes the global vertex lists
@@ -409,8 +357,9 @@ vtkSmartPointer<vtkPolyData> Renumber(vtkPolyData* in, std::vector<vtkIdType>& n
 TEST(vtkMikkTSpaceTangents, FastPathRenumberedPointsSameFrames)
 {
   auto torus = MakeTorus(300, 150);
-  std::vector<vtkIdType> newId;
-  auto renumbered = Renumber(torus, newId);
+  const std::vector<vtkIdType> newId =
+    RenumberedPoints::RandomIds(torus->GetNumberOfPoints(), 4711);
+  auto renumbered = RenumberedPoints::Moved(torus, newId, torus->GetNumberOfPoints());
   for (int threads : { 1, 2 })
   {
     vtkSMPTools::Initialize(threads);
