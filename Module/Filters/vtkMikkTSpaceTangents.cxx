@@ -3036,8 +3036,11 @@ private:
         {
           break;
         }
-        if (!this->GatherFan<Wide>(
-              v, k, nextIds, prevIds, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        auto gather = [&](const V3& n, const std::int32_t* list, const std::int32_t* next,
+                        const std::int32_t* prev)
+        { return this->GatherFan<Wide>(v, k, n, list, next, prev, orient, fb); };
+        if (!this->WithFan(
+              v, k, nextIds, prevIds, first, corners, out + 4 * std::size_t(v), gather))
         {
           return false;
         }
@@ -3052,13 +3055,13 @@ private:
     return true;
   }
 
-  // Checks the fan of v and appends its corners to the block (a vertex that no triangle
-  // uses gets the default frame at once). Whether the fan is one run is decided here in the
-  // baseline build, in SumFans in the others (see WeighCorners).
-  template <bool Wide>
-  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
+  // The start of GatherFan and GatherSlots: a vertex that no triangle uses gets the default
+  // frame at once, a normal not of unit length fails the fast path; else gather(n, corners,
+  // next ids, previous ids) with v's unit normal and its fan's lists.
+  template <typename Gather>
+  VTK_ALWAYS_INLINE bool WithFan(std::int32_t v, int k, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::int32_t* first, const std::int32_t* corners, float* out,
+    Gather&& gather) const
   {
     const double* u = this->UnitNormals + 3 * std::size_t(v);
     const V3 n{ u[0], u[1], u[2] };
@@ -3071,9 +3074,17 @@ private:
     {
       return false;
     }
-    const std::int32_t* list = corners + first[v];
-    const std::int32_t* next = nextIds + first[v];
-    const std::int32_t* prev = prevIds + first[v];
+    const std::int32_t f = first[v];
+    return gather(n, corners + f, nextIds + f, prevIds + f);
+  }
+
+  // Checks the fan of v and appends its corners to the block. Whether the fan is one run is
+  // decided here in the baseline build, in SumFans in the others (see WeighCorners).
+  template <bool Wide>
+  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const V3& n, const std::int32_t* list,
+    const std::int32_t* next, const std::int32_t* prev, const unsigned char* orient,
+    FanBlock<Real>& fb) const
+  {
     const unsigned char o = orient[list[0] >> 2];
     std::int32_t* tri = fb.Triangle + fb.NumberOfCorners;
     int same = 1;
@@ -3422,8 +3433,11 @@ private:
         {
           break;
         }
-        if (!this->GatherSlots(
-              v, k, nextIds, prevIds, dir, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        auto gather = [&](const V3& n, const std::int32_t* list, const std::int32_t* next,
+                        const std::int32_t* prev)
+        { return this->GatherSlots(v, k, n, list, next, prev, dir, orient, fb); };
+        if (!this->WithFan(
+              v, k, nextIds, prevIds, first, corners, out + 4 * std::size_t(v), gather))
         {
           return false;
         }
@@ -3445,27 +3459,12 @@ private:
     return true;
   }
 
-  // Checks the fan of v and copies it into the block's next lane (a vertex that no triangle
-  // uses gets the default frame at once).
-  VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, SlotBlock<Real>& fb, float* out) const
+  // Checks the fan of v and copies it into the block's next lane.
+  VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const V3& n, const std::int32_t* list,
+    const std::int32_t* next, const std::int32_t* prev, const std::array<float, 6>* dir,
+    const unsigned char* orient, SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
-    const double* u = this->UnitNormals + 3 * std::size_t(v);
-    const V3 n{ u[0], u[1], u[2] };
-    if (k == 0)
-    {
-      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
-      return true;
-    }
-    if (!(std::abs(Dot(n, n) - 1.0) < 1e-6))
-    {
-      return false;
-    }
-    const std::int32_t* list = corners + first[v];
-    const std::int32_t* next = nextIds + first[v];
-    const std::int32_t* prev = prevIds + first[v];
     const int j = fb.NumberOfVertices;
     const int g = j / Lanes, i = j % Lanes;
     if (i == 0)
@@ -3498,8 +3497,8 @@ private:
     fb.First6[j] = 6 * (list[0] >> 2);
     for (int x = 0; x < 3; ++x)
     {
-      fb.NV[x][j] = u[x];
-      fb.NR[x][j] = static_cast<Real>(u[x]);
+      fb.NV[x][j] = n[x];
+      fb.NR[x][j] = static_cast<Real>(n[x]);
       fb.Position[x][j] = Real(this->P[3 * std::size_t(v) + x]);
     }
     ++fb.NumberOfVertices;
