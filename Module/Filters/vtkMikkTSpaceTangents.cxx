@@ -1793,11 +1793,11 @@ struct SlotBlock
   int GroupFirst[MaxGroups];
   int GroupSlots[MaxGroups];
   // Per lane (a group's lanes past the block's vertices repeat its first vertex, with no
-  // corners): its vertex, number of corners and handedness; its unit normal (in double and
-  // in Real), position, the offset of its first triangle's directions, the projections of
-  // those (unit vectors, see References), whether checks passed; the corners' sums of
-  // weighted dP/ds, of turns and of id mixes (see FanBlock), the closed-fan test's answer,
-  // the tangent.
+  // corners; a task's slots also give a vertex no triangle uses a lane with none): its vertex,
+  // number of corners and handedness; its unit normal (in double and in Real), position, the offset
+  // of its first triangle's directions, the projections of those (unit vectors, see References),
+  // whether checks passed; the corners' sums of weighted dP/ds, of turns and of id mixes (see
+  // FanBlock), the closed-fan test's answer, the tangent.
   std::int32_t Vertex[MaxVertices];
   float Handedness[MaxVertices];
   alignas(64) std::int32_t K[MaxVertices];
@@ -2670,25 +2670,27 @@ private:
     return true;
   }
 
-  // One task's counts, lanes and slots; kept per thread from task to task.
+  // One task's lanes and slots; kept per thread from task to task.
   struct TaskSlots
   {
-    // Per vertex x of the task: its number of corners (at [x + 1]), its next slot, the
-    // number of its corners of orientation 1.
-    std::vector<std::int32_t> Count, Cursor, Ones;
-    // The vertices with corners, one to a lane; per group of Lanes lanes its first slot and
-    // its largest fan.
-    std::vector<std::int32_t> Lane, GroupFirst, GroupSlots;
-    // The slots (see SlotBlock), each group's rows of corners one after the other, and in
-    // a row the eight arrays side by side (RowStride 8 Lanes): next ids at [c], previous
+    // Per vertex x of the task: its next slot, the number of its corners of orientation 1.
+    std::vector<std::int32_t> Cursor, Ones;
+    // The vertices that are not copies of smaller ones, one to a lane; per lane its number of
+    // corners; per group of Lanes lanes its largest fan.
+    std::vector<std::int32_t> Lane, K, GroupSlots;
+    // The slots (see SlotBlock): each group has room for GroupRows rows of corners, and in a
+    // row the eight arrays lie side by side (RowStride 8 Lanes): next ids at [c], previous
     // ids at [c + Lanes], dP/ds and dP/dt at [c + (q + 2) Lanes]. A copy into a slot then
     // writes eight values at constant offsets from one index, and a group's row is eight
     // whole cache lines. Room for the largest task (2 MB or more: huge pages, from
     // vtkSurfaceDetailMemory's cache at the next execution).
     std::shared_ptr<Block<unsigned char>> Slots;
   };
+  // Room for the largest fan and one more row, so that the groups' rows do not all fall into
+  // the same cache sets (groups 16.5 kB apart, not 16).
+  static constexpr int GroupRows = MaxFastFan + 1;
   static constexpr std::size_t MaxTaskSlots =
-    8 * MaxFastFan * std::size_t(TaskVertices + SlotBlock<Real>::Lanes);
+    std::size_t(8 * SlotBlock<Real>::Lanes) * GroupRows * (TaskVertices / SlotBlock<Real>::Lanes);
 
   // A SlotBlock, and its first corners' directions for References, allocated by each task:
   // the compiler then knows that they alias nothing else, and vectorises the loops over
@@ -2700,83 +2702,43 @@ private:
   };
 
   // The fans of the vertices [vb, ve) in the AVX-512 build, from the triangles of the chunks
-  // [cb, ce) of taskChunks (see TaskChunks). The task counts its vertices' corners, gives
-  // each vertex with corners a lane (in vertex order, as SlotFans does, but in one layout
-  // for the whole task), then copies each corner of its vertices, in triangle order (the
-  // order of VertexCorners' lists, so each fan's sums are SlotFans' to the bit), straight
-  // into its slot, reading the triangles' directions in their order. Then SlotFans' steps
-  // per block of SlotBlock's vertices. False if a check fails or a fan is too large.
+  // [cb, ce) of taskChunks (see TaskChunks). The task gives each vertex that is not a copy
+  // of a smaller one a lane (in vertex order, as SlotFans does, but in one layout for the
+  // whole task) and room for the largest fan, copies each corner of its vertices, in
+  // triangle order (the order of VertexCorners' lists, so each fan's sums are SlotFans' to
+  // the bit), straight into its slot, reading the triangles' directions in their order, and
+  // counts the corners by the slots' cursors (no pass of its own). A lane with no corners (a
+  // vertex no triangle uses) stays empty, with copies of another lane's corners, as the
+  // lanes past the vertices in SlotFans. Then SlotFans' steps per block of SlotBlock's
+  // vertices. False if a check fails or a fan is too large.
   VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
     const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
     const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
+    constexpr int GroupStride = GroupRows * RowStride;
     const std::uint32_t nv = static_cast<std::uint32_t>(ve - vb);
-    if (ts.Count.size() < nv + 1)
+    if (ts.Cursor.size() < nv)
     {
-      ts.Count.resize(nv + 1);
       ts.Cursor.resize(nv);
       ts.Ones.resize(nv);
       ts.Lane.resize(nv);
-      ts.GroupFirst.resize(nv / Lanes + 2);
-      ts.GroupSlots.resize(nv / Lanes + 2);
-    }
-    std::int32_t* __restrict count = ts.Count.data();
-    std::fill_n(count, nv + 1, 0);
-    for (const std::int32_t* ch = cb; ch < ce; ++ch)
-    {
-      const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
-      for (vtkIdType c = 3 * t0; c < 3 * t1; ++c)
-      {
-        // A branch: the corners of other vertices come in runs, and counting them in one
-        // place would chain their increments through memory.
-        const std::uint32_t x = static_cast<std::uint32_t>(w[c] - vb);
-        if (x < nv)
-        {
-          ++count[x + 1];
-        }
-      }
+      ts.K.resize(nv);
+      ts.GroupSlots.resize(nv / Lanes + 1);
     }
     std::int32_t* __restrict lane = ts.Lane.data();
-    std::int32_t* __restrict groupFirst = ts.GroupFirst.data();
-    std::int32_t* __restrict groupSlots = ts.GroupSlots.data();
     std::int32_t* __restrict cursor = ts.Cursor.data();
     int nl = 0;
     for (std::uint32_t x = 0; x < nv; ++x)
     {
-      const std::int32_t k = count[x + 1];
-      if (k > MaxFastFan)
+      if (this->Welded &&
+        weld[vb + static_cast<std::int32_t>(x)] != vb + static_cast<std::int32_t>(x))
       {
-        return false;
+        continue; // a copy of a smaller point, filled later
       }
-      const std::int32_t v = vb + static_cast<std::int32_t>(x);
-      if (k == 0)
-      {
-        if (!this->Welded || weld[v] == v) // else a copy of a smaller point, filled later
-        {
-          const double* u = this->UnitNormals + 3 * std::size_t(v);
-          FinalTangent(V3{ u[0], u[1], u[2] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 },
-            out + 4 * std::size_t(v));
-        }
-        continue;
-      }
-      if (nl % Lanes == 0)
-      {
-        groupSlots[nl / Lanes] = 0;
-      }
-      groupSlots[nl / Lanes] = std::max(groupSlots[nl / Lanes], k);
+      cursor[x] = GroupStride * (nl / Lanes) + nl % Lanes;
       lane[nl++] = static_cast<std::int32_t>(x);
-    }
-    const int groups = (nl + Lanes - 1) / Lanes;
-    groupFirst[0] = 0;
-    for (int g = 0; g < groups; ++g)
-    {
-      groupFirst[g + 1] = groupFirst[g] + RowStride * groupSlots[g];
-    }
-    for (int j = 0; j < nl; ++j)
-    {
-      cursor[lane[j]] = groupFirst[j / Lanes] + j % Lanes;
     }
     if (!ts.Slots)
     {
@@ -2786,6 +2748,9 @@ private:
     float* __restrict d = reinterpret_cast<float*>(ts.Slots->Get());
     std::int32_t* __restrict ones = ts.Ones.data();
     std::fill_n(ones, nv, 0);
+    // A fan too large writes over other lanes' slots (the task then fails) but no further
+    // than the last row.
+    constexpr std::int32_t lastSlot = static_cast<std::int32_t>(MaxTaskSlots) - RowStride;
     for (const std::int32_t* ch = cb; ch < ce; ++ch)
     {
       const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
@@ -2800,8 +2765,9 @@ private:
           const std::uint32_t x = static_cast<std::uint32_t>(id - vb);
           if (x < nv)
           {
-            const std::size_t slot = static_cast<std::size_t>(cursor[x]);
-            cursor[x] += RowStride;
+            const std::int32_t at = cursor[x];
+            cursor[x] = at + RowStride;
+            const std::size_t slot = static_cast<std::size_t>(std::min(at, lastSlot));
             ids[slot] = 3 * n;
             ids[slot + Lanes] = 3 * p;
             for (int q = 0; q < 6; ++q)
@@ -2815,6 +2781,25 @@ private:
         copy(b, c, a);
         copy(c, a, b);
       }
+    }
+    std::int32_t* __restrict count = ts.K.data();
+    std::int32_t* __restrict groupSlots = ts.GroupSlots.data();
+    std::int32_t tooLarge = 0;
+    for (int j = 0; j < nl; ++j)
+    {
+      if (j % Lanes == 0)
+      {
+        groupSlots[j / Lanes] = 0;
+      }
+      const std::int32_t x = lane[j];
+      const std::int32_t k = (cursor[x] - (GroupStride * (j / Lanes) + j % Lanes)) / RowStride;
+      count[j] = k;
+      tooLarge |= k > MaxFastFan;
+      groupSlots[j / Lanes] = std::max(groupSlots[j / Lanes], k);
+    }
+    if (tooLarge)
+    {
+      return false;
     }
     std::unique_ptr<TaskBlock> block(new TaskBlock);
     SlotBlock<Real>& fb = block->Fans;
@@ -2831,14 +2816,14 @@ private:
       const int nb = std::min(MaxVertices, nl - l0);
       for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
       {
-        fb.GroupFirst[g] = groupFirst[l0 / Lanes + g];
+        fb.GroupFirst[g] = GroupStride * (l0 / Lanes + g);
         fb.GroupSlots[g] = groupSlots[l0 / Lanes + g];
       }
       // Checks fold into a flag (loops with an early exit do not vectorise).
       int bad = 0;
       for (int j = 0; j < nb; ++j)
       {
-        const std::int32_t x = lane[l0 + j], k = count[x + 1], o = ones[x];
+        const std::int32_t x = lane[l0 + j], k = count[l0 + j], o = ones[x];
         fb.Vertex[j] = vb + x;
         fb.K[j] = k;
         fb.Handedness[j] = o != 0 ? 1.0f : -1.0f;
@@ -2850,7 +2835,8 @@ private:
       {
         const std::size_t v = static_cast<std::size_t>(fb.Vertex[j]);
         const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
-        bad |= !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
+        // An empty lane's vertex gets the default frame from its normal, as it is.
+        bad |= (fb.K[j] > 0) & !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
         for (int q = 0; q < 3; ++q)
         {
           fb.NV[q][j] = u[q];
@@ -2864,8 +2850,8 @@ private:
       }
       fb.NumberOfVertices = nb;
       Pad(fb);
-      // Each lane's first corner; the lanes past the block's vertices repeat their group's
-      // first lane, as Pad made them.
+      // Each lane's first corner; empty lanes and the lanes past the block's vertices repeat
+      // another lane's, as Pad made them.
       float(*__restrict firstDir)[SlotBlock<Real>::MaxVertices] = block->FirstDir;
       for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
       {
@@ -3507,7 +3493,8 @@ private:
 
   // Fills each lane's slots past its fan with copies of its last corner (masked off in
   // WeighSlots), and the last group's lanes past the block's vertices with copies of the
-  // group's first lane, with no corners (and its corners).
+  // group's first lane, with no corners; a lane with no corners gets the corners of the
+  // group's first lane that has some.
   VTK_ALWAYS_INLINE static void Pad(SlotBlock<Real>& fb)
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
@@ -3527,13 +3514,24 @@ private:
         fb.Position[x][j] = fb.Position[x][j0];
       }
     }
+    int full = 0; // the group's first lane with corners
     for (int j = 0; j < nl; ++j)
     {
       const int g = j / Lanes, i = j % Lanes, k = fb.K[j];
+      if (i == 0)
+      {
+        full = j;
+        while (fb.K[full] == 0 && full < j + Lanes - 1)
+        {
+          ++full;
+        }
+      }
+      const int kf = fb.K[full];
       for (int s = k; s < fb.GroupSlots[g]; ++s)
       {
         const int c = fb.GroupFirst[g] + fb.RowStride * s + i;
-        const int from = fb.GroupFirst[g] + (k > 0 ? fb.RowStride * (k - 1) + i : fb.RowStride * s);
+        const int from = fb.GroupFirst[g] +
+          (k > 0 ? fb.RowStride * (k - 1) + i : fb.RowStride * std::min(s, kf - 1) + full % Lanes);
         fb.Next[c] = fb.Next[from];
         fb.Prev[c] = fb.Prev[from];
         for (int x = 0; x < 6; ++x)
@@ -3657,6 +3655,13 @@ private:
     }
     for (int j = 0; j < nv; ++j)
     {
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      if (kk[j] == 0)
+      {
+        // A vertex that no triangle uses (the task-local slots' empty lanes).
+        FinalTangent(V3{ nx[j], ny[j], nz[j] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, o);
+        continue;
+      }
       if (fb.Good[j] == 0.0)
       {
         return false;
@@ -3665,7 +3670,6 @@ private:
       {
         return false;
       }
-      float* o = out + 4 * std::size_t(fb.Vertex[j]);
       o[0] = fb.Tangent[0][j];
       o[1] = fb.Tangent[1][j];
       o[2] = fb.Tangent[2][j];

@@ -554,6 +554,111 @@ TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPath)
   ExpectFastPathIsGeneralPath(plane, "plane");
 }
 
+namespace
+{
+// A copy of a mesh with a run of `run` points that no triangle uses (each its own position,
+// normal and texture coordinates, so that none welds to another) before every `every`
+// points; newId gives each old point's id.
+vtkSmartPointer<vtkPolyData> WithUnusedRuns(
+  vtkPolyData* in, vtkIdType every, vtkIdType run, std::vector<vtkIdType>& newId)
+{
+  const vtkIdType n = in->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(in->GetPoints()->GetDataType());
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
+  newId.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (i % every == 0)
+    {
+      for (vtkIdType u = 0; u < run; ++u)
+      {
+        const double a = 0.1 * double(points->GetNumberOfPoints());
+        points->InsertNextPoint(5.0 + std::cos(a), std::sin(a), 0.001 * a);
+        normals->InsertNextTuple3(std::cos(a), 0.0, std::sin(a));
+        tcoords->InsertNextTuple2(0.01 * a, 0.5);
+      }
+    }
+    newId[i] = points->InsertNextPoint(in->GetPoint(i));
+    normals->InsertNextTuple(in->GetPointData()->GetNormals()->GetTuple(i));
+    tcoords->InsertNextTuple(in->GetPointData()->GetTCoords()->GetTuple(i));
+  }
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < in->GetNumberOfPolys(); ++c)
+  {
+    in->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      ids->SetId(k, newId[ids->GetId(k)]);
+    }
+    polys->InsertNextCell(ids);
+  }
+  return MakeSurface(points, polys, normals, tcoords);
+}
+} // namespace
+
+// In the AVX-512 build each task of the fast path gives every vertex that is not a welded
+// copy a lane before it knows which have corners: the points that no triangle uses keep
+// empty lanes, whole groups of lanes among them, which must change no other point's bits
+// (a torus with runs of 40 unused points every 200 points against the torus, at 1 and 2
+// threads) and get the general path's default frames. The task counts corners by its slots'
+// cursors, which a fan larger than the fast path's runs past its group's room: at the last
+// lane of a task (point 2047, a fan of 8191 triangles) the cursor runs 4 MB past the end of
+// the task's slots, where the writes must stop; the general path then takes the fan.
+TEST(vtkMikkTSpaceTangents, FastPathTaskSlotsKeepUnusedPointsAndHandOverLargeFans)
+{
+  auto torus = MakeTorus(300, 150);
+  std::vector<vtkIdType> newId;
+  auto spread = WithUnusedRuns(torus, 200, 40, newId);
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    FilterRun a(torus);
+    FilterRun b(spread);
+    EXPECT_EQ(a.Errors->Count + b.Errors->Count + a.Warnings->Count + b.Warnings->Count, 0);
+    auto* ta = vtkFloatArray::SafeDownCast(a.Output()->GetPointData()->GetArray("Tangents"));
+    auto* tb = vtkFloatArray::SafeDownCast(b.Output()->GetPointData()->GetArray("Tangents"));
+    ASSERT_NE(ta, nullptr);
+    ASSERT_NE(tb, nullptr);
+    ASSERT_EQ(tb->GetNumberOfTuples(), spread->GetNumberOfPoints());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+    {
+      differ +=
+        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
+        ? 1
+        : 0;
+    }
+    EXPECT_EQ(differ, 0) << threads << " threads";
+  }
+  vtkSMPTools::Initialize(0);
+  ExpectFastPathIsGeneralPath(spread, "torus with unused points");
+  // A closed fan of k triangles, its centre at point 2047 and its ring at all other points.
+  const int k = 8191, centre = 2047;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
+  for (int p = 0; p <= k; ++p)
+  {
+    const int i = p < centre ? p : p - 1;
+    const double a = 2.0 * vtkMath::Pi() * i / k, r = p == centre ? 0.0 : 1.0;
+    points->InsertNextPoint(r * std::cos(a), r * std::sin(a), 0.1 * r * std::sin(3.0 * a));
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+    tcoords->InsertNextTuple2(0.5 + 0.4 * r * std::cos(a), 0.5 + 0.4 * r * std::sin(a));
+  }
+  auto ringId = [](int i) { return vtkIdType(i < centre ? i : i + 1); };
+  for (int i = 0; i < k; ++i)
+  {
+    const vtkIdType t[3] = { centre, ringId(i), ringId((i + 1) % k) };
+    polys->InsertNextCell(3, t);
+  }
+  ExpectFastPathIsGeneralPath(
+    MakeSurface(points, polys, normals, tcoords), "a fan of 8191 at point 2047");
+}
+
 // The fast path normalises every point's normal in a pass of its own, without branches;
 // the general path normalises it where it needs it. Normals of length 3, 0 and past the
 // square's range (1e200: the length overflows, so neither path scales them) must give the
