@@ -2686,9 +2686,10 @@ private:
     // vtkSurfaceDetailMemory's cache at the next execution).
     std::shared_ptr<Block<unsigned char>> Slots;
   };
-  // Room for the largest fan and one more row, so that the groups' rows do not all fall into
-  // the same cache sets (groups 16.5 kB apart, not 16).
-  static constexpr int GroupRows = MaxFastFan + 1;
+  // Room for the largest fan: only the rows that the fans fill are touched. (Groups 33 rows
+  // apart, 16.5 kB rather than 16, so that their rows fall into other cache sets, took the
+  // same cycles.)
+  static constexpr int GroupRows = MaxFastFan;
   static constexpr std::size_t MaxTaskSlots =
     std::size_t(8 * SlotBlock<Real>::Lanes) * GroupRows * (TaskVertices / SlotBlock<Real>::Lanes);
 
