@@ -2785,20 +2785,21 @@ private:
     }
     std::int32_t* __restrict count = ts.K.data();
     std::int32_t* __restrict groupSlots = ts.GroupSlots.data();
-    std::int32_t tooLarge = 0;
-    for (int j = 0; j < nl; ++j)
+    std::int32_t largest = 0;
+    for (int g = 0; g < (nl + Lanes - 1) / Lanes; ++g)
     {
-      if (j % Lanes == 0)
+      // The group's largest fan in a local (in memory, each lane's max waited on the last).
+      std::int32_t slots = 0;
+      for (int j = Lanes * g; j < std::min(nl, Lanes * (g + 1)); ++j)
       {
-        groupSlots[j / Lanes] = 0;
+        const std::int32_t k = (cursor[lane[j]] - (GroupStride * g + j % Lanes)) / RowStride;
+        count[j] = k;
+        slots = std::max(slots, k);
       }
-      const std::int32_t x = lane[j];
-      const std::int32_t k = (cursor[x] - (GroupStride * (j / Lanes) + j % Lanes)) / RowStride;
-      count[j] = k;
-      tooLarge |= k > MaxFastFan;
-      groupSlots[j / Lanes] = std::max(groupSlots[j / Lanes], k);
+      groupSlots[g] = slots;
+      largest = std::max(largest, slots);
     }
-    if (tooLarge)
+    if (largest > MaxFastFan)
     {
       return false;
     }
