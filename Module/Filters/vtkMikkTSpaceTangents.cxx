@@ -1819,9 +1819,11 @@ struct SlotBlock
   std::int32_t* Prev;
   float* Dir[6];
   // From one corner of a lane to the next in each of the arrays above: Lanes in SlotStorage,
-  // 8 Lanes in a task's slots, where the eight arrays' slots of a row of corners are side by
-  // side.
+  // 8 Lanes in a task's slots, where a row of corners is Lanes records of eight values.
   int RowStride = Lanes;
+  // From one lane's slot to the next: 1, or 8 in a task's slots, where each slot is a record
+  // of its eight values (see FastMikk::TaskSlots).
+  int LaneStride = 1;
 
   int GroupStart(int g) const { return g > 0 ? GroupFirst[g - 1] + Lanes * GroupSlots[g - 1] : 0; }
   // The block's slots with one more fan, of k corners.
@@ -2678,11 +2680,12 @@ private:
     // The vertices that are not copies of smaller ones, one to a lane; per lane its number of
     // corners; per group of Lanes lanes its largest fan.
     std::vector<std::int32_t> Lane, K, GroupSlots;
-    // The slots (see SlotBlock): each group has room for GroupRows rows of corners, and in a
-    // row the eight arrays lie side by side (RowStride 8 Lanes): next ids at [c], previous
-    // ids at [c + Lanes], dP/ds and dP/dt at [c + (q + 2) Lanes]. A copy into a slot then
-    // writes eight values at constant offsets from one index, and a group's row is eight
-    // whole cache lines. Room for the largest task (2 MB or more: huge pages, from
+    // The slots (see SlotBlock): each group has room for GroupRows rows of corners, and a
+    // row is Lanes records, one per lane, of eight values (RowStride 8 Lanes, LaneStride 8):
+    // the next id at [c], the previous id at [c + 1], dP/ds and dP/dt at [c + 2 + q]. A copy
+    // into a slot is then one 32-byte store (eight scattered stores, one into each of eight
+    // arrays side by side, took 5% more cycles on the 1M torus), and WeighSlots transposes
+    // each row (TransposeRow). Room for the largest task (2 MB or more: huge pages, from
     // vtkSurfaceDetailMemory's cache at the next execution).
     std::shared_ptr<Block<unsigned char>> Slots;
   };
@@ -2738,7 +2741,7 @@ private:
       {
         continue; // a copy of a smaller point, filled later
       }
-      cursor[x] = GroupStride * (nl / Lanes) + nl % Lanes;
+      cursor[x] = GroupStride * (nl / Lanes) + 8 * (nl % Lanes);
       lane[nl++] = static_cast<std::int32_t>(x);
     }
     if (!ts.Slots)
@@ -2760,7 +2763,12 @@ private:
         const std::int32_t a = w[3 * t], b = w[3 * t + 1], c = w[3 * t + 2];
         const std::array<float, 6> dt = dir[t];
         const std::int32_t o = orient[t];
-        // The corner at id, whose next and previous points are n and p.
+#if defined(__GNUC__) && !defined(__clang__)
+        typedef float Record __attribute__((vector_size(32)));
+        const Record base = { 0.0f, 0.0f, dt[0], dt[1], dt[2], dt[3], dt[4], dt[5] };
+#endif
+        // The corner at id, whose next and previous points are n and p: one store of its
+        // record.
         auto copy = [&](std::int32_t id, std::int32_t n, std::int32_t p)
         {
           const std::uint32_t x = static_cast<std::uint32_t>(id - vb);
@@ -2768,13 +2776,17 @@ private:
           {
             const std::int32_t at = cursor[x];
             cursor[x] = at + RowStride;
-            const std::size_t slot = static_cast<std::size_t>(std::min(at, lastSlot));
-            ids[slot] = 3 * n;
-            ids[slot + Lanes] = 3 * p;
-            for (int q = 0; q < 6; ++q)
-            {
-              d[slot + (q + 2) * Lanes] = dt[q];
-            }
+            float* to = d + std::min(at, lastSlot);
+#if defined(__GNUC__) && !defined(__clang__)
+            Record r = base;
+            r[0] = __builtin_bit_cast(float, 3 * n);
+            r[1] = __builtin_bit_cast(float, 3 * p);
+            std::memcpy(to, &r, sizeof(r));
+#else
+            const std::int32_t np[2] = { 3 * n, 3 * p };
+            std::memcpy(to, np, sizeof(np));
+            std::copy_n(dt.data(), 6, to + 2);
+#endif
             ones[x] += o;
           }
         };
@@ -2792,7 +2804,7 @@ private:
       std::int32_t slots = 0;
       for (int j = Lanes * g; j < std::min(nl, Lanes * (g + 1)); ++j)
       {
-        const std::int32_t k = (cursor[lane[j]] - (GroupStride * g + j % Lanes)) / RowStride;
+        const std::int32_t k = (cursor[lane[j]] - (GroupStride * g + 8 * (j % Lanes))) / RowStride;
         count[j] = k;
         slots = std::max(slots, k);
       }
@@ -2806,12 +2818,13 @@ private:
     std::unique_ptr<TaskBlock> block(new TaskBlock);
     SlotBlock<Real>& fb = block->Fans;
     fb.Next = ids;
-    fb.Prev = ids + Lanes;
+    fb.Prev = ids + 1;
     for (int q = 0; q < 6; ++q)
     {
-      fb.Dir[q] = d + (q + 2) * Lanes;
+      fb.Dir[q] = d + 2 + q;
     }
     fb.RowStride = RowStride;
+    fb.LaneStride = 8;
     constexpr int MaxVertices = SlotBlock<Real>::MaxVertices;
     for (int l0 = 0; l0 < nl; l0 += MaxVertices)
     {
@@ -2857,9 +2870,12 @@ private:
       float(*__restrict firstDir)[SlotBlock<Real>::MaxVertices] = block->FirstDir;
       for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
       {
+        alignas(64) std::int32_t rowIds[2][Lanes];
+        alignas(64) float rowDir[6][Lanes];
+        TransposeRow(d + fb.GroupFirst[g], rowIds, rowDir);
         for (int q = 0; q < 6; ++q)
         {
-          std::copy_n(fb.Dir[q] + fb.GroupFirst[g], Lanes, firstDir[q] + Lanes * g);
+          std::copy_n(rowDir[q], Lanes, firstDir[q] + Lanes * g);
         }
       }
       ReferencesOf(
@@ -2868,7 +2884,7 @@ private:
       auto oneRun = [&](int j)
       {
         std::int32_t n[MaxFastFan + 8] = {}, p[MaxFastFan + 8] = {};
-        const int c0 = fb.GroupFirst[j / Lanes] + j % Lanes;
+        const int c0 = fb.GroupFirst[j / Lanes] + fb.LaneStride * (j % Lanes);
         for (int a = 0; a < fb.K[j]; ++a)
         {
           n[a] = fb.Next[c0 + fb.RowStride * a] / 3;
@@ -2876,12 +2892,69 @@ private:
         }
         return FanIsOneRun<true>(n, p, fb.K[j]);
       };
-      if (!this->WeighSlots(fb) || !SumSlots(fb, oneRun, out))
+      if (!this->WeighSlots<true>(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
     }
     return true;
+  }
+
+  // One row of a task's slots, Lanes records of eight values (next and previous ids, dP/ds,
+  // dP/dt), as eight arrays of Lanes values: in the AVX-512 build three steps of two-vector
+  // permutations, 24 in all, in place of the copies' seven more scattered stores per corner.
+  VTK_ALWAYS_INLINE static void TransposeRow(const float* __restrict records,
+    std::int32_t (*__restrict ids)[SlotBlock<Real>::Lanes],
+    float (*__restrict dirs)[SlotBlock<Real>::Lanes])
+  {
+    static_assert(SlotBlock<Real>::Lanes == 16, "sixteen records of eight");
+#if defined(__GNUC__) && !defined(__clang__)
+    typedef float V __attribute__((vector_size(64)));
+    typedef std::int32_t M __attribute__((vector_size(64)));
+    // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
+    // records) their values 0-3 or 4-7, in the order (value, record); the second, from two
+    // of those, two values of eight records; the third one value of all sixteen.
+    const M lo4 = { 0, 8, 16, 24, 1, 9, 17, 25, 2, 10, 18, 26, 3, 11, 19, 27 };
+    const M hi4 = { 4, 12, 20, 28, 5, 13, 21, 29, 6, 14, 22, 30, 7, 15, 23, 31 };
+    const M lo2 = { 0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23 };
+    const M hi2 = { 8, 9, 10, 11, 24, 25, 26, 27, 12, 13, 14, 15, 28, 29, 30, 31 };
+    const M lo1 = { 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 };
+    const M hi1 = { 8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31 };
+    V r[8], a[8], b[8];
+    for (int k = 0; k < 8; ++k)
+    {
+      std::memcpy(&r[k], records + 16 * k, sizeof(V));
+    }
+    for (int m = 0; m < 4; ++m) // a[2 m + h]: records 4m to 4m + 3, values 4h to 4h + 3
+    {
+      a[2 * m] = __builtin_shuffle(r[2 * m], r[2 * m + 1], lo4);
+      a[2 * m + 1] = __builtin_shuffle(r[2 * m], r[2 * m + 1], hi4);
+    }
+    for (int n = 0; n < 2; ++n) // b[4 n + 2 h + e]: records 8n to 8n + 7, values 4h + 2e, + 1
+    {
+      for (int h = 0; h < 2; ++h)
+      {
+        b[4 * n + 2 * h] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], lo2);
+        b[4 * n + 2 * h + 1] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], hi2);
+      }
+    }
+    for (int q = 0; q < 8; ++q)
+    {
+      const V v = __builtin_shuffle(b[q / 2], b[4 + q / 2], q % 2 ? hi1 : lo1);
+      std::memcpy(
+        q < 2 ? static_cast<void*>(ids[q]) : static_cast<void*>(dirs[q - 2]), &v, sizeof(V));
+    }
+#else
+    for (int i = 0; i < SlotBlock<Real>::Lanes; ++i)
+    {
+      std::memcpy(&ids[0][i], records + 8 * i, sizeof(float));
+      std::memcpy(&ids[1][i], records + 8 * i + 1, sizeof(float));
+      for (int q = 0; q < 6; ++q)
+      {
+        dirs[q][i] = records[8 * i + 2 + q];
+      }
+    }
+#endif
   }
 
   SURFACEDETAIL_TARGET_AVX512 static bool LocalSlotsAVX512(const FastMikk& self,
@@ -3439,7 +3512,7 @@ private:
         const std::int32_t f = first[fb.Vertex[j]];
         return FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]);
       };
-      if (!this->WeighSlots(fb) || !SumSlots(fb, oneRun, out))
+      if (!this->WeighSlots<false>(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
@@ -3531,9 +3604,10 @@ private:
       const int kf = fb.K[full];
       for (int s = k; s < fb.GroupSlots[g]; ++s)
       {
-        const int c = fb.GroupFirst[g] + fb.RowStride * s + i;
+        const int c = fb.GroupFirst[g] + fb.RowStride * s + fb.LaneStride * i;
         const int from = fb.GroupFirst[g] +
-          (k > 0 ? fb.RowStride * (k - 1) + i : fb.RowStride * std::min(s, kf - 1) + full % Lanes);
+          (k > 0 ? fb.RowStride * (k - 1) + fb.LaneStride * i
+                 : fb.RowStride * std::min(s, kf - 1) + fb.LaneStride * (full % Lanes));
         fb.Next[c] = fb.Next[from];
         fb.Prev[c] = fb.Prev[from];
         for (int x = 0; x < 6; ++x)
@@ -3548,6 +3622,8 @@ private:
   // dP/dt are checked against its references (a quarter turn), and the closed-fan test's turns and
   // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
+  // Records: the slots are records (a task's slots), transposed a row at a time.
+  template <bool Records>
   VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
@@ -3578,9 +3654,17 @@ private:
       for (int s = 0; s < fb.GroupSlots[g]; ++s)
       {
         const int c0 = fb.GroupFirst[g] + fb.RowStride * s;
-        const std::int32_t* __restrict next = fb.Next + c0, * __restrict prev = fb.Prev + c0;
-        const float* __restrict dsx = fb.Dir[0] + c0, * __restrict dsy = fb.Dir[1] + c0, * __restrict dsz = fb.Dir[2] + c0;
-        const float* __restrict dtx = fb.Dir[3] + c0, * __restrict dty = fb.Dir[4] + c0, * __restrict dtz = fb.Dir[5] + c0;
+        alignas(64) std::int32_t rowIds[2][Lanes];
+        alignas(64) float rowDir[6][Lanes];
+        if constexpr (Records)
+        {
+          TransposeRow(fb.Dir[0] - 2 + c0, rowIds, rowDir);
+        }
+        auto dirs = [&](int q) { return Records ? rowDir[q] : fb.Dir[q] + c0; };
+        const std::int32_t* __restrict next = Records ? rowIds[0] : fb.Next + c0;
+        const std::int32_t* __restrict prev = Records ? rowIds[1] : fb.Prev + c0;
+        const float* __restrict dsx = dirs(0), * __restrict dsy = dirs(1), * __restrict dsz = dirs(2);
+        const float* __restrict dtx = dirs(3), * __restrict dty = dirs(4), * __restrict dtz = dirs(5);
         // Next and Prev hold 3 * id, the same multisets as the ids.
         for (int i = 0; i < Lanes; ++i)
         {
