@@ -349,6 +349,23 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
 
 namespace
 {
+// The polygons of in, their point ids replaced by newId[id].
+vtkSmartPointer<vtkCellArray> RenumberedPolys(vtkPolyData* in, const std::vector<vtkIdType>& newId)
+{
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < in->GetNumberOfPolys(); ++c)
+  {
+    in->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      ids->SetId(k, newId[ids->GetId(k)]);
+    }
+    polys->InsertNextCell(ids);
+  }
+  return polys;
+}
+
 // The same surface with its points numbered at random (Fisher-Yates, fixed seed): point i
 // of the input is point newId[i] of the output.
 vtkSmartPointer<vtkPolyData> Renumber(vtkPolyData* in, std::vector<vtkIdType>& newId)
@@ -384,19 +401,37 @@ vtkSmartPointer<vtkPolyData> Renumber(vtkPolyData* in, std::vector<vtkIdType>& n
   {
     out->GetPointData()->CopyData(in->GetPointData(), source->GetId(i), i);
   }
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < in->GetNumberOfPolys(); ++c)
-  {
-    in->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      ids->SetId(k, newId[ids->GetId(k)]);
-    }
-    polys->InsertNextCell(ids);
-  }
-  out->SetPolys(polys);
+  out->SetPolys(RenumberedPolys(in, newId));
   return out;
+}
+
+// Every point of a must get the bits that b gives point newId of it, at 1 and 2 threads,
+// without errors or warnings (b: a with its points renumbered, or more points added).
+void ExpectSameFramesAtNewIds(vtkPolyData* a, vtkPolyData* b, const std::vector<vtkIdType>& newId)
+{
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    FilterRun ra(a);
+    FilterRun rb(b);
+    EXPECT_EQ(ra.Errors->Count + rb.Errors->Count + ra.Warnings->Count + rb.Warnings->Count, 0);
+    auto* ta = vtkFloatArray::SafeDownCast(ra.Output()->GetPointData()->GetArray("Tangents"));
+    auto* tb = vtkFloatArray::SafeDownCast(rb.Output()->GetPointData()->GetArray("Tangents"));
+    ASSERT_NE(ta, nullptr);
+    ASSERT_NE(tb, nullptr);
+    ASSERT_EQ(ta->GetNumberOfTuples(), a->GetNumberOfPoints());
+    ASSERT_EQ(tb->GetNumberOfTuples(), b->GetNumberOfPoints());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      differ +=
+        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
+        ? 1
+        : 0;
+    }
+    EXPECT_EQ(differ, 0) << threads << " threads";
+  }
+  vtkSMPTools::Initialize(0);
 }
 } // namespace
 
@@ -411,29 +446,7 @@ TEST(vtkMikkTSpaceTangents, FastPathRenumberedPointsSameFrames)
   auto torus = MakeTorus(300, 150);
   std::vector<vtkIdType> newId;
   auto renumbered = Renumber(torus, newId);
-  for (int threads : { 1, 2 })
-  {
-    vtkSMPTools::Initialize(threads);
-    FilterRun a(torus);
-    FilterRun b(renumbered);
-    EXPECT_EQ(a.Errors->Count + b.Errors->Count + a.Warnings->Count + b.Warnings->Count, 0);
-    auto* ta = vtkFloatArray::SafeDownCast(a.Output()->GetPointData()->GetArray("Tangents"));
-    auto* tb = vtkFloatArray::SafeDownCast(b.Output()->GetPointData()->GetArray("Tangents"));
-    ASSERT_NE(ta, nullptr);
-    ASSERT_NE(tb, nullptr);
-    ASSERT_EQ(ta->GetNumberOfTuples(), torus->GetNumberOfPoints());
-    ASSERT_EQ(tb->GetNumberOfTuples(), torus->GetNumberOfPoints());
-    vtkIdType differ = 0;
-    for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
-    {
-      differ +=
-        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
-        ? 1
-        : 0;
-    }
-    EXPECT_EQ(differ, 0) << threads << " threads";
-  }
-  vtkSMPTools::Initialize(0);
+  ExpectSameFramesAtNewIds(torus, renumbered, newId);
 }
 
 namespace
@@ -584,18 +597,7 @@ vtkSmartPointer<vtkPolyData> WithUnusedRuns(
     normals->InsertNextTuple(in->GetPointData()->GetNormals()->GetTuple(i));
     tcoords->InsertNextTuple(in->GetPointData()->GetTCoords()->GetTuple(i));
   }
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < in->GetNumberOfPolys(); ++c)
-  {
-    in->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      ids->SetId(k, newId[ids->GetId(k)]);
-    }
-    polys->InsertNextCell(ids);
-  }
-  return MakeSurface(points, polys, normals, tcoords);
+  return MakeSurface(points, RenumberedPolys(in, newId), normals, tcoords);
 }
 } // namespace
 
@@ -612,28 +614,7 @@ TEST(vtkMikkTSpaceTangents, FastPathTaskSlotsKeepUnusedPointsAndHandOverLargeFan
   auto torus = MakeTorus(300, 150);
   std::vector<vtkIdType> newId;
   auto spread = WithUnusedRuns(torus, 200, 40, newId);
-  for (int threads : { 1, 2 })
-  {
-    vtkSMPTools::Initialize(threads);
-    FilterRun a(torus);
-    FilterRun b(spread);
-    EXPECT_EQ(a.Errors->Count + b.Errors->Count + a.Warnings->Count + b.Warnings->Count, 0);
-    auto* ta = vtkFloatArray::SafeDownCast(a.Output()->GetPointData()->GetArray("Tangents"));
-    auto* tb = vtkFloatArray::SafeDownCast(b.Output()->GetPointData()->GetArray("Tangents"));
-    ASSERT_NE(ta, nullptr);
-    ASSERT_NE(tb, nullptr);
-    ASSERT_EQ(tb->GetNumberOfTuples(), spread->GetNumberOfPoints());
-    vtkIdType differ = 0;
-    for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
-    {
-      differ +=
-        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
-        ? 1
-        : 0;
-    }
-    EXPECT_EQ(differ, 0) << threads << " threads";
-  }
-  vtkSMPTools::Initialize(0);
+  ExpectSameFramesAtNewIds(torus, spread, newId);
   ExpectFastPathIsGeneralPath(spread, "torus with unused points");
   // A closed fan of k triangles, its centre at point 2047 and its ring at all other points.
   const int k = 8191, centre = 2047;
