@@ -1921,8 +1921,12 @@ private:
           }
         });
     }
-    Block<std::int32_t> w(3 * nt);
-    Block<std::array<float, 6>> dir(nt);
+    // One more value and direction: the task-local slots read a triangle's ids and
+    // directions as whole vectors (see LocalSlots).
+    Block<std::int32_t> w(3 * nt + 1);
+    Block<std::array<float, 6>> dir(nt + 1);
+    w[3 * nt] = 0;
+    dir[nt] = {};
     Block<unsigned char> orient(nt);
     // The spans of the triangle chunks, for the task-local slots (AVX-512 build only).
     const bool local = vtkSurfaceDetailVectorize::HaveAVX512();
@@ -2761,15 +2765,26 @@ private:
       for (vtkIdType t = t0; t < t1; ++t)
       {
         const std::int32_t a = w[3 * t], b = w[3 * t + 1], c = w[3 * t + 2];
-        const std::array<float, 6> dt = dir[t];
         const std::int32_t o = orient[t];
 #if defined(__GNUC__) && !defined(__clang__)
+        // The triangle's ids times 3 and its directions as two vectors (each reading past the
+        // triangle: see Finish), and each corner's record one permutation of the two.
         typedef float Record __attribute__((vector_size(32)));
-        const Record base = { 0.0f, 0.0f, dt[0], dt[1], dt[2], dt[3], dt[4], dt[5] };
+        typedef std::int32_t Ids __attribute__((vector_size(32)));
+        typedef std::int32_t Ids4 __attribute__((vector_size(16)));
+        typedef float Floats4 __attribute__((vector_size(16)));
+        Ids4 ids;
+        Record dirs;
+        std::memcpy(&ids, w + 3 * t, sizeof(Ids4));
+        std::memcpy(&dirs, dir[t].data(), sizeof(Record));
+        const Floats4 ids3 = reinterpret_cast<Floats4>(ids * 3);
+        const Record tri = __builtin_shufflevector(ids3, ids3, 0, 1, 2, 3, 0, 1, 2, 3);
+        const Record records[3] = { __builtin_shuffle(dirs, tri, Ids{ 9, 10, 0, 1, 2, 3, 4, 5 }),
+          __builtin_shuffle(dirs, tri, Ids{ 10, 8, 0, 1, 2, 3, 4, 5 }),
+          __builtin_shuffle(dirs, tri, Ids{ 8, 9, 0, 1, 2, 3, 4, 5 }) };
 #endif
-        // The corner at id, whose next and previous points are n and p: one store of its
-        // record.
-        auto copy = [&](std::int32_t id, std::int32_t n, std::int32_t p)
+        // Corner i, at point id: one store of its record.
+        auto copy = [&](int i, std::int32_t id)
         {
           const std::uint32_t x = static_cast<std::uint32_t>(id - vb);
           if (x < nv)
@@ -2778,21 +2793,18 @@ private:
             cursor[x] = at + RowStride;
             float* to = d + std::min(at, lastSlot);
 #if defined(__GNUC__) && !defined(__clang__)
-            Record r = base;
-            r[0] = __builtin_bit_cast(float, 3 * n);
-            r[1] = __builtin_bit_cast(float, 3 * p);
-            std::memcpy(to, &r, sizeof(r));
+            std::memcpy(to, &records[i], sizeof(Record));
 #else
-            const std::int32_t np[2] = { 3 * n, 3 * p };
+            const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3], 3 * w[3 * t + (i + 2) % 3] };
             std::memcpy(to, np, sizeof(np));
-            std::copy_n(dt.data(), 6, to + 2);
+            std::copy_n(dir[t].data(), 6, to + 2);
 #endif
             ones[x] += o;
           }
         };
-        copy(a, b, c);
-        copy(b, c, a);
-        copy(c, a, b);
+        copy(0, a);
+        copy(1, b);
+        copy(2, c);
       }
     }
     std::int32_t* __restrict count = ts.K.data();
