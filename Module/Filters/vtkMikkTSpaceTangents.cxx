@@ -2679,14 +2679,15 @@ private:
   // One task's lanes and slots; kept per thread from task to task.
   struct TaskSlots
   {
-    // Per vertex x of the task: its next slot, the number of its corners of orientation 1.
-    std::vector<std::int32_t> Cursor, Ones;
+    // Per vertex x of the task: its next slot.
+    std::vector<std::int32_t> Cursor;
     // The vertices that are not copies of smaller ones, one to a lane; per lane its number of
     // corners; per group of Lanes lanes its largest fan.
     std::vector<std::int32_t> Lane, K, GroupSlots;
     // The slots (see SlotBlock): each group has room for GroupRows rows of corners, and a
     // row is Lanes records, one per lane, of eight values (RowStride 8 Lanes, LaneStride 8):
-    // the next id at [c], the previous id at [c + 1], dP/ds and dP/dt at [c + 2 + q]. A copy
+    // the next id at [c], the previous id at [c + 1] (its top bit the triangle's texture
+    // orientation), dP/ds and dP/dt at [c + 2 + q]. A copy
     // into a slot is then one 32-byte store (eight scattered stores, one into each of eight
     // arrays side by side, took 5% more cycles on the 1M torus), and WeighSlots transposes
     // each row (TransposeRow). Room for the largest task (2 MB or more: huge pages, from
@@ -2730,7 +2731,6 @@ private:
     if (ts.Cursor.size() < nv)
     {
       ts.Cursor.resize(nv);
-      ts.Ones.resize(nv);
       ts.Lane.resize(nv);
       ts.K.resize(nv);
       ts.GroupSlots.resize(nv / Lanes + 1);
@@ -2754,8 +2754,6 @@ private:
     }
     std::int32_t* __restrict ids = reinterpret_cast<std::int32_t*>(ts.Slots->Get());
     float* __restrict d = reinterpret_cast<float*>(ts.Slots->Get());
-    std::int32_t* __restrict ones = ts.Ones.data();
-    std::fill_n(ones, nv, 0);
     // A fan too large writes over other lanes' slots (the task then fails) but no further
     // than the last row.
     constexpr std::int32_t lastSlot = static_cast<std::int32_t>(MaxTaskSlots) - RowStride;
@@ -2765,7 +2763,9 @@ private:
       for (vtkIdType t = t0; t < t1; ++t)
       {
         const std::int32_t a = w[3 * t], b = w[3 * t + 1], c = w[3 * t + 2];
-        const std::int32_t o = orient[t];
+        // The triangle's texture orientation as the top bit of each corner's previous id (see
+        // WeighSlots).
+        const std::int32_t mark = static_cast<std::int32_t>(std::uint32_t(orient[t]) << 31);
 #if defined(__GNUC__) && !defined(__clang__)
         // The triangle's ids times 3 and its directions as two vectors (each reading past the
         // triangle: see Finish), and each corner's record one permutation of the two.
@@ -2778,10 +2778,11 @@ private:
         std::memcpy(&ids, w + 3 * t, sizeof(Ids4));
         std::memcpy(&dirs, dir[t].data(), sizeof(Record));
         const Floats4 ids3 = reinterpret_cast<Floats4>(ids * 3);
-        const Record tri = __builtin_shufflevector(ids3, ids3, 0, 1, 2, 3, 0, 1, 2, 3);
-        const Record records[3] = { __builtin_shuffle(dirs, tri, Ids{ 9, 10, 0, 1, 2, 3, 4, 5 }),
-          __builtin_shuffle(dirs, tri, Ids{ 10, 8, 0, 1, 2, 3, 4, 5 }),
-          __builtin_shuffle(dirs, tri, Ids{ 8, 9, 0, 1, 2, 3, 4, 5 }) };
+        const Floats4 marked = reinterpret_cast<Floats4>((ids * 3) | mark);
+        const Record tri = __builtin_shufflevector(ids3, marked, 0, 1, 2, 3, 4, 5, 6, 7);
+        const Record records[3] = { __builtin_shuffle(dirs, tri, Ids{ 9, 14, 0, 1, 2, 3, 4, 5 }),
+          __builtin_shuffle(dirs, tri, Ids{ 10, 12, 0, 1, 2, 3, 4, 5 }),
+          __builtin_shuffle(dirs, tri, Ids{ 8, 13, 0, 1, 2, 3, 4, 5 }) };
 #endif
         // Corner i, at point id: one store of its record.
         auto copy = [&](int i, std::int32_t id)
@@ -2795,11 +2796,11 @@ private:
 #if defined(__GNUC__) && !defined(__clang__)
             std::memcpy(to, &records[i], sizeof(Record));
 #else
-            const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3], 3 * w[3 * t + (i + 2) % 3] };
+            const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3],
+              (3 * w[3 * t + (i + 2) % 3]) | mark };
             std::memcpy(to, np, sizeof(np));
             std::copy_n(dir[t].data(), 6, to + 2);
 #endif
-            ones[x] += o;
           }
         };
         copy(0, a);
@@ -2850,11 +2851,8 @@ private:
       int bad = 0;
       for (int j = 0; j < nb; ++j)
       {
-        const std::int32_t x = lane[l0 + j], k = count[l0 + j], o = ones[x];
-        fb.Vertex[j] = vb + x;
-        fb.K[j] = k;
-        fb.Handedness[j] = o != 0 ? 1.0f : -1.0f;
-        bad |= (o != 0) & (o != k);
+        fb.Vertex[j] = vb + lane[l0 + j];
+        fb.K[j] = count[l0 + j];
       }
       const double* __restrict un = this->UnitNormals;
       const PT* __restrict pts = this->P;
@@ -2889,6 +2887,11 @@ private:
         {
           std::copy_n(rowDir[q], Lanes, firstDir[q] + Lanes * g);
         }
+        // The first corner's orientation (WeighSlots checks the others against it).
+        for (int i = 0; i < Lanes; ++i)
+        {
+          fb.Handedness[Lanes * g + i] = rowIds[1][i] < 0 ? 1.0f : -1.0f;
+        }
       }
       ReferencesOf(
         fb, (nb + Lanes - 1) & ~(Lanes - 1), [firstDir](int j, int q) { return firstDir[q][j]; });
@@ -2900,7 +2903,7 @@ private:
         for (int a = 0; a < fb.K[j]; ++a)
         {
           n[a] = fb.Next[c0 + fb.RowStride * a] / 3;
-          p[a] = fb.Prev[c0 + fb.RowStride * a] / 3;
+          p[a] = (fb.Prev[c0 + fb.RowStride * a] & std::numeric_limits<std::int32_t>::max()) / 3;
         }
         return FanIsOneRun<true>(n, p, fb.K[j]);
       };
@@ -3663,6 +3666,7 @@ private:
       std::fill_n(turns, Lanes, Real(0));
       std::fill_n(cycles, Lanes, std::uint64_t(0));
       std::fill_n(ok, Lanes, 1);
+      alignas(64) std::int32_t firstOrient[Lanes];
       for (int s = 0; s < fb.GroupSlots[g]; ++s)
       {
         const int c0 = fb.GroupFirst[g] + fb.RowStride * s;
@@ -3671,6 +3675,22 @@ private:
         if constexpr (Records)
         {
           TransposeRow(fb.Dir[0] - 2 + c0, rowIds, rowDir);
+          // The top bit of a previous id is its triangle's texture orientation (see
+          // LocalSlots): every corner's must be its lane's first corner's.
+          alignas(64) std::int32_t orient[Lanes];
+          for (int i = 0; i < Lanes; ++i)
+          {
+            orient[i] = rowIds[1][i] < 0 ? 1 : 0;
+            rowIds[1][i] &= std::numeric_limits<std::int32_t>::max();
+          }
+          if (s == 0)
+          {
+            std::copy_n(orient, Lanes, firstOrient);
+          }
+          for (int i = 0; i < Lanes; ++i)
+          {
+            ok[i] &= (s >= kk[i]) | (orient[i] == firstOrient[i]);
+          }
         }
         auto dirs = [&](int q) { return Records ? rowDir[q] : fb.Dir[q] + c0; };
         const std::int32_t* __restrict next = Records ? rowIds[0] : fb.Next + c0;

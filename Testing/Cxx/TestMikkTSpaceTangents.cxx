@@ -892,6 +892,44 @@ TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverChainsAndDoubleTurns)
   }
 }
 
+// The fast path takes a vertex only if all its triangles have one texture orientation: a
+// closed planar fan of six triangles, the first three of them mirrored in texture space,
+// while every dP/ds and dP/dt (times the orientation's sign, as MikkTSpace takes them)
+// stays within 78 degrees of its vertex's first triangle's, so that the quarter-turn checks
+// pass (the texture coordinates were found by a random search for that). The general
+// algorithm splits the centre and two ring points by orientation, and the default must
+// give exactly its points and frames.
+TEST(vtkMikkTSpaceTangents, FastPathHandsOverFansOfMixedTextureOrientation)
+{
+  const double tc[6][2] = { { 0.236, 0.815 }, { 1.834, -0.151 }, { 0.457, -0.311 },
+    { -0.206, -0.357 }, { 0.038, -1.832 }, { 1.471, -2.188 } };
+  vtkNew<vtkPoints> points;
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
+  for (int k = 0; k < 6; ++k)
+  {
+    points->InsertNextPoint(std::cos(vtkMath::Pi() * k / 3), std::sin(vtkMath::Pi() * k / 3), 0);
+    normals->InsertNextTuple3(0, 0, 1);
+    tcoords->InsertNextTuple(tc[k]);
+  }
+  points->InsertNextPoint(0, 0, 0);
+  normals->InsertNextTuple3(0, 0, 1);
+  tcoords->InsertNextTuple2(0, 0);
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    const vtkIdType t[3] = { 6, k, (k + 1) % 6 };
+    polys->InsertNextCell(3, t);
+  }
+  auto fan = MakeSurface(points, polys, normals, tcoords);
+  vtkNew<vtkMikkTSpaceTangents> general;
+  general->SetInputData(fan);
+  general->SetAngularThreshold(179.9);
+  general->Update();
+  EXPECT_GT(general->GetOutput()->GetNumberOfPoints(), fan->GetNumberOfPoints());
+  ExpectFastPathIsGeneralPath(fan, "fan of mixed texture orientation");
+}
+
 // The closed-fan test's sign condition (every corner turning the same way about the
 // normal) is what tells a fan of several closed walks, one of which folds back on itself,
 // from one closed run: two closed walks of four triangles each around the origin, both
