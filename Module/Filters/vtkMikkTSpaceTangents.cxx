@@ -1793,11 +1793,11 @@ struct SlotBlock
   int GroupFirst[MaxGroups];
   int GroupSlots[MaxGroups];
   // Per lane (a group's lanes past the block's vertices repeat its first vertex, with no
-  // corners): its vertex, number of corners and handedness; its unit normal (in double and
-  // in Real), position, the offset of its first triangle's directions, the projections of
-  // those (unit vectors, see References), whether checks passed; the corners' sums of
-  // weighted dP/ds, of turns and of id mixes (see FanBlock), the closed-fan test's answer,
-  // the tangent.
+  // corners; a task's slots also give a vertex no triangle uses a lane with none): its vertex,
+  // number of corners and handedness; its unit normal (in double and in Real), position, the offset
+  // of its first triangle's directions, the projections of those (unit vectors, see References),
+  // whether checks passed; the corners' sums of weighted dP/ds, of turns and of id mixes (see
+  // FanBlock), the closed-fan test's answer, the tangent.
   std::int32_t Vertex[MaxVertices];
   float Handedness[MaxVertices];
   alignas(64) std::int32_t K[MaxVertices];
@@ -1819,9 +1819,11 @@ struct SlotBlock
   std::int32_t* Prev;
   float* Dir[6];
   // From one corner of a lane to the next in each of the arrays above: Lanes in SlotStorage,
-  // 8 Lanes in a task's slots, where the eight arrays' slots of a row of corners are side by
-  // side.
+  // 8 Lanes in a task's slots, where a row of corners is Lanes records of eight values.
   int RowStride = Lanes;
+  // From one lane's slot to the next: 1, or 8 in a task's slots, where each slot is a record
+  // of its eight values (see FastMikk::TaskSlots).
+  int LaneStride = 1;
 
   int GroupStart(int g) const { return g > 0 ? GroupFirst[g - 1] + Lanes * GroupSlots[g - 1] : 0; }
   // The block's slots with one more fan, of k corners.
@@ -1919,8 +1921,12 @@ private:
           }
         });
     }
-    Block<std::int32_t> w(3 * nt);
-    Block<std::array<float, 6>> dir(nt);
+    // One more value and direction: the task-local slots read a triangle's ids and
+    // directions as whole vectors (see LocalSlots).
+    Block<std::int32_t> w(3 * nt + 1);
+    Block<std::array<float, 6>> dir(nt + 1);
+    w[3 * nt] = 0;
+    dir[nt] = {};
     Block<unsigned char> orient(nt);
     // The spans of the triangle chunks, for the task-local slots (AVX-512 build only).
     const bool local = vtkSurfaceDetailVectorize::HaveAVX512();
@@ -2670,25 +2676,30 @@ private:
     return true;
   }
 
-  // One task's counts, lanes and slots; kept per thread from task to task.
+  // One task's lanes and slots; kept per thread from task to task.
   struct TaskSlots
   {
-    // Per vertex x of the task: its number of corners (at [x + 1]), its next slot, the
-    // number of its corners of orientation 1.
-    std::vector<std::int32_t> Count, Cursor, Ones;
-    // The vertices with corners, one to a lane; per group of Lanes lanes its first slot and
-    // its largest fan.
-    std::vector<std::int32_t> Lane, GroupFirst, GroupSlots;
-    // The slots (see SlotBlock), each group's rows of corners one after the other, and in
-    // a row the eight arrays side by side (RowStride 8 Lanes): next ids at [c], previous
-    // ids at [c + Lanes], dP/ds and dP/dt at [c + (q + 2) Lanes]. A copy into a slot then
-    // writes eight values at constant offsets from one index, and a group's row is eight
-    // whole cache lines. Room for the largest task (2 MB or more: huge pages, from
+    // Per vertex x of the task: its next slot.
+    std::vector<std::int32_t> Cursor;
+    // The vertices that are not copies of smaller ones, one to a lane; per lane its number of
+    // corners; per group of Lanes lanes its largest fan.
+    std::vector<std::int32_t> Lane, K, GroupSlots;
+    // The slots (see SlotBlock): each group has room for GroupRows rows of corners, and a
+    // row is Lanes records, one per lane, of eight values (RowStride 8 Lanes, LaneStride 8):
+    // the next id at [c], the previous id at [c + 1] (its top bit the triangle's texture
+    // orientation), dP/ds and dP/dt at [c + 2 + q]. A copy
+    // into a slot is then one 32-byte store (eight scattered stores, one into each of eight
+    // arrays side by side, took 5% more cycles on the 1M torus), and WeighSlots transposes
+    // each row (TransposeRow). Room for the largest task (2 MB or more: huge pages, from
     // vtkSurfaceDetailMemory's cache at the next execution).
     std::shared_ptr<Block<unsigned char>> Slots;
   };
+  // Room for the largest fan: only the rows that the fans fill are touched. (Groups 33 rows
+  // apart, 16.5 kB rather than 16, so that their rows fall into other cache sets, took the
+  // same cycles.)
+  static constexpr int GroupRows = MaxFastFan;
   static constexpr std::size_t MaxTaskSlots =
-    8 * MaxFastFan * std::size_t(TaskVertices + SlotBlock<Real>::Lanes);
+    std::size_t(8 * SlotBlock<Real>::Lanes) * GroupRows * (TaskVertices / SlotBlock<Real>::Lanes);
 
   // A SlotBlock, and its first corners' directions for References, allocated by each task:
   // the compiler then knows that they alias nothing else, and vectorises the loops over
@@ -2700,83 +2711,42 @@ private:
   };
 
   // The fans of the vertices [vb, ve) in the AVX-512 build, from the triangles of the chunks
-  // [cb, ce) of taskChunks (see TaskChunks). The task counts its vertices' corners, gives
-  // each vertex with corners a lane (in vertex order, as SlotFans does, but in one layout
-  // for the whole task), then copies each corner of its vertices, in triangle order (the
-  // order of VertexCorners' lists, so each fan's sums are SlotFans' to the bit), straight
-  // into its slot, reading the triangles' directions in their order. Then SlotFans' steps
-  // per block of SlotBlock's vertices. False if a check fails or a fan is too large.
+  // [cb, ce) of taskChunks (see TaskChunks). The task gives each vertex that is not a copy
+  // of a smaller one a lane (in vertex order, as SlotFans does, but in one layout for the
+  // whole task) and room for the largest fan, copies each corner of its vertices, in
+  // triangle order (the order of VertexCorners' lists, so each fan's sums are SlotFans' to
+  // the bit), straight into its slot, reading the triangles' directions in their order, and
+  // counts the corners by the slots' cursors (no pass of its own). A lane with no corners (a
+  // vertex no triangle uses) stays empty, with copies of another lane's corners, as the
+  // lanes past the vertices in SlotFans. Then SlotFans' steps per block of SlotBlock's
+  // vertices. False if a check fails or a fan is too large.
   VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
     const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
     const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
+    constexpr int GroupStride = GroupRows * RowStride;
     const std::uint32_t nv = static_cast<std::uint32_t>(ve - vb);
-    if (ts.Count.size() < nv + 1)
+    if (ts.Cursor.size() < nv)
     {
-      ts.Count.resize(nv + 1);
       ts.Cursor.resize(nv);
-      ts.Ones.resize(nv);
       ts.Lane.resize(nv);
-      ts.GroupFirst.resize(nv / Lanes + 2);
-      ts.GroupSlots.resize(nv / Lanes + 2);
-    }
-    std::int32_t* __restrict count = ts.Count.data();
-    std::fill_n(count, nv + 1, 0);
-    for (const std::int32_t* ch = cb; ch < ce; ++ch)
-    {
-      const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
-      for (vtkIdType c = 3 * t0; c < 3 * t1; ++c)
-      {
-        // A branch: the corners of other vertices come in runs, and counting them in one
-        // place would chain their increments through memory.
-        const std::uint32_t x = static_cast<std::uint32_t>(w[c] - vb);
-        if (x < nv)
-        {
-          ++count[x + 1];
-        }
-      }
+      ts.K.resize(nv);
+      ts.GroupSlots.resize(nv / Lanes + 1);
     }
     std::int32_t* __restrict lane = ts.Lane.data();
-    std::int32_t* __restrict groupFirst = ts.GroupFirst.data();
-    std::int32_t* __restrict groupSlots = ts.GroupSlots.data();
     std::int32_t* __restrict cursor = ts.Cursor.data();
     int nl = 0;
     for (std::uint32_t x = 0; x < nv; ++x)
     {
-      const std::int32_t k = count[x + 1];
-      if (k > MaxFastFan)
+      if (this->Welded &&
+        weld[vb + static_cast<std::int32_t>(x)] != vb + static_cast<std::int32_t>(x))
       {
-        return false;
+        continue; // a copy of a smaller point, filled later
       }
-      const std::int32_t v = vb + static_cast<std::int32_t>(x);
-      if (k == 0)
-      {
-        if (!this->Welded || weld[v] == v) // else a copy of a smaller point, filled later
-        {
-          const double* u = this->UnitNormals + 3 * std::size_t(v);
-          FinalTangent(V3{ u[0], u[1], u[2] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 },
-            out + 4 * std::size_t(v));
-        }
-        continue;
-      }
-      if (nl % Lanes == 0)
-      {
-        groupSlots[nl / Lanes] = 0;
-      }
-      groupSlots[nl / Lanes] = std::max(groupSlots[nl / Lanes], k);
+      cursor[x] = GroupStride * (nl / Lanes) + 8 * (nl % Lanes);
       lane[nl++] = static_cast<std::int32_t>(x);
-    }
-    const int groups = (nl + Lanes - 1) / Lanes;
-    groupFirst[0] = 0;
-    for (int g = 0; g < groups; ++g)
-    {
-      groupFirst[g + 1] = groupFirst[g] + RowStride * groupSlots[g];
-    }
-    for (int j = 0; j < nl; ++j)
-    {
-      cursor[lane[j]] = groupFirst[j / Lanes] + j % Lanes;
     }
     if (!ts.Slots)
     {
@@ -2784,65 +2754,105 @@ private:
     }
     std::int32_t* __restrict ids = reinterpret_cast<std::int32_t*>(ts.Slots->Get());
     float* __restrict d = reinterpret_cast<float*>(ts.Slots->Get());
-    std::int32_t* __restrict ones = ts.Ones.data();
-    std::fill_n(ones, nv, 0);
+    // A fan too large writes over other lanes' slots (the task then fails) but no further
+    // than the last row.
+    constexpr std::int32_t lastSlot = static_cast<std::int32_t>(MaxTaskSlots) - RowStride;
     for (const std::int32_t* ch = cb; ch < ce; ++ch)
     {
       const vtkIdType t0 = SpanTriangles * *ch, t1 = std::min(nTris, t0 + SpanTriangles);
       for (vtkIdType t = t0; t < t1; ++t)
       {
         const std::int32_t a = w[3 * t], b = w[3 * t + 1], c = w[3 * t + 2];
-        const std::array<float, 6> dt = dir[t];
-        const std::int32_t o = orient[t];
-        // The corner at id, whose next and previous points are n and p.
-        auto copy = [&](std::int32_t id, std::int32_t n, std::int32_t p)
+        // The triangle's texture orientation as the top bit of each corner's previous id (see
+        // WeighSlots).
+        const std::int32_t mark = static_cast<std::int32_t>(std::uint32_t(orient[t]) << 31);
+#if defined(__GNUC__) && !defined(__clang__)
+        // The triangle's ids times 3 and its directions as two vectors (each reading past the
+        // triangle: see Finish), and each corner's record one permutation of the two.
+        typedef float Record __attribute__((vector_size(32)));
+        typedef std::int32_t Ids __attribute__((vector_size(32)));
+        typedef std::int32_t Ids4 __attribute__((vector_size(16)));
+        typedef float Floats4 __attribute__((vector_size(16)));
+        Ids4 ids;
+        Record dirs;
+        std::memcpy(&ids, w + 3 * t, sizeof(Ids4));
+        std::memcpy(&dirs, dir[t].data(), sizeof(Record));
+        const Floats4 ids3 = reinterpret_cast<Floats4>(ids * 3);
+        const Floats4 marked = reinterpret_cast<Floats4>((ids * 3) | mark);
+        const Record tri = __builtin_shufflevector(ids3, marked, 0, 1, 2, 3, 4, 5, 6, 7);
+        const Record records[3] = { __builtin_shuffle(dirs, tri, Ids{ 9, 14, 0, 1, 2, 3, 4, 5 }),
+          __builtin_shuffle(dirs, tri, Ids{ 10, 12, 0, 1, 2, 3, 4, 5 }),
+          __builtin_shuffle(dirs, tri, Ids{ 8, 13, 0, 1, 2, 3, 4, 5 }) };
+#endif
+        // Corner i, at point id: one store of its record.
+        auto copy = [&](int i, std::int32_t id)
         {
           const std::uint32_t x = static_cast<std::uint32_t>(id - vb);
           if (x < nv)
           {
-            const std::size_t slot = static_cast<std::size_t>(cursor[x]);
-            cursor[x] += RowStride;
-            ids[slot] = 3 * n;
-            ids[slot + Lanes] = 3 * p;
-            for (int q = 0; q < 6; ++q)
-            {
-              d[slot + (q + 2) * Lanes] = dt[q];
-            }
-            ones[x] += o;
+            const std::int32_t at = cursor[x];
+            cursor[x] = at + RowStride;
+            float* to = d + std::min(at, lastSlot);
+#if defined(__GNUC__) && !defined(__clang__)
+            std::memcpy(to, &records[i], sizeof(Record));
+#else
+            const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3],
+              (3 * w[3 * t + (i + 2) % 3]) | mark };
+            std::memcpy(to, np, sizeof(np));
+            std::copy_n(dir[t].data(), 6, to + 2);
+#endif
           }
         };
-        copy(a, b, c);
-        copy(b, c, a);
-        copy(c, a, b);
+        copy(0, a);
+        copy(1, b);
+        copy(2, c);
       }
+    }
+    std::int32_t* __restrict count = ts.K.data();
+    std::int32_t* __restrict groupSlots = ts.GroupSlots.data();
+    std::int32_t largest = 0;
+    for (int g = 0; g < (nl + Lanes - 1) / Lanes; ++g)
+    {
+      // The group's largest fan in a local (in memory, each lane's max waited on the last).
+      std::int32_t slots = 0;
+      for (int j = Lanes * g; j < std::min(nl, Lanes * (g + 1)); ++j)
+      {
+        const std::int32_t k = (cursor[lane[j]] - (GroupStride * g + 8 * (j % Lanes))) / RowStride;
+        count[j] = k;
+        slots = std::max(slots, k);
+      }
+      groupSlots[g] = slots;
+      largest = std::max(largest, slots);
+    }
+    if (largest > MaxFastFan)
+    {
+      return false;
     }
     std::unique_ptr<TaskBlock> block(new TaskBlock);
     SlotBlock<Real>& fb = block->Fans;
     fb.Next = ids;
-    fb.Prev = ids + Lanes;
+    fb.Prev = ids + 1;
     for (int q = 0; q < 6; ++q)
     {
-      fb.Dir[q] = d + (q + 2) * Lanes;
+      fb.Dir[q] = d + 2 + q;
     }
     fb.RowStride = RowStride;
+    fb.LaneStride = 8;
     constexpr int MaxVertices = SlotBlock<Real>::MaxVertices;
     for (int l0 = 0; l0 < nl; l0 += MaxVertices)
     {
       const int nb = std::min(MaxVertices, nl - l0);
       for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
       {
-        fb.GroupFirst[g] = groupFirst[l0 / Lanes + g];
+        fb.GroupFirst[g] = GroupStride * (l0 / Lanes + g);
         fb.GroupSlots[g] = groupSlots[l0 / Lanes + g];
       }
       // Checks fold into a flag (loops with an early exit do not vectorise).
       int bad = 0;
       for (int j = 0; j < nb; ++j)
       {
-        const std::int32_t x = lane[l0 + j], k = count[x + 1], o = ones[x];
-        fb.Vertex[j] = vb + x;
-        fb.K[j] = k;
-        fb.Handedness[j] = o != 0 ? 1.0f : -1.0f;
-        bad |= (o != 0) & (o != k);
+        fb.Vertex[j] = vb + lane[l0 + j];
+        fb.K[j] = count[l0 + j];
       }
       const double* __restrict un = this->UnitNormals;
       const PT* __restrict pts = this->P;
@@ -2850,7 +2860,8 @@ private:
       {
         const std::size_t v = static_cast<std::size_t>(fb.Vertex[j]);
         const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
-        bad |= !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
+        // An empty lane's vertex gets the default frame from its normal, as it is.
+        bad |= (fb.K[j] > 0) & !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
         for (int q = 0; q < 3; ++q)
         {
           fb.NV[q][j] = u[q];
@@ -2864,14 +2875,22 @@ private:
       }
       fb.NumberOfVertices = nb;
       Pad(fb);
-      // Each lane's first corner; the lanes past the block's vertices repeat their group's
-      // first lane, as Pad made them.
+      // Each lane's first corner; empty lanes and the lanes past the block's vertices repeat
+      // another lane's, as Pad made them.
       float(*__restrict firstDir)[SlotBlock<Real>::MaxVertices] = block->FirstDir;
       for (int g = 0; g < (nb + Lanes - 1) / Lanes; ++g)
       {
+        alignas(64) std::int32_t rowIds[2][Lanes];
+        alignas(64) float rowDir[6][Lanes];
+        TransposeRow(d + fb.GroupFirst[g], rowIds, rowDir);
         for (int q = 0; q < 6; ++q)
         {
-          std::copy_n(fb.Dir[q] + fb.GroupFirst[g], Lanes, firstDir[q] + Lanes * g);
+          std::copy_n(rowDir[q], Lanes, firstDir[q] + Lanes * g);
+        }
+        // The first corner's orientation (WeighSlots checks the others against it).
+        for (int i = 0; i < Lanes; ++i)
+        {
+          fb.Handedness[Lanes * g + i] = rowIds[1][i] < 0 ? 1.0f : -1.0f;
         }
       }
       ReferencesOf(
@@ -2880,20 +2899,77 @@ private:
       auto oneRun = [&](int j)
       {
         std::int32_t n[MaxFastFan + 8] = {}, p[MaxFastFan + 8] = {};
-        const int c0 = fb.GroupFirst[j / Lanes] + j % Lanes;
+        const int c0 = fb.GroupFirst[j / Lanes] + fb.LaneStride * (j % Lanes);
         for (int a = 0; a < fb.K[j]; ++a)
         {
           n[a] = fb.Next[c0 + fb.RowStride * a] / 3;
-          p[a] = fb.Prev[c0 + fb.RowStride * a] / 3;
+          p[a] = (fb.Prev[c0 + fb.RowStride * a] & std::numeric_limits<std::int32_t>::max()) / 3;
         }
         return FanIsOneRun<true>(n, p, fb.K[j]);
       };
-      if (!this->WeighSlots(fb) || !SumSlots(fb, oneRun, out))
+      if (!this->WeighSlots<true>(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
     }
     return true;
+  }
+
+  // One row of a task's slots, Lanes records of eight values (next and previous ids, dP/ds,
+  // dP/dt), as eight arrays of Lanes values: in the AVX-512 build three steps of two-vector
+  // permutations, 24 in all, in place of the copies' seven more scattered stores per corner.
+  VTK_ALWAYS_INLINE static void TransposeRow(const float* __restrict records,
+    std::int32_t (*__restrict ids)[SlotBlock<Real>::Lanes],
+    float (*__restrict dirs)[SlotBlock<Real>::Lanes])
+  {
+    static_assert(SlotBlock<Real>::Lanes == 16, "sixteen records of eight");
+#if defined(__GNUC__) && !defined(__clang__)
+    typedef float V __attribute__((vector_size(64)));
+    typedef std::int32_t M __attribute__((vector_size(64)));
+    // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
+    // records) their values 0-3 or 4-7, in the order (value, record); the second, from two
+    // of those, two values of eight records; the third one value of all sixteen.
+    const M lo4 = { 0, 8, 16, 24, 1, 9, 17, 25, 2, 10, 18, 26, 3, 11, 19, 27 };
+    const M hi4 = { 4, 12, 20, 28, 5, 13, 21, 29, 6, 14, 22, 30, 7, 15, 23, 31 };
+    const M lo2 = { 0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23 };
+    const M hi2 = { 8, 9, 10, 11, 24, 25, 26, 27, 12, 13, 14, 15, 28, 29, 30, 31 };
+    const M lo1 = { 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 };
+    const M hi1 = { 8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31 };
+    V r[8], a[8], b[8];
+    for (int k = 0; k < 8; ++k)
+    {
+      std::memcpy(&r[k], records + 16 * k, sizeof(V));
+    }
+    for (int m = 0; m < 4; ++m) // a[2 m + h]: records 4m to 4m + 3, values 4h to 4h + 3
+    {
+      a[2 * m] = __builtin_shuffle(r[2 * m], r[2 * m + 1], lo4);
+      a[2 * m + 1] = __builtin_shuffle(r[2 * m], r[2 * m + 1], hi4);
+    }
+    for (int n = 0; n < 2; ++n) // b[4 n + 2 h + e]: records 8n to 8n + 7, values 4h + 2e, + 1
+    {
+      for (int h = 0; h < 2; ++h)
+      {
+        b[4 * n + 2 * h] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], lo2);
+        b[4 * n + 2 * h + 1] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], hi2);
+      }
+    }
+    for (int q = 0; q < 8; ++q)
+    {
+      const V v = __builtin_shuffle(b[q / 2], b[4 + q / 2], q % 2 ? hi1 : lo1);
+      std::memcpy(
+        q < 2 ? static_cast<void*>(ids[q]) : static_cast<void*>(dirs[q - 2]), &v, sizeof(V));
+    }
+#else
+    for (int i = 0; i < SlotBlock<Real>::Lanes; ++i)
+    {
+      std::memcpy(&ids[0][i], records + 8 * i, sizeof(float));
+      std::memcpy(&ids[1][i], records + 8 * i + 1, sizeof(float));
+      for (int q = 0; q < 6; ++q)
+      {
+        dirs[q][i] = records[8 * i + 2 + q];
+      }
+    }
+#endif
   }
 
   SURFACEDETAIL_TARGET_AVX512 static bool LocalSlotsAVX512(const FastMikk& self,
@@ -3036,8 +3112,11 @@ private:
         {
           break;
         }
-        if (!this->GatherFan<Wide>(
-              v, k, nextIds, prevIds, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        auto gather = [&](const V3& n, const std::int32_t* list, const std::int32_t* next,
+                        const std::int32_t* prev)
+        { return this->GatherFan<Wide>(v, k, n, list, next, prev, orient, fb); };
+        if (!this->WithFan(
+              v, k, nextIds, prevIds, first, corners, out + 4 * std::size_t(v), gather))
         {
           return false;
         }
@@ -3052,13 +3131,13 @@ private:
     return true;
   }
 
-  // Checks the fan of v and appends its corners to the block (a vertex that no triangle
-  // uses gets the default frame at once). Whether the fan is one run is decided here in the
-  // baseline build, in SumFans in the others (see WeighCorners).
-  template <bool Wide>
-  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const unsigned char* orient, const std::int32_t* first,
-    const std::int32_t* corners, FanBlock<Real>& fb, float* out) const
+  // The start of GatherFan and GatherSlots: a vertex that no triangle uses gets the default
+  // frame at once, a normal not of unit length fails the fast path; else gather(n, corners,
+  // next ids, previous ids) with v's unit normal and its fan's lists.
+  template <typename Gather>
+  VTK_ALWAYS_INLINE bool WithFan(std::int32_t v, int k, const std::int32_t* nextIds,
+    const std::int32_t* prevIds, const std::int32_t* first, const std::int32_t* corners, float* out,
+    Gather&& gather) const
   {
     const double* u = this->UnitNormals + 3 * std::size_t(v);
     const V3 n{ u[0], u[1], u[2] };
@@ -3071,9 +3150,17 @@ private:
     {
       return false;
     }
-    const std::int32_t* list = corners + first[v];
-    const std::int32_t* next = nextIds + first[v];
-    const std::int32_t* prev = prevIds + first[v];
+    const std::int32_t f = first[v];
+    return gather(n, corners + f, nextIds + f, prevIds + f);
+  }
+
+  // Checks the fan of v and appends its corners to the block. Whether the fan is one run is
+  // decided here in the baseline build, in SumFans in the others (see WeighCorners).
+  template <bool Wide>
+  VTK_ALWAYS_INLINE bool GatherFan(std::int32_t v, int k, const V3& n, const std::int32_t* list,
+    const std::int32_t* next, const std::int32_t* prev, const unsigned char* orient,
+    FanBlock<Real>& fb) const
+  {
     const unsigned char o = orient[list[0] >> 2];
     std::int32_t* tri = fb.Triangle + fb.NumberOfCorners;
     int same = 1;
@@ -3422,8 +3509,11 @@ private:
         {
           break;
         }
-        if (!this->GatherSlots(
-              v, k, nextIds, prevIds, dir, orient, first, corners, fb, out + 4 * std::size_t(v)))
+        auto gather = [&](const V3& n, const std::int32_t* list, const std::int32_t* next,
+                        const std::int32_t* prev)
+        { return this->GatherSlots(v, k, n, list, next, prev, dir, orient, fb); };
+        if (!this->WithFan(
+              v, k, nextIds, prevIds, first, corners, out + 4 * std::size_t(v), gather))
         {
           return false;
         }
@@ -3437,7 +3527,7 @@ private:
         const std::int32_t f = first[fb.Vertex[j]];
         return FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]);
       };
-      if (!this->WeighSlots(fb) || !SumSlots(fb, oneRun, out))
+      if (!this->WeighSlots<false>(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
@@ -3445,27 +3535,12 @@ private:
     return true;
   }
 
-  // Checks the fan of v and copies it into the block's next lane (a vertex that no triangle
-  // uses gets the default frame at once).
-  VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, SlotBlock<Real>& fb, float* out) const
+  // Checks the fan of v and copies it into the block's next lane.
+  VTK_ALWAYS_INLINE bool GatherSlots(std::int32_t v, int k, const V3& n, const std::int32_t* list,
+    const std::int32_t* next, const std::int32_t* prev, const std::array<float, 6>* dir,
+    const unsigned char* orient, SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
-    const double* u = this->UnitNormals + 3 * std::size_t(v);
-    const V3 n{ u[0], u[1], u[2] };
-    if (k == 0)
-    {
-      FinalTangent(n, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, out);
-      return true;
-    }
-    if (!(std::abs(Dot(n, n) - 1.0) < 1e-6))
-    {
-      return false;
-    }
-    const std::int32_t* list = corners + first[v];
-    const std::int32_t* next = nextIds + first[v];
-    const std::int32_t* prev = prevIds + first[v];
     const int j = fb.NumberOfVertices;
     const int g = j / Lanes, i = j % Lanes;
     if (i == 0)
@@ -3498,8 +3573,8 @@ private:
     fb.First6[j] = 6 * (list[0] >> 2);
     for (int x = 0; x < 3; ++x)
     {
-      fb.NV[x][j] = u[x];
-      fb.NR[x][j] = static_cast<Real>(u[x]);
+      fb.NV[x][j] = n[x];
+      fb.NR[x][j] = static_cast<Real>(n[x]);
       fb.Position[x][j] = Real(this->P[3 * std::size_t(v) + x]);
     }
     ++fb.NumberOfVertices;
@@ -3508,7 +3583,8 @@ private:
 
   // Fills each lane's slots past its fan with copies of its last corner (masked off in
   // WeighSlots), and the last group's lanes past the block's vertices with copies of the
-  // group's first lane, with no corners (and its corners).
+  // group's first lane, with no corners; a lane with no corners gets the corners of the
+  // group's first lane that has some.
   VTK_ALWAYS_INLINE static void Pad(SlotBlock<Real>& fb)
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
@@ -3528,13 +3604,25 @@ private:
         fb.Position[x][j] = fb.Position[x][j0];
       }
     }
+    int full = 0; // the group's first lane with corners
     for (int j = 0; j < nl; ++j)
     {
       const int g = j / Lanes, i = j % Lanes, k = fb.K[j];
+      if (i == 0)
+      {
+        full = j;
+        while (fb.K[full] == 0 && full < j + Lanes - 1)
+        {
+          ++full;
+        }
+      }
+      const int kf = fb.K[full];
       for (int s = k; s < fb.GroupSlots[g]; ++s)
       {
-        const int c = fb.GroupFirst[g] + fb.RowStride * s + i;
-        const int from = fb.GroupFirst[g] + (k > 0 ? fb.RowStride * (k - 1) + i : fb.RowStride * s);
+        const int c = fb.GroupFirst[g] + fb.RowStride * s + fb.LaneStride * i;
+        const int from = fb.GroupFirst[g] +
+          (k > 0 ? fb.RowStride * (k - 1) + fb.LaneStride * i
+                 : fb.RowStride * std::min(s, kf - 1) + fb.LaneStride * (full % Lanes));
         fb.Next[c] = fb.Next[from];
         fb.Prev[c] = fb.Prev[from];
         for (int x = 0; x < 6; ++x)
@@ -3549,6 +3637,8 @@ private:
   // dP/dt are checked against its references (a quarter turn), and the closed-fan test's turns and
   // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
+  // Records: the slots are records (a task's slots), transposed a row at a time.
+  template <bool Records>
   VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
@@ -3576,12 +3666,37 @@ private:
       std::fill_n(turns, Lanes, Real(0));
       std::fill_n(cycles, Lanes, std::uint64_t(0));
       std::fill_n(ok, Lanes, 1);
+      alignas(64) std::int32_t firstOrient[Lanes];
       for (int s = 0; s < fb.GroupSlots[g]; ++s)
       {
         const int c0 = fb.GroupFirst[g] + fb.RowStride * s;
-        const std::int32_t* __restrict next = fb.Next + c0, * __restrict prev = fb.Prev + c0;
-        const float* __restrict dsx = fb.Dir[0] + c0, * __restrict dsy = fb.Dir[1] + c0, * __restrict dsz = fb.Dir[2] + c0;
-        const float* __restrict dtx = fb.Dir[3] + c0, * __restrict dty = fb.Dir[4] + c0, * __restrict dtz = fb.Dir[5] + c0;
+        alignas(64) std::int32_t rowIds[2][Lanes];
+        alignas(64) float rowDir[6][Lanes];
+        if constexpr (Records)
+        {
+          TransposeRow(fb.Dir[0] - 2 + c0, rowIds, rowDir);
+          // The top bit of a previous id is its triangle's texture orientation (see
+          // LocalSlots): every corner's must be its lane's first corner's.
+          alignas(64) std::int32_t orient[Lanes];
+          for (int i = 0; i < Lanes; ++i)
+          {
+            orient[i] = rowIds[1][i] < 0 ? 1 : 0;
+            rowIds[1][i] &= std::numeric_limits<std::int32_t>::max();
+          }
+          if (s == 0)
+          {
+            std::copy_n(orient, Lanes, firstOrient);
+          }
+          for (int i = 0; i < Lanes; ++i)
+          {
+            ok[i] &= (s >= kk[i]) | (orient[i] == firstOrient[i]);
+          }
+        }
+        auto dirs = [&](int q) { return Records ? rowDir[q] : fb.Dir[q] + c0; };
+        const std::int32_t* __restrict next = Records ? rowIds[0] : fb.Next + c0;
+        const std::int32_t* __restrict prev = Records ? rowIds[1] : fb.Prev + c0;
+        const float* __restrict dsx = dirs(0), * __restrict dsy = dirs(1), * __restrict dsz = dirs(2);
+        const float* __restrict dtx = dirs(3), * __restrict dty = dirs(4), * __restrict dtz = dirs(5);
         // Next and Prev hold 3 * id, the same multisets as the ids.
         for (int i = 0; i < Lanes; ++i)
         {
@@ -3658,6 +3773,13 @@ private:
     }
     for (int j = 0; j < nv; ++j)
     {
+      float* o = out + 4 * std::size_t(fb.Vertex[j]);
+      if (kk[j] == 0)
+      {
+        // A vertex that no triangle uses (the task-local slots' empty lanes).
+        FinalTangent(V3{ nx[j], ny[j], nz[j] }, TSpace{ { { 0.0, 0.0, 0.0 } }, true, -1 }, o);
+        continue;
+      }
       if (fb.Good[j] == 0.0)
       {
         return false;
@@ -3666,7 +3788,6 @@ private:
       {
         return false;
       }
-      float* o = out + 4 * std::size_t(fb.Vertex[j]);
       o[0] = fb.Tangent[0][j];
       o[1] = fb.Tangent[1][j];
       o[2] = fb.Tangent[2][j];

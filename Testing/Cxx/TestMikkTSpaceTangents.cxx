@@ -348,6 +348,38 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
   }
 }
 
+namespace
+{
+// Every point of a must get the bits that b gives point newId of it, at 1 and 2 threads,
+// without errors or warnings (b: a with its points renumbered, or more points added).
+void ExpectSameFramesAtNewIds(vtkPolyData* a, vtkPolyData* b, const std::vector<vtkIdType>& newId)
+{
+  for (int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    FilterRun ra(a);
+    FilterRun rb(b);
+    EXPECT_EQ(ra.Errors->Count + rb.Errors->Count + ra.Warnings->Count + rb.Warnings->Count, 0);
+    auto* ta = vtkFloatArray::SafeDownCast(ra.Output()->GetPointData()->GetArray("Tangents"));
+    auto* tb = vtkFloatArray::SafeDownCast(rb.Output()->GetPointData()->GetArray("Tangents"));
+    ASSERT_NE(ta, nullptr);
+    ASSERT_NE(tb, nullptr);
+    ASSERT_EQ(ta->GetNumberOfTuples(), a->GetNumberOfPoints());
+    ASSERT_EQ(tb->GetNumberOfTuples(), b->GetNumberOfPoints());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      differ +=
+        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
+        ? 1
+        : 0;
+    }
+    EXPECT_EQ(differ, 0) << threads << " threads";
+  }
+  vtkSMPTools::Initialize(0);
+}
+} // namespace
+
 // In the AVX-512 build the fast path builds its vertex lists task by task, each task from
 // the triangles whose points' ids come near its own; a mesh whose points are numbered at
 // random (every run of triangles spans almost all ids) takes the global vertex lists
@@ -360,29 +392,7 @@ TEST(vtkMikkTSpaceTangents, FastPathRenumberedPointsSameFrames)
   const std::vector<vtkIdType> newId =
     RenumberedPoints::RandomIds(torus->GetNumberOfPoints(), 4711);
   auto renumbered = RenumberedPoints::Moved(torus, newId, torus->GetNumberOfPoints());
-  for (int threads : { 1, 2 })
-  {
-    vtkSMPTools::Initialize(threads);
-    FilterRun a(torus);
-    FilterRun b(renumbered);
-    EXPECT_EQ(a.Errors->Count + b.Errors->Count + a.Warnings->Count + b.Warnings->Count, 0);
-    auto* ta = vtkFloatArray::SafeDownCast(a.Output()->GetPointData()->GetArray("Tangents"));
-    auto* tb = vtkFloatArray::SafeDownCast(b.Output()->GetPointData()->GetArray("Tangents"));
-    ASSERT_NE(ta, nullptr);
-    ASSERT_NE(tb, nullptr);
-    ASSERT_EQ(ta->GetNumberOfTuples(), torus->GetNumberOfPoints());
-    ASSERT_EQ(tb->GetNumberOfTuples(), torus->GetNumberOfPoints());
-    vtkIdType differ = 0;
-    for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
-    {
-      differ +=
-        std::memcmp(ta->GetPointer(4 * i), tb->GetPointer(4 * newId[i]), 4 * sizeof(float)) != 0
-        ? 1
-        : 0;
-    }
-    EXPECT_EQ(differ, 0) << threads << " threads";
-  }
-  vtkSMPTools::Initialize(0);
+  ExpectSameFramesAtNewIds(torus, renumbered, newId);
 }
 
 namespace
@@ -501,6 +511,76 @@ TEST(vtkMikkTSpaceTangents, FastPathAgreesWithGeneralPath)
   ExpectFastPathIsGeneralPath(torus, "torus");
   ExpectFastPathIsGeneralPath(unwelded, "unwelded torus");
   ExpectFastPathIsGeneralPath(plane, "plane");
+}
+
+namespace
+{
+// A copy of a mesh with a run of `run` points that no triangle uses (each its own position,
+// normal and texture coordinates, so that none welds to another) before every `every`
+// points; newId gives each old point's id.
+vtkSmartPointer<vtkPolyData> WithUnusedRuns(
+  vtkPolyData* in, vtkIdType every, vtkIdType run, std::vector<vtkIdType>& newId)
+{
+  const vtkIdType n = in->GetNumberOfPoints();
+  newId.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    newId[i] = i + run * (i / every + 1);
+  }
+  auto out = RenumberedPoints::Moved(in, newId, newId[n - 1] + 1);
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = out->GetPointData()->GetTCoords();
+  for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+  {
+    if (id % (every + run) < run)
+    {
+      const double a = 0.1 * double(id);
+      out->GetPoints()->SetPoint(id, 5.0 + std::cos(a), std::sin(a), 0.001 * a);
+      normals->SetTuple3(id, std::cos(a), 0.0, std::sin(a));
+      tcoords->SetTuple2(id, 0.01 * a, 0.5);
+    }
+  }
+  return out;
+}
+} // namespace
+
+// In the AVX-512 build each task of the fast path gives every vertex that is not a welded
+// copy a lane before it knows which have corners: the points that no triangle uses keep
+// empty lanes, whole groups of lanes among them, which must change no other point's bits
+// (a torus with runs of 40 unused points every 200 points against the torus, at 1 and 2
+// threads) and get the general path's default frames. The task counts corners by its slots'
+// cursors, which a fan larger than the fast path's runs past its group's room: at the last
+// lane of a task (point 2047, a fan of 8191 triangles) the cursor runs 4 MB past the end of
+// the task's slots, where the writes must stop; the general path then takes the fan.
+TEST(vtkMikkTSpaceTangents, FastPathTaskSlotsKeepUnusedPointsAndHandOverLargeFans)
+{
+  auto torus = MakeTorus(300, 150);
+  std::vector<vtkIdType> newId;
+  auto spread = WithUnusedRuns(torus, 200, 40, newId);
+  ExpectSameFramesAtNewIds(torus, spread, newId);
+  ExpectFastPathIsGeneralPath(spread, "torus with unused points");
+  // A closed fan of k triangles, its centre at point 2047 and its ring at all other points.
+  const int k = 8191, centre = 2047;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
+  for (int p = 0; p <= k; ++p)
+  {
+    const int i = p < centre ? p : p - 1;
+    const double a = 2.0 * vtkMath::Pi() * i / k, r = p == centre ? 0.0 : 1.0;
+    points->InsertNextPoint(r * std::cos(a), r * std::sin(a), 0.1 * r * std::sin(3.0 * a));
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+    tcoords->InsertNextTuple2(0.5 + 0.4 * r * std::cos(a), 0.5 + 0.4 * r * std::sin(a));
+  }
+  auto ringId = [](int i) { return vtkIdType(i < centre ? i : i + 1); };
+  for (int i = 0; i < k; ++i)
+  {
+    const vtkIdType t[3] = { centre, ringId(i), ringId((i + 1) % k) };
+    polys->InsertNextCell(3, t);
+  }
+  ExpectFastPathIsGeneralPath(
+    MakeSurface(points, polys, normals, tcoords), "a fan of 8191 at point 2047");
 }
 
 // The fast path normalises every point's normal in a pass of its own, without branches;
@@ -753,6 +833,44 @@ TEST(vtkMikkTSpaceTangents, FastPathClosedFanTestHandsOverChainsAndDoubleTurns)
     ExpectFastPathIsGeneralPath(twice, what.c_str());
     EXPECT_EQ(generalPoints(twice), twice->GetNumberOfPoints()) << what;
   }
+}
+
+// The fast path takes a vertex only if all its triangles have one texture orientation: a
+// closed planar fan of six triangles, the first three of them mirrored in texture space,
+// while every dP/ds and dP/dt (times the orientation's sign, as MikkTSpace takes them)
+// stays within 78 degrees of its vertex's first triangle's, so that the quarter-turn checks
+// pass (the texture coordinates were found by a random search for that). The general
+// algorithm splits the centre and two ring points by orientation, and the default must
+// give exactly its points and frames.
+TEST(vtkMikkTSpaceTangents, FastPathHandsOverFansOfMixedTextureOrientation)
+{
+  const double tc[6][2] = { { 0.236, 0.815 }, { 1.834, -0.151 }, { 0.457, -0.311 },
+    { -0.206, -0.357 }, { 0.038, -1.832 }, { 1.471, -2.188 } };
+  vtkNew<vtkPoints> points;
+  auto normals = NewFloatArray("Normals", 3);
+  auto tcoords = NewFloatArray("TCoords", 2);
+  for (int k = 0; k < 6; ++k)
+  {
+    points->InsertNextPoint(std::cos(vtkMath::Pi() * k / 3), std::sin(vtkMath::Pi() * k / 3), 0);
+    normals->InsertNextTuple3(0, 0, 1);
+    tcoords->InsertNextTuple(tc[k]);
+  }
+  points->InsertNextPoint(0, 0, 0);
+  normals->InsertNextTuple3(0, 0, 1);
+  tcoords->InsertNextTuple2(0, 0);
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    const vtkIdType t[3] = { 6, k, (k + 1) % 6 };
+    polys->InsertNextCell(3, t);
+  }
+  auto fan = MakeSurface(points, polys, normals, tcoords);
+  vtkNew<vtkMikkTSpaceTangents> general;
+  general->SetInputData(fan);
+  general->SetAngularThreshold(179.9);
+  general->Update();
+  EXPECT_GT(general->GetOutput()->GetNumberOfPoints(), fan->GetNumberOfPoints());
+  ExpectFastPathIsGeneralPath(fan, "fan of mixed texture orientation");
 }
 
 // The closed-fan test's sign condition (every corner turning the same way about the
