@@ -2312,7 +2312,7 @@ private:
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
     unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.template TriangleRange<IdT, true>(
+    return self.TriangleRange(
       b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
@@ -2320,9 +2320,8 @@ private:
   // arithmetic that the compiler vectorises (checks fold into a 0/1 flag). The checks of a
   // block fold into flags too, tested once per block: loops with an early exit do not
   // vectorise. With spanLo and spanHi, also each block's least and largest welded id (see
-  // TaskChunks); b is then a multiple of SpanTriangles. Permute: the directions go into
-  // their records by permutations (see StoreDirections), in the AVX-512 build.
-  template <typename IdT, bool Permute = false>
+  // TaskChunks); b is then a multiple of SpanTriangles.
+  template <typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
     std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient, std::int32_t* spanLo,
@@ -2411,72 +2410,19 @@ private:
         good &= cb.Good[j] != 0.0 ? 1 : 0;
         ob[j] = cb.Sign[j] > 0.0 ? 1 : 0;
       }
-      StoreDirections<Permute>(cb.D, m, dir + t0);
+      for (int j = 0; j < m; ++j)
+      {
+        for (int i = 0; i < 6; ++i)
+        {
+          dir[t0 + j][i] = cb.D[i][j];
+        }
+      }
       if (!good)
       {
         return false;
       }
     }
     return true;
-  }
-
-  // A block's directions, six columns, into each triangle's six values. With Permute (GCC),
-  // sixteen triangles at a time by two-vector permutations: the columns paired into 64-bit
-  // values (dP/ds x and y, z and dP/dt x, dP/dt y and z), and each 64-byte vector of the
-  // output three pairs' values; the compiler's own loop was scalar, two loads and two
-  // inserts per store of a value.
-  template <bool Permute, int Size>
-  VTK_ALWAYS_INLINE static void StoreDirections(
-    const float (&d)[6][Size], int m, std::array<float, 6>* __restrict dir)
-  {
-    int j = 0;
-#if defined(__GNUC__) && !defined(__clang__)
-    if (Permute)
-    {
-      static_assert(sizeof(std::array<float, 6>) == 6 * sizeof(float), "packed directions");
-      typedef float V __attribute__((vector_size(64)));
-      typedef std::int32_t M __attribute__((vector_size(64)));
-      typedef std::int64_t Q __attribute__((vector_size(64)));
-      const M lo = { 0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23 };
-      const M hi = { 8, 24, 9, 25, 10, 26, 11, 27, 12, 28, 13, 29, 14, 30, 15, 31 };
-      // Output pair q = 3 t + r of a half's eight triangles is pair r of triangle t: first
-      // from pairs 0 and 1, then pair 2 into the rest.
-      const Q from01[3] = { { 0, 8, 0, 1, 9, 0, 2, 10 }, { 0, 3, 11, 0, 4, 12, 0, 5 },
-        { 13, 0, 6, 14, 0, 7, 15, 0 } };
-      const Q from2[3] = { { 0, 1, 8, 3, 4, 9, 6, 7 }, { 10, 1, 2, 11, 4, 5, 12, 7 },
-        { 0, 13, 2, 3, 14, 5, 6, 15 } };
-      float* out = dir->data();
-      for (; j + 16 <= m; j += 16)
-      {
-        V c[6];
-        for (int i = 0; i < 6; ++i)
-        {
-          std::memcpy(&c[i], d[i] + j, sizeof(V));
-        }
-        for (int h = 0; h < 2; ++h)
-        {
-          Q pairs[3];
-          for (int r = 0; r < 3; ++r)
-          {
-            pairs[r] = reinterpret_cast<Q>(__builtin_shuffle(c[2 * r], c[2 * r + 1], h ? hi : lo));
-          }
-          for (int k = 0; k < 3; ++k)
-          {
-            const Q v = __builtin_shuffle(
-              __builtin_shuffle(pairs[0], pairs[1], from01[k]), pairs[2], from2[k]);
-            std::memcpy(out + 6 * j + 48 * h + 16 * k, &v, sizeof(Q));
-          }
-        }
-      }
-    }
-#endif
-    for (; j < m; ++j)
-    {
-      for (int i = 0; i < 6; ++i)
-      {
-        dir[j][i] = d[i][j];
-      }
-    }
   }
 
   // One loop over a block's triangles (with gathers in the AVX2 build).
