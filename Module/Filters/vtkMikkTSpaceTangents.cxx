@@ -3787,6 +3787,26 @@ private:
       ty[j] = static_cast<float>(inv * t[1]);
       tz[j] = static_cast<float>(inv * t[2]);
     }
+    // The usual block: every lane's fan taken, its vertices one after another; its tangents
+    // are then stored as one run of records (permutations, no scalar stores).
+    int plain = fb.Vertex[nv - 1] - fb.Vertex[0] == nv - 1 ? 1 : 0;
+    for (int j = 0; j < nv; ++j)
+    {
+      plain &= (kk[j] > 0) & (good[j] != 0.0) & (closed[j] != 0);
+    }
+    if (plain)
+    {
+      const float* __restrict hand = fb.Handedness;
+      float* __restrict o = out + 4 * std::size_t(fb.Vertex[0]);
+      for (int j = 0; j < nv; ++j)
+      {
+        o[4 * j] = tx[j];
+        o[4 * j + 1] = ty[j];
+        o[4 * j + 2] = tz[j];
+        o[4 * j + 3] = hand[j];
+      }
+      return true;
+    }
     for (int j = 0; j < nv; ++j)
     {
       float* o = out + 4 * std::size_t(fb.Vertex[j]);
