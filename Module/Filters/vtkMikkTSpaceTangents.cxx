@@ -2854,21 +2854,11 @@ private:
         fb.Vertex[j] = vb + lane[l0 + j];
         fb.K[j] = count[l0 + j];
       }
-      const double* __restrict un = this->UnitNormals;
-      const PT* __restrict pts = this->P;
-      for (int j = 0; j < nb; ++j)
-      {
-        const std::size_t v = static_cast<std::size_t>(fb.Vertex[j]);
-        const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
-        // An empty lane's vertex gets the default frame from its normal, as it is.
-        bad |= (fb.K[j] > 0) & !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
-        for (int q = 0; q < 3; ++q)
-        {
-          fb.NV[q][j] = u[q];
-          fb.NR[q][j] = static_cast<Real>(u[q]);
-          fb.Position[q][j] = Real(pts[3 * v + q]);
-        }
-      }
+      // Lanes in vertex order: the last one nb - 1 after the first if no welded copy is
+      // among them.
+      bad |= fb.Vertex[nb - 1] - fb.Vertex[0] == nb - 1
+        ? LaneVertices<true>(fb, nb, this->UnitNormals, this->P)
+        : LaneVertices<false>(fb, nb, this->UnitNormals, this->P);
       if (bad)
       {
         return false;
@@ -2913,6 +2903,32 @@ private:
       }
     }
     return true;
+  }
+
+  // Each lane's unit normal and position; 1 if a lane with corners has a normal not of unit
+  // length. Consecutive: the lanes' vertices follow one another, so the compiler reads
+  // their values as consecutive triples (permutations) instead of emulated gathers.
+  template <bool Consecutive>
+  VTK_ALWAYS_INLINE static int LaneVertices(
+    SlotBlock<Real>& fb, int nb, const double* __restrict un, const PT* __restrict pts)
+  {
+    int bad = 0;
+    const std::size_t v0 = static_cast<std::size_t>(fb.Vertex[0]);
+    for (int j = 0; j < nb; ++j)
+    {
+      const std::size_t v =
+        Consecutive ? v0 + static_cast<std::size_t>(j) : static_cast<std::size_t>(fb.Vertex[j]);
+      const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
+      // An empty lane's vertex gets the default frame from its normal, as it is.
+      bad |= (fb.K[j] > 0) & !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
+      for (int q = 0; q < 3; ++q)
+      {
+        fb.NV[q][j] = u[q];
+        fb.NR[q][j] = static_cast<Real>(u[q]);
+        fb.Position[q][j] = Real(pts[3 * v + q]);
+      }
+    }
+    return bad;
   }
 
   // One row of a task's slots, Lanes records of eight values (next and previous ids, dP/ds,
@@ -3770,6 +3786,26 @@ private:
       tx[j] = static_cast<float>(inv * t[0]);
       ty[j] = static_cast<float>(inv * t[1]);
       tz[j] = static_cast<float>(inv * t[2]);
+    }
+    // The usual block: every lane's fan taken, its vertices one after another; its tangents
+    // are then stored as one run of records (permutations, no scalar stores).
+    int plain = fb.Vertex[nv - 1] - fb.Vertex[0] == nv - 1 ? 1 : 0;
+    for (int j = 0; j < nv; ++j)
+    {
+      plain &= (kk[j] > 0) & (good[j] != 0.0) & (closed[j] != 0);
+    }
+    if (plain)
+    {
+      const float* __restrict hand = fb.Handedness;
+      float* __restrict o = out + 4 * std::size_t(fb.Vertex[0]);
+      for (int j = 0; j < nv; ++j)
+      {
+        o[4 * j] = tx[j];
+        o[4 * j + 1] = ty[j];
+        o[4 * j + 2] = tz[j];
+        o[4 * j + 3] = hand[j];
+      }
+      return true;
     }
     for (int j = 0; j < nv; ++j)
     {
