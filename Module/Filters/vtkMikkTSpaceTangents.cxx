@@ -3342,6 +3342,31 @@ private:
     }
   }
 
+  // One vertex's references: its first triangle's directions x (dP/ds) and y (dP/dt)
+  // projected into the plane of its unit normal n and normalised, and whether both
+  // projections are long enough for the fast path (good: 1 or 0). References and
+  // ReferencesOf run it in their loops over a block's vertices, which it does not stop from
+  // vectorising (it is inlined, its outputs the loops' restrict-qualified arrays).
+  template <typename RT>
+  VTK_ALWAYS_INLINE static void Reference(const double x[3], const double y[3], double nx,
+    double ny, double nz, double& good, RT& r0x, RT& r0y, RT& r0z, RT& r1x, RT& r1y, RT& r1z)
+  {
+    const double xn = x[0] * nx + x[1] * ny + x[2] * nz;
+    const double yn = y[0] * nx + y[1] * ny + y[2] * nz;
+    const double p[3] = { x[0] - xn * nx, x[1] - xn * ny, x[2] - xn * nz };
+    const double q[3] = { y[0] - yn * nx, y[1] - yn * ny, y[2] - yn * nz };
+    const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+    const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+    good = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
+    const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
+    r0x = RT(ip * p[0]);
+    r0y = RT(ip * p[1]);
+    r0z = RT(ip * p[2]);
+    r1x = RT(iq * q[0]);
+    r1y = RT(iq * q[1]);
+    r1z = RT(iq * q[2]);
+  }
+
   // Per vertex, the projections of its first triangle's dP/ds and dP/dt onto the tangent
   // plane, as unit vectors: at the default threshold MikkTSpace separates only opposite
   // directions, and with every direction within a quarter turn of these (with a margin),
@@ -3361,20 +3386,7 @@ private:
     {
       const std::int32_t t = first6[j];
       const double x[3] = { d[t], d[t + 1], d[t + 2] }, y[3] = { d[t + 3], d[t + 4], d[t + 5] };
-      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
-      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
-      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
-      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
-      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
-      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
-      r0x[j] = RT(ip * p[0]);
-      r0y[j] = RT(ip * p[1]);
-      r0z[j] = RT(ip * p[2]);
-      r1x[j] = RT(iq * q[0]);
-      r1y[j] = RT(iq * q[1]);
-      r1z[j] = RT(iq * q[2]);
+      Reference(x, y, nx[j], ny[j], nz[j], good[j], r0x[j], r0y[j], r0z[j], r1x[j], r1y[j], r1z[j]);
     }
   }
 
@@ -3392,20 +3404,7 @@ private:
     {
       const double x[3] = { dirOf(j, 0), dirOf(j, 1), dirOf(j, 2) },
                    y[3] = { dirOf(j, 3), dirOf(j, 4), dirOf(j, 5) };
-      const double xn = x[0] * nx[j] + x[1] * ny[j] + x[2] * nz[j];
-      const double yn = y[0] * nx[j] + y[1] * ny[j] + y[2] * nz[j];
-      const double p[3] = { x[0] - xn * nx[j], x[1] - xn * ny[j], x[2] - xn * nz[j] };
-      const double q[3] = { y[0] - yn * nx[j], y[1] - yn * ny[j], y[2] - yn * nz[j] };
-      const double lp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-      const double lq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-      good[j] = std::min(lp, lq) > FastProjection2 ? 1.0 : 0.0;
-      const double ip = 1.0 / std::sqrt(lp), iq = 1.0 / std::sqrt(lq);
-      r0x[j] = RT(ip * p[0]);
-      r0y[j] = RT(ip * p[1]);
-      r0z[j] = RT(ip * p[2]);
-      r1x[j] = RT(iq * q[0]);
-      r1y[j] = RT(iq * q[1]);
-      r1z[j] = RT(iq * q[2]);
+      Reference(x, y, nx[j], ny[j], nz[j], good[j], r0x[j], r0y[j], r0z[j], r1x[j], r1y[j], r1z[j]);
     }
   }
 
