@@ -680,18 +680,6 @@ inline float Finite(float x)
     std::max(x, -std::numeric_limits<float>::max()), std::numeric_limits<float>::max());
 }
 
-inline void ScaleToUnitMax(double v[3])
-{
-  const double mx = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
-  if (mx > 0.0)
-  {
-    const double inv = 1.0 / mx;
-    v[0] *= inv;
-    v[1] *= inv;
-    v[2] *= inv;
-  }
-}
-
 inline void RemoveNormalPart(const double n[3], double v[3])
 {
   const double d = Dot(n, v);
@@ -1675,9 +1663,9 @@ struct DisplaceWorker : BlockOps<R, L>
         const bool big =
           (std::abs(dk) > 0x1p32) | (std::abs(dsk) > 0x1p32) | (std::abs(dtk) > 0x1p32);
         redo[k] |= big;
-        d[k] = !big & (dk == dk) ? static_cast<float>(dk) : 0.0f;
-        ds[k] = !big & (dsk == dsk) ? static_cast<float>(dsk) : 0.0f;
-        dt[k] = !big & (dtk == dtk) ? static_cast<float>(dtk) : 0.0f;
+        d[k] = (!big & (dk == dk)) ? static_cast<float>(dk) : 0.0f;
+        ds[k] = (!big & (dsk == dsk)) ? static_cast<float>(dsk) : 0.0f;
+        dt[k] = (!big & (dtk == dtk)) ? static_cast<float>(dtk) : 0.0f;
       }
     }
     else
@@ -2242,8 +2230,8 @@ struct DisplaceWorker : BlockOps<R, L>
           qs[j] = Finite(Ps[j] + ds[k] * nk[j] + d[k] * Ns[j]);
           qt[j] = Finite(Pt[j] + dt[k] * nk[j] + d[k] * Nt[j]);
         }
-        // Only the direction matters: scaling first keeps the cross product finite.
-        // (ScaleToUnitMax, with the maximum in std::max's order and no branch.)
+        // Only the direction matters: dividing each vector by its largest component first
+        // keeps the cross product finite.
         const double ms = std::max(std::max(std::abs(qs[0]), std::abs(qs[1])), std::abs(qs[2]));
         const double mt = std::max(std::max(std::abs(qt[0]), std::abs(qt[1])), std::abs(qt[2]));
         const double invS = 1.0 / ms, invT = 1.0 / mt;

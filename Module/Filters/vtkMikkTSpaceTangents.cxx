@@ -1375,15 +1375,6 @@ private:
   unsigned int Saved = 0;
 };
 
-inline void PrefetchForWrite(const void* p)
-{
-#if defined(__GNUC__)
-  __builtin_prefetch(p, 1);
-#else
-  (void)p;
-#endif
-}
-
 // Memory from vtkSurfaceDetailMemory (huge pages for big blocks), not initialised. Blocks
 // of half a huge page or more take a whole one, so that they too come from the cache of
 // freed huge pages at the next execution: from malloc, a block of 1-2 MB (the per-point
@@ -1519,6 +1510,7 @@ VTK_ALWAYS_INLINE void Rotate(const Lanes8& x, Lanes8& r)
     (Rotation + 7) & 7);
 }
 
+#if !defined(__clang__) // the walk in lanes below, which needs GCC's __builtin_shuffle
 // s = the sum of all eight lanes of x, in every lane.
 VTK_ALWAYS_INLINE void SumOfLanes(const Lanes8& x, Lanes8& s)
 {
@@ -1530,6 +1522,7 @@ VTK_ALWAYS_INLINE void SumOfLanes(const Lanes8& x, Lanes8& s)
   Rotate<1>(s, r);
   s += r;
 }
+#endif
 
 // Lanes of x equal to some other lane of x, or of y to some other lane of y (rotations by
 // 1 to 4 meet every pair).

@@ -16,9 +16,10 @@
  *   vtkSurfaceDetailVectorize::HaveAVX2() says so: for templates, where `target_clones` is
  *   not available. RunWidest() does that for a vtkSMPTools worker.
  *
- * - SURFACEDETAIL_TARGET_AVX512 (GCC) likewise, run only when HaveAVX512() says so: eight
- *   doubles to a vector. AVX-512 includes FMA, so a file using it must be compiled with
- *   -ffp-contract=off to keep the bits of the other builds.
+ * - SURFACEDETAIL_TARGET_AVX512 (GCC and clang) likewise, run only when HaveAVX512() says so:
+ *   eight doubles to a vector (GCC's prefer-vector-width=512, clang's min_vector_width(512):
+ *   otherwise both keep to 256-bit vectors). AVX-512 includes FMA, so a file using it must be
+ *   compiled with -ffp-contract=off to keep the bits of the other builds.
  *
  * Elsewhere (other compilers or processors) the macros are empty and HaveAVX2() and
  * HaveAVX512() are false.
@@ -51,7 +52,10 @@
 #define SURFACEDETAIL_TARGET_AVX2
 #endif
 
-#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define SURFACEDETAIL_TARGET_AVX512                                                                \
+  __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma"), min_vector_width(512)))
+#elif defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define SURFACEDETAIL_TARGET_AVX512                                                                \
   __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,prefer-vector-width=512")))
 #else
@@ -95,7 +99,7 @@ inline bool HaveAVX2()
 /// machine may hide a feature that the real processor has).
 inline bool HaveAVX512()
 {
-#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
   static const bool have = MaxISALevel() >= 2 && __builtin_cpu_supports("avx512f") &&
     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
     __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx2") &&
