@@ -15,6 +15,10 @@ packages=(
 
   # issue 5: the displacement benchmark's time-vs-error plot
   python3-matplotlib
+
+  # CI's second build (scripts/test-clang.sh): clang takes the portable fallbacks of the
+  # GCC-only vector code
+  clang
 )
 # issue 4: node runs the reference MikkTSpace (npm package "mikktspace") in the tests. Only
 # when the commands are missing: a node from elsewhere (e.g. NodeSource, which bundles npm
