@@ -2683,14 +2683,120 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
     }
   }
 
+  // Whether the polygons @a cell and @a cell + 1 of the chunk ending at @a ce (@a cell a triangle
+  // of the corners @a ids) are a fan pair (a, b, d), (a, d, c): a quad split along (a, d), as
+  // parametric sources and vtkTriangleFilter make them.
+  static VTK_ALWAYS_INLINE bool FanPair(
+    const vtkIdType* offsets, const vtkIdType* ids, vtkIdType cell, vtkIdType ce)
+  {
+    return cell + 1 < ce && offsets[cell + 2] - offsets[cell + 1] == 3 && ids[3] == ids[0] &&
+      ids[4] == ids[2];
+  }
+
+  // Whether the triangle of the @a points @a q0, @a q1, @a q2 (e1 = q1 - q0, e2 = q2 - q0) faces
+  // against the sum of its corners' input @a normals: OrientedNormal's test. Its fan sum and normal
+  // sum start from +0 there; from the first terms here, which changes at most the sign of a zero
+  // in the dot product, and so not the test.
+  static VTK_ALWAYS_INLINE bool Faces(
+    const double e1[3], const double e2[3], const R* n0, const R* n1, const R* n2)
+  {
+    double orig[3];
+    Cross(e1, e2, orig);
+    const double nsum[3] = { double(n0[0]) + n1[0] + n2[0], double(n0[1]) + n1[1] + n2[1],
+      double(n0[2]) + n1[2] + n2[2] };
+    return Dot(orig, nsum) < 0.0;
+  }
+
+  // A fan pair's two triangles: each one's oriented normal with OrientedNormal's operations (the
+  // edge d - a made once for both; no +0 start to the fan sum, which changes at most the sign of a
+  // zero term, which adds nothing to a sum that starts from +0 (and so never is -0), so the sums
+  // get the same bits), added to its corners in polygon order (a, b, d, then a, d, c). One range
+  // test for the four corners where the task holds them all.
+  template <bool SignKnown>
+  VTK_ALWAYS_INLINE void AddFan(const vtkIdType* ids, vtkIdType cell, vtkIdType pb,
+    std::uint64_t width, double* sums, const R* moved, const R* points, const R* normals,
+    signed char* signs) const
+  {
+    const vtkIdType a = ids[0], b = ids[1], d = ids[2], c = ids[5];
+    const R* qa = moved + 3 * a;
+    const R* qb = moved + 3 * b;
+    const R* qd = moved + 3 * d;
+    const R* qc = moved + 3 * c;
+    const double p0[3] = { qa[0], qa[1], qa[2] };
+    const double eb[3] = { qb[0] - p0[0], qb[1] - p0[1], qb[2] - p0[2] };
+    const double ed[3] = { qd[0] - p0[0], qd[1] - p0[1], qd[2] - p0[2] };
+    const double ec[3] = { qc[0] - p0[0], qc[1] - p0[1], qc[2] - p0[2] };
+    double x1[3], x2[3];
+    Cross(eb, ed, x1);
+    Cross(ed, ec, x2);
+    const std::uint64_t ja = static_cast<std::uint64_t>(a - pb);
+    const std::uint64_t jb = static_cast<std::uint64_t>(b - pb);
+    const std::uint64_t jd = static_cast<std::uint64_t>(d - pb);
+    const std::uint64_t jc = static_cast<std::uint64_t>(c - pb);
+    bool flip1, flip2;
+    if (SignKnown)
+    {
+      flip1 = signs[cell] < 0;
+      flip2 = signs[cell + 1] < 0;
+    }
+    else
+    {
+      const R* oa = points + 3 * a;
+      const R* ob = points + 3 * b;
+      const R* od = points + 3 * d;
+      const R* oc = points + 3 * c;
+      const double o0[3] = { oa[0], oa[1], oa[2] };
+      const double fb[3] = { ob[0] - o0[0], ob[1] - o0[1], ob[2] - o0[2] };
+      const double fd[3] = { od[0] - o0[0], od[1] - o0[1], od[2] - o0[2] };
+      const double fc[3] = { oc[0] - o0[0], oc[1] - o0[1], oc[2] - o0[2] };
+      const R* na = normals + 3 * a;
+      const R* nd = normals + 3 * d;
+      flip1 = Faces(fb, fd, na, normals + 3 * b, nd);
+      flip2 = Faces(fd, fc, na, nd, normals + 3 * c);
+      if (ja < width)
+      {
+        signs[cell] = flip1 ? -1 : 1;
+        signs[cell + 1] = flip2 ? -1 : 1;
+      }
+    }
+    const Double4 v1 = { flip1 ? -x1[0] : x1[0], flip1 ? -x1[1] : x1[1], flip1 ? -x1[2] : x1[2],
+      0.0 };
+    const Double4 v2 = { flip2 ? -x2[0] : x2[0], flip2 ? -x2[1] : x2[1], flip2 ? -x2[2] : x2[2],
+      0.0 };
+    if ((ja | jb | jd | jc) < width)
+    {
+      Add(sums, ja, v1);
+      Add(sums, jb, v1);
+      Add(sums, jd, v1);
+      Add(sums, ja, v2);
+      Add(sums, jd, v2);
+      Add(sums, jc, v2);
+      return;
+    }
+    const std::uint64_t j[6] = { ja, jb, jd, ja, jd, jc };
+    for (int k = 0; k < 6; ++k)
+    {
+      if (j[k] < width)
+      {
+        Add(sums, j[k], k < 3 ? v1 : v2);
+      }
+    }
+  }
+
   // The polygons' part of a task: ForCellsTouching's walk, with chunks whose corners are all the
-  // task's added without a test per corner.
+  // task's added without a test per polygon, fan pairs two triangles at a time.
   template <bool SignKnown>
   VTK_ALWAYS_INLINE void AddPolygons(vtkIdType pb, vtkIdType pe, double* sums) const
   {
-    const PolyLinks& mesh = *this->C.Polys;
+    const Context<R>& c = this->C;
+    const PolyLinks& mesh = *c.Polys;
     const vtkIdType* __restrict offsets = mesh.Offsets;
     const vtkIdType* __restrict conn = mesh.Conn;
+    // Held in registers: the sums' stores could alias members read through this.
+    const R* moved = this->Moved.P;
+    const R* points = c.Points->P;
+    const R* normals = c.Normals->P;
+    signed char* signs = this->Signs;
     const std::uint64_t width = static_cast<std::uint64_t>(pe - pb);
     vtkIdType first, last;
     this->Spans.Candidates(pb, pe, first, last);
@@ -2704,20 +2810,42 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
       const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
       if (this->Spans.Within(chunk, pb, pe))
       {
-        for (vtkIdType cell = cb; cell < ce; ++cell)
+        for (vtkIdType cell = cb; cell < ce;)
         {
           const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
+          const vtkIdType* ids = conn + b;
+          if (n == 3 && FanPair(offsets, ids, cell, ce))
+          {
+            this->template AddFan<SignKnown>(
+              ids, cell, pb, width, sums, moved, points, normals, signs);
+            cell += 2;
+            continue;
+          }
           if (n > 0)
           {
-            this->template AddPolygon<SignKnown, true>(conn + b, n, cell, pb, width, sums);
+            this->template AddPolygon<SignKnown, true>(ids, n, cell, pb, width, sums);
           }
+          ++cell;
         }
         continue;
       }
-      for (vtkIdType cell = cb; cell < ce; ++cell)
+      for (vtkIdType cell = cb; cell < ce;)
       {
         const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
         const vtkIdType* ids = conn + b;
+        if (n == 3 && FanPair(offsets, ids, cell, ce))
+        {
+          // A pair of which one triangle does not touch the range adds nothing for it (and stores
+          // no orientation: its first corner is not the task's).
+          if (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width) |
+            InRange(ids[5], pb, width))
+          {
+            this->template AddFan<SignKnown>(
+              ids, cell, pb, width, sums, moved, points, normals, signs);
+          }
+          cell += 2;
+          continue;
+        }
         bool touches = false;
         for (vtkIdType k = 0; k < n; ++k)
         {
@@ -2727,6 +2855,7 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
         {
           this->template AddPolygon<SignKnown, false>(ids, n, cell, pb, width, sums);
         }
+        ++cell;
       }
     }
   }
