@@ -499,8 +499,11 @@ struct CellSpans
   // running maximum of Hi, MinLo the running minimum of Lo from the last chunk down: both never
   // decrease, so the chunks that may meet a range are found by two binary searches.
   std::vector<vtkIdType> Lo, Hi, MaxHi, MinLo;
+  // Per chunk: 1 if its polygons are all triangles (a walk then finds each one's corners without
+  // reading the offsets).
+  std::vector<unsigned char> Triangles;
 
-  size_t Bytes() const { return sizeof(vtkIdType) * 4 * this->Lo.size(); }
+  size_t Bytes() const { return (sizeof(vtkIdType) * 4 + 1) * this->Lo.size(); }
 
   // The chunks that may meet [pb, pe): [first, last), each still to be asked Meets.
   void Candidates(vtkIdType pb, vtkIdType pe, vtkIdType& first, vtkIdType& last) const
@@ -568,6 +571,19 @@ struct CellSpans
         }
         this->Spans.Lo[c] = lo;
         this->Spans.Hi[c] = hi;
+        const vtkIdType cb = c * Chunk, ce = std::min(this->Mesh.NumCells, cb + Chunk);
+        bool triangles = e - b == 3 * (ce - cb);
+        if (triangles)
+        {
+          // An integer OR as the reduction, so that the loop vectorises.
+          int other = 0;
+          for (vtkIdType cell = cb; cell < ce; ++cell)
+          {
+            other |= static_cast<int>(this->Mesh.Offsets[cell + 1] - this->Mesh.Offsets[cell] != 3);
+          }
+          triangles = other == 0;
+        }
+        this->Spans.Triangles[c] = triangles ? 1 : 0;
       }
     }
   };
@@ -582,6 +598,7 @@ struct CellSpans
     this->Hi.resize(chunks);
     this->MaxHi.resize(chunks);
     this->MinLo.resize(chunks);
+    this->Triangles.resize(chunks);
     vtkSMPTools::For(0, chunks, 64, Pass{ mesh, *this });
     bool inRange = true;
     vtkIdType maxHi = std::numeric_limits<vtkIdType>::min();
@@ -2763,13 +2780,22 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
       0.0 };
     const Double4 v2 = { flip2 ? -x2[0] : x2[0], flip2 ? -x2[1] : x2[1], flip2 ? -x2[2] : x2[2],
       0.0 };
-    if ((ja | jb | jd | jc) < width)
+    if (((ja | jb | jd | jc) < width) & (a != d))
     {
-      Add(sums, ja, v1);
+      // a's and d's two additions in registers, b's before and c's after them: each point still
+      // gets the first triangle's normal before the second's, however b and c coincide with a, d
+      // or each other (a and d distinct), so the same bits, without a store to forward from each
+      // first addition to the second.
       Add(sums, jb, v1);
-      Add(sums, jd, v1);
-      Add(sums, ja, v2);
-      Add(sums, jd, v2);
+      Double4 sa, sd;
+      std::memcpy(&sa, sums + 4 * ja, sizeof(sa));
+      sa += v1;
+      sa += v2;
+      std::memcpy(sums + 4 * ja, &sa, sizeof(sa));
+      std::memcpy(&sd, sums + 4 * jd, sizeof(sd));
+      sd += v1;
+      sd += v2;
+      std::memcpy(sums + 4 * jd, &sd, sizeof(sd));
       Add(sums, jc, v2);
       return;
     }
@@ -2808,7 +2834,45 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
       }
       const vtkIdType cb = chunk * CellSpans::Chunk;
       const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
-      if (this->Spans.Within(chunk, pb, pe))
+      const bool within = this->Spans.Within(chunk, pb, pe);
+      if (this->Spans.Triangles[chunk])
+      {
+        // Triangles only: the corners follow one another in threes.
+        const vtkIdType* ids = conn + offsets[cb];
+        vtkIdType cell = cb;
+        for (; cell + 1 < ce;)
+        {
+          const bool touches = within ||
+            (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width) |
+              InRange(ids[5], pb, width));
+          if ((ids[3] == ids[0]) & (ids[4] == ids[2]))
+          {
+            if (touches)
+            {
+              this->template AddFan<SignKnown>(
+                ids, cell, pb, width, sums, moved, points, normals, signs);
+            }
+            cell += 2;
+            ids += 6;
+            continue;
+          }
+          if (within ||
+            (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width)))
+          {
+            this->template AddPolygonOf<SignKnown, false>(ids, 3, cell, pb, width, sums);
+          }
+          ++cell;
+          ids += 3;
+        }
+        if (cell < ce &&
+          (within ||
+            (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width))))
+        {
+          this->template AddPolygonOf<SignKnown, false>(ids, 3, cell, pb, width, sums);
+        }
+        continue;
+      }
+      if (within)
       {
         for (vtkIdType cell = cb; cell < ce;)
         {
