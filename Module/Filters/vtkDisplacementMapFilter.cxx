@@ -1775,16 +1775,26 @@ struct DisplaceWorker : BlockOps<R, L>
         PrefetchBytes<false>(last + rowStride, sizeof(T) * span);
       }
     }
+    // The texels read in a scalar loop, the blend in one of its own that vectorises (in the same
+    // loop the blend stayed scalar too).
+    alignas(64) DoubleLanes h00, h10, h01, h11;
     for (int k = 0; k < count; ++k)
     {
       const T* p = tex.Data + j0[k] * rowStride + i0[k] * tnc + tex.Comp;
-      double h00 = tex.Norm * p[0], h10 = tex.Norm * p[tnc];
-      double h01 = tex.Norm * p[rowStride], h11 = tex.Norm * p[rowStride + tnc];
-      KeepScalar(h00, h10, h01, h11);
-      const double b0 = (1.0 - fx[k]) * h00 + fx[k] * h10;
-      const double b1 = (1.0 - fx[k]) * h01 + fx[k] * h11;
+      double t00 = tex.Norm * p[0], t10 = tex.Norm * p[tnc];
+      double t01 = tex.Norm * p[rowStride], t11 = tex.Norm * p[rowStride + tnc];
+      KeepScalar(t00, t10, t01, t11);
+      h00[k] = t00;
+      h10[k] = t10;
+      h01[k] = t01;
+      h11[k] = t11;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double b0 = (1.0 - fx[k]) * h00[k] + fx[k] * h10[k];
+      const double b1 = (1.0 - fx[k]) * h01[k] + fx[k] * h11[k];
       h[k] = (1.0 - fy[k]) * b0 + fy[k] * b1;
-      hs[k] = W * ((1.0 - fy[k]) * (h10 - h00) + fy[k] * (h11 - h01));
+      hs[k] = W * ((1.0 - fy[k]) * (h10[k] - h00[k]) + fy[k] * (h11[k] - h01[k]));
       ht[k] = H * (b1 - b0);
     }
     if (Base::Any(count, outside))
@@ -2928,7 +2938,8 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
   VTK_ALWAYS_INLINE void Task(vtkIdType pb, vtkIdType pe, double* sums) const
   {
     const Context<R>& c = this->C;
-    std::fill_n(sums, 4 * (pe - pb), 0.0);
+    // The sums are zero here: the thread's buffer starts so, and each task's blocks clear theirs
+    // once read (while in cache, rather than a pass over the buffer before the walk).
     this->template AddPolygons<SignKnown>(pb, pe, sums);
     for (vtkIdType first = pb; first < pe; first += Block)
     {
@@ -2944,7 +2955,9 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
         Base::template PrefetchTuples<true>(c.OutNormals, next, nextCount);
         Base::template PrefetchTuples<true>(c.OutTangents, next, nextCount);
       }
-      this->FinishBlock(first, count, sums + 4 * (first - pb));
+      double* blockSums = sums + 4 * (first - pb);
+      this->FinishBlock(first, count, blockSums);
+      std::fill_n(blockSums, 4 * count, 0.0);
     }
   }
 };
