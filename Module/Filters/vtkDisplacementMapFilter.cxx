@@ -627,6 +627,9 @@ VTK_ALWAYS_INLINE bool InRange(vtkIdType id, vtkIdType pb, std::uint64_t width)
 // Calls body(cell, end) for every polygon of @a mesh with a corner in [pb, pe), in increasing id
 // order (a polygon with several corners there, once). The body returns how many polygons it did
 // (more than one: it did the next ones, before @a end, too, whether they touch the range or not).
+// A chunk of triangles only goes to body.Triangles(ids, cell, end, within) instead (its corners
+// @a ids from polygon @a cell to @a end; @a within: all of them in the range), which does the same
+// for that chunk.
 template <typename Body>
 VTK_ALWAYS_INLINE void ForCellsTouching(
   const PolyLinks& mesh, const CellSpans& spans, vtkIdType pb, vtkIdType pe, Body&& body)
@@ -644,6 +647,11 @@ VTK_ALWAYS_INLINE void ForCellsTouching(
     }
     const vtkIdType cb = c * CellSpans::Chunk;
     const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
+    if (spans.Triangles[c])
+    {
+      body.Triangles(conn + offsets[cb], cb, ce, spans.Within(c, pb, pe));
+      continue;
+    }
     if (spans.Within(c, pb, pe))
     {
       // Every corner inside: every polygon with a corner.
@@ -1057,6 +1065,106 @@ struct AddFitTerms
     r[Rec::Dt2] = dt2;
   }
 
+  // What Make fills of @a from, copied to @a to.
+  static VTK_ALWAYS_INLINE void Keep(const Terms& from, Terms& to)
+  {
+    to.Dt2 = from.Dt2;
+    if (WantP)
+    {
+      to.BsP = from.BsP;
+      to.BtP = from.BtP;
+      to.D2 = from.D2;
+    }
+    if (WantN)
+    {
+      to.BsN = from.BsN;
+      to.BtN = from.BtN;
+    }
+  }
+
+  // The fan pair (i0, i1, i2), (i0, i2, i3) of four distinct points, given its pairs' terms but
+  // (i2, i3)'s: each record of a shared corner read and written once.
+  VTK_ALWAYS_INLINE void AddPair(vtkIdType i0, vtkIdType i1, vtkIdType i2, vtkIdType i3,
+    const Terms& u01, const Terms& u02, const Terms& u12, const Terms& u03) const
+  {
+    const std::uint64_t k0 = static_cast<std::uint64_t>(i0 - this->First);
+    const std::uint64_t k1 = static_cast<std::uint64_t>(i1 - this->First);
+    const std::uint64_t k2 = static_cast<std::uint64_t>(i2 - this->First);
+    const std::uint64_t k3 = static_cast<std::uint64_t>(i3 - this->First);
+    Terms u23;
+    this->Make(i2, i3, u23);
+    if (k0 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k0, u01, u02, u02, u03);
+    }
+    if (k1 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k1, u01, u12);
+    }
+    if (k2 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k2, u02, u12, u02, u23);
+    }
+    if (k3 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k3, u03, u23);
+    }
+  }
+
+  // ForCellsTouching's walk over a chunk of triangles only: as operator() for each triangle that
+  // touches the range, without reading the offsets, and a fan pair of distinct points at once
+  // wherever one of its four corners does (a point's additions do not depend on how the polygons
+  // are grouped). Where one pair (a, b, d), (a, d, c) follows another along a row, (b, b', d'),
+  // (b, d', d), the first's (b, d) terms are the second's (a, c) ones: made once.
+  VTK_ALWAYS_INLINE void Triangles(
+    const vtkIdType* ids, vtkIdType cell, vtkIdType end, bool within) const
+  {
+    Terms carried{};
+    vtkIdType carriedI = -1, carriedJ = -1;
+    while (cell < end)
+    {
+      const vtkIdType i0 = ids[0], i1 = ids[1], i2 = ids[2];
+      const bool touches = within ||
+        (InRange(i0, this->First, this->Width) | InRange(i1, this->First, this->Width) |
+          InRange(i2, this->First, this->Width));
+      if (cell + 1 < end && ((ids[3] == i0) & (ids[4] == i2)))
+      {
+        const vtkIdType i3 = ids[5];
+        if (!touches && !InRange(i3, this->First, this->Width))
+        {
+          cell += 2;
+          ids += 6;
+          continue;
+        }
+        if ((i0 != i1) & (i0 != i2) & (i1 != i2) & (i3 != i0) & (i3 != i1) & (i3 != i2))
+        {
+          Terms u01, u02, u12, u03;
+          this->Make(i0, i1, u01);
+          this->Make(i0, i2, u02);
+          this->Make(i1, i2, u12);
+          if ((i0 == carriedI) & (i3 == carriedJ))
+          {
+            Keep(carried, u03);
+          }
+          else
+          {
+            this->Make(i0, i3, u03);
+          }
+          this->AddPair(i0, i1, i2, i3, u01, u02, u12, u03);
+          Keep(u12, carried);
+          carriedI = i1;
+          carriedJ = i2;
+          cell += 2;
+          ids += 6;
+          continue;
+        }
+      }
+      const vtkIdType done = touches ? (*this)(cell, end) : 1;
+      cell += done;
+      ids += 3 * done;
+    }
+  }
+
   // Adds polygon @a cell's terms, or those of @a cell and the next one (before @a end) where they
   // are a fan's two triangles (a, b, d), (a, d, c), as quads split into triangles are: their
   // shared pair's terms made once, and each record of a shared corner read and written once (the
@@ -1086,26 +1194,9 @@ struct AddFitTerms
           const vtkIdType i3 = next[2];
           if ((next[0] == i0) & (next[1] == i2) & (i3 != i0) & (i3 != i1) & (i3 != i2))
           {
-            const std::uint64_t k3 = static_cast<std::uint64_t>(i3 - this->First);
-            Terms u03, u23;
+            Terms u03;
             this->Make(i0, i3, u03);
-            this->Make(i2, i3, u23);
-            if (k0 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k0, u01, u02, u02, u03);
-            }
-            if (k1 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k1, u01, u12);
-            }
-            if (k2 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k2, u02, u12, u02, u23);
-            }
-            if (k3 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k3, u03, u23);
-            }
+            this->AddPair(i0, i1, i2, i3, u01, u02, u12, u03);
             return 2;
           }
         }
@@ -2734,6 +2825,24 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
     return Dot(orig, nsum) < 0.0;
   }
 
+  // The edges from corner @a a of a fan pair to @a b, @a d and @a c (points of @a pts, 3
+  // components), in double as FanSum makes them.
+  static VTK_ALWAYS_INLINE void Edges(const R* pts, vtkIdType a, vtkIdType b, vtkIdType d,
+    vtkIdType c, double eb[3], double ed[3], double ec[3])
+  {
+    const R* qa = pts + 3 * a;
+    const R* qb = pts + 3 * b;
+    const R* qd = pts + 3 * d;
+    const R* qc = pts + 3 * c;
+    const double p0[3] = { qa[0], qa[1], qa[2] };
+    for (int k = 0; k < 3; ++k)
+    {
+      eb[k] = qb[k] - p0[k];
+      ed[k] = qd[k] - p0[k];
+      ec[k] = qc[k] - p0[k];
+    }
+  }
+
   // A fan pair's two triangles: each one's oriented normal with OrientedNormal's operations (the
   // edge d - a made once for both; no +0 start to the fan sum, which changes at most the sign of a
   // zero term, which adds nothing to a sum that starts from +0 (and so never is -0), so the sums
@@ -2745,14 +2854,8 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
     signed char* signs) const
   {
     const vtkIdType a = ids[0], b = ids[1], d = ids[2], c = ids[5];
-    const R* qa = moved + 3 * a;
-    const R* qb = moved + 3 * b;
-    const R* qd = moved + 3 * d;
-    const R* qc = moved + 3 * c;
-    const double p0[3] = { qa[0], qa[1], qa[2] };
-    const double eb[3] = { qb[0] - p0[0], qb[1] - p0[1], qb[2] - p0[2] };
-    const double ed[3] = { qd[0] - p0[0], qd[1] - p0[1], qd[2] - p0[2] };
-    const double ec[3] = { qc[0] - p0[0], qc[1] - p0[1], qc[2] - p0[2] };
+    double eb[3], ed[3], ec[3];
+    Edges(moved, a, b, d, c, eb, ed, ec);
     double x1[3], x2[3];
     Cross(eb, ed, x1);
     Cross(ed, ec, x2);
@@ -2768,14 +2871,8 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
     }
     else
     {
-      const R* oa = points + 3 * a;
-      const R* ob = points + 3 * b;
-      const R* od = points + 3 * d;
-      const R* oc = points + 3 * c;
-      const double o0[3] = { oa[0], oa[1], oa[2] };
-      const double fb[3] = { ob[0] - o0[0], ob[1] - o0[1], ob[2] - o0[2] };
-      const double fd[3] = { od[0] - o0[0], od[1] - o0[1], od[2] - o0[2] };
-      const double fc[3] = { oc[0] - o0[0], oc[1] - o0[1], oc[2] - o0[2] };
+      double fb[3], fd[3], fc[3];
+      Edges(points, a, b, d, c, fb, fd, fc);
       const R* na = normals + 3 * a;
       const R* nd = normals + 3 * d;
       flip1 = Faces(fb, fd, na, normals + 3 * b, nd);
