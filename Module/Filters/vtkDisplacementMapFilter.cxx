@@ -624,6 +624,13 @@ VTK_ALWAYS_INLINE bool InRange(vtkIdType id, vtkIdType pb, std::uint64_t width)
   return static_cast<std::uint64_t>(id - pb) < width;
 }
 
+// Whether any of @a ids lies in [pb, pb + width): an OR of the tests, free of branches.
+template <typename... Id>
+VTK_ALWAYS_INLINE bool AnyInRange(vtkIdType pb, std::uint64_t width, Id... ids)
+{
+  return (static_cast<int>(InRange(ids, pb, width)) | ...) != 0;
+}
+
 // Calls body(cell, end) for every polygon of @a mesh with a corner in [pb, pe), in increasing id
 // order (a polygon with several corners there, once). The body returns how many polygons it did
 // (more than one: it did the next ones, before @a end, too, whether they touch the range or not).
@@ -1124,9 +1131,7 @@ struct AddFitTerms
     while (cell < end)
     {
       const vtkIdType i0 = ids[0], i1 = ids[1], i2 = ids[2];
-      const bool touches = within ||
-        (InRange(i0, this->First, this->Width) | InRange(i1, this->First, this->Width) |
-          InRange(i2, this->First, this->Width));
+      const bool touches = within || AnyInRange(this->First, this->Width, i0, i1, i2);
       if (cell + 1 < end && ((ids[3] == i0) & (ids[4] == i2)))
       {
         const vtkIdType i3 = ids[5];
@@ -2949,9 +2954,7 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
         vtkIdType cell = cb;
         for (; cell + 1 < ce;)
         {
-          const bool touches = within ||
-            (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width) |
-              InRange(ids[5], pb, width));
+          const bool touches = within || AnyInRange(pb, width, ids[0], ids[1], ids[2], ids[5]);
           if ((ids[3] == ids[0]) & (ids[4] == ids[2]))
           {
             if (touches)
@@ -2963,17 +2966,14 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
             ids += 6;
             continue;
           }
-          if (within ||
-            (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width)))
+          if (within || AnyInRange(pb, width, ids[0], ids[1], ids[2]))
           {
             this->template AddPolygonOf<SignKnown, false>(ids, 3, cell, pb, width, sums);
           }
           ++cell;
           ids += 3;
         }
-        if (cell < ce &&
-          (within ||
-            (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width))))
+        if (cell < ce && (within || AnyInRange(pb, width, ids[0], ids[1], ids[2])))
         {
           this->template AddPolygonOf<SignKnown, false>(ids, 3, cell, pb, width, sums);
         }
@@ -3008,8 +3008,7 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
         {
           // A pair of which one triangle does not touch the range adds nothing for it (and stores
           // no orientation: its first corner is not the task's).
-          if (InRange(ids[0], pb, width) | InRange(ids[1], pb, width) | InRange(ids[2], pb, width) |
-            InRange(ids[5], pb, width))
+          if (AnyInRange(pb, width, ids[0], ids[1], ids[2], ids[5]))
           {
             this->template AddFan<SignKnown>(
               ids, cell, pb, width, sums, moved, points, normals, signs);
