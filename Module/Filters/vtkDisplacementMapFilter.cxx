@@ -499,8 +499,11 @@ struct CellSpans
   // running maximum of Hi, MinLo the running minimum of Lo from the last chunk down: both never
   // decrease, so the chunks that may meet a range are found by two binary searches.
   std::vector<vtkIdType> Lo, Hi, MaxHi, MinLo;
+  // Per chunk: 1 if its polygons are all triangles (a walk then finds each one's corners without
+  // reading the offsets).
+  std::vector<unsigned char> Triangles;
 
-  size_t Bytes() const { return sizeof(vtkIdType) * 4 * this->Lo.size(); }
+  size_t Bytes() const { return (sizeof(vtkIdType) * 4 + 1) * this->Lo.size(); }
 
   // The chunks that may meet [pb, pe): [first, last), each still to be asked Meets.
   void Candidates(vtkIdType pb, vtkIdType pe, vtkIdType& first, vtkIdType& last) const
@@ -568,6 +571,19 @@ struct CellSpans
         }
         this->Spans.Lo[c] = lo;
         this->Spans.Hi[c] = hi;
+        const vtkIdType cb = c * Chunk, ce = std::min(this->Mesh.NumCells, cb + Chunk);
+        bool triangles = e - b == 3 * (ce - cb);
+        if (triangles)
+        {
+          // An integer OR as the reduction, so that the loop vectorises.
+          int other = 0;
+          for (vtkIdType cell = cb; cell < ce; ++cell)
+          {
+            other |= static_cast<int>(this->Mesh.Offsets[cell + 1] - this->Mesh.Offsets[cell] != 3);
+          }
+          triangles = other == 0;
+        }
+        this->Spans.Triangles[c] = triangles ? 1 : 0;
       }
     }
   };
@@ -582,6 +598,7 @@ struct CellSpans
     this->Hi.resize(chunks);
     this->MaxHi.resize(chunks);
     this->MinLo.resize(chunks);
+    this->Triangles.resize(chunks);
     vtkSMPTools::For(0, chunks, 64, Pass{ mesh, *this });
     bool inRange = true;
     vtkIdType maxHi = std::numeric_limits<vtkIdType>::min();
@@ -607,9 +624,19 @@ VTK_ALWAYS_INLINE bool InRange(vtkIdType id, vtkIdType pb, std::uint64_t width)
   return static_cast<std::uint64_t>(id - pb) < width;
 }
 
+// Whether any of @a ids lies in [pb, pb + width): an OR of the tests, free of branches.
+template <typename... Id>
+VTK_ALWAYS_INLINE bool AnyInRange(vtkIdType pb, std::uint64_t width, Id... ids)
+{
+  return (static_cast<int>(InRange(ids, pb, width)) | ...) != 0;
+}
+
 // Calls body(cell, end) for every polygon of @a mesh with a corner in [pb, pe), in increasing id
 // order (a polygon with several corners there, once). The body returns how many polygons it did
 // (more than one: it did the next ones, before @a end, too, whether they touch the range or not).
+// A chunk of triangles only goes to body.Triangles(ids, cell, end, within) instead (its corners
+// @a ids from polygon @a cell to @a end; @a within: all of them in the range), which does the same
+// for that chunk.
 template <typename Body>
 VTK_ALWAYS_INLINE void ForCellsTouching(
   const PolyLinks& mesh, const CellSpans& spans, vtkIdType pb, vtkIdType pe, Body&& body)
@@ -627,6 +654,11 @@ VTK_ALWAYS_INLINE void ForCellsTouching(
     }
     const vtkIdType cb = c * CellSpans::Chunk;
     const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
+    if (spans.Triangles[c])
+    {
+      body.Triangles(conn + offsets[cb], cb, ce, spans.Within(c, pb, pe));
+      continue;
+    }
     if (spans.Within(c, pb, pe))
     {
       // Every corner inside: every polygon with a corner.
@@ -1028,6 +1060,104 @@ struct AddFitTerms
     r[Rec::Dt2] = dt2;
   }
 
+  // What Make fills of @a from, copied to @a to.
+  static VTK_ALWAYS_INLINE void Keep(const Terms& from, Terms& to)
+  {
+    to.Dt2 = from.Dt2;
+    if (WantP)
+    {
+      to.BsP = from.BsP;
+      to.BtP = from.BtP;
+      to.D2 = from.D2;
+    }
+    if (WantN)
+    {
+      to.BsN = from.BsN;
+      to.BtN = from.BtN;
+    }
+  }
+
+  // The fan pair (i0, i1, i2), (i0, i2, i3) of four distinct points, given its pairs' terms but
+  // (i2, i3)'s: each record of a shared corner read and written once.
+  VTK_ALWAYS_INLINE void AddPair(vtkIdType i0, vtkIdType i1, vtkIdType i2, vtkIdType i3,
+    const Terms& u01, const Terms& u02, const Terms& u12, const Terms& u03) const
+  {
+    const std::uint64_t k0 = static_cast<std::uint64_t>(i0 - this->First);
+    const std::uint64_t k1 = static_cast<std::uint64_t>(i1 - this->First);
+    const std::uint64_t k2 = static_cast<std::uint64_t>(i2 - this->First);
+    const std::uint64_t k3 = static_cast<std::uint64_t>(i3 - this->First);
+    Terms u23;
+    this->Make(i2, i3, u23);
+    if (k0 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k0, u01, u02, u02, u03);
+    }
+    if (k1 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k1, u01, u12);
+    }
+    if (k2 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k2, u02, u12, u02, u23);
+    }
+    if (k3 < this->Width)
+    {
+      AddAll(this->Sums + Rec::Size * k3, u03, u23);
+    }
+  }
+
+  // ForCellsTouching's walk over a chunk of triangles only: as operator() for each triangle that
+  // touches the range, without reading the offsets, and a fan pair of distinct points at once
+  // wherever one of its four corners does (a point's additions do not depend on how the polygons
+  // are grouped). Where one pair (a, b, d), (a, d, c) follows another along a row, (b, b', d'),
+  // (b, d', d), the first's (b, d) terms are the second's (a, c) ones: made once.
+  VTK_ALWAYS_INLINE void Triangles(
+    const vtkIdType* ids, vtkIdType cell, vtkIdType end, bool within) const
+  {
+    Terms carried{};
+    vtkIdType carriedI = -1, carriedJ = -1;
+    while (cell < end)
+    {
+      const vtkIdType i0 = ids[0], i1 = ids[1], i2 = ids[2];
+      const bool touches = within || AnyInRange(this->First, this->Width, i0, i1, i2);
+      if (cell + 1 < end && ((ids[3] == i0) & (ids[4] == i2)))
+      {
+        const vtkIdType i3 = ids[5];
+        if (!touches && !InRange(i3, this->First, this->Width))
+        {
+          cell += 2;
+          ids += 6;
+          continue;
+        }
+        if ((i0 != i1) & (i0 != i2) & (i1 != i2) & (i3 != i0) & (i3 != i1) & (i3 != i2))
+        {
+          Terms u01, u02, u12, u03;
+          this->Make(i0, i1, u01);
+          this->Make(i0, i2, u02);
+          this->Make(i1, i2, u12);
+          if ((i0 == carriedI) & (i3 == carriedJ))
+          {
+            Keep(carried, u03);
+          }
+          else
+          {
+            this->Make(i0, i3, u03);
+          }
+          this->AddPair(i0, i1, i2, i3, u01, u02, u12, u03);
+          Keep(u12, carried);
+          carriedI = i1;
+          carriedJ = i2;
+          cell += 2;
+          ids += 6;
+          continue;
+        }
+      }
+      const vtkIdType done = touches ? (*this)(cell, end) : 1;
+      cell += done;
+      ids += 3 * done;
+    }
+  }
+
   // Adds polygon @a cell's terms, or those of @a cell and the next one (before @a end) where they
   // are a fan's two triangles (a, b, d), (a, d, c), as quads split into triangles are: their
   // shared pair's terms made once, and each record of a shared corner read and written once (the
@@ -1057,26 +1187,9 @@ struct AddFitTerms
           const vtkIdType i3 = next[2];
           if ((next[0] == i0) & (next[1] == i2) & (i3 != i0) & (i3 != i1) & (i3 != i2))
           {
-            const std::uint64_t k3 = static_cast<std::uint64_t>(i3 - this->First);
-            Terms u03, u23;
+            Terms u03;
             this->Make(i0, i3, u03);
-            this->Make(i2, i3, u23);
-            if (k0 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k0, u01, u02, u02, u03);
-            }
-            if (k1 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k1, u01, u12);
-            }
-            if (k2 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k2, u02, u12, u02, u23);
-            }
-            if (k3 < this->Width)
-            {
-              AddAll(this->Sums + Rec::Size * k3, u03, u23);
-            }
+            this->AddPair(i0, i1, i2, i3, u01, u02, u12, u03);
             return 2;
           }
         }
@@ -1746,16 +1859,26 @@ struct DisplaceWorker : BlockOps<R, L>
         PrefetchBytes<false>(last + rowStride, sizeof(T) * span);
       }
     }
+    // The texels read in a scalar loop, the blend in one of its own that vectorises (in the same
+    // loop the blend stayed scalar too).
+    alignas(64) DoubleLanes h00, h10, h01, h11;
     for (int k = 0; k < count; ++k)
     {
       const T* p = tex.Data + j0[k] * rowStride + i0[k] * tnc + tex.Comp;
-      double h00 = tex.Norm * p[0], h10 = tex.Norm * p[tnc];
-      double h01 = tex.Norm * p[rowStride], h11 = tex.Norm * p[rowStride + tnc];
-      KeepScalar(h00, h10, h01, h11);
-      const double b0 = (1.0 - fx[k]) * h00 + fx[k] * h10;
-      const double b1 = (1.0 - fx[k]) * h01 + fx[k] * h11;
+      double t00 = tex.Norm * p[0], t10 = tex.Norm * p[tnc];
+      double t01 = tex.Norm * p[rowStride], t11 = tex.Norm * p[rowStride + tnc];
+      KeepScalar(t00, t10, t01, t11);
+      h00[k] = t00;
+      h10[k] = t10;
+      h01[k] = t01;
+      h11[k] = t11;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const double b0 = (1.0 - fx[k]) * h00[k] + fx[k] * h10[k];
+      const double b1 = (1.0 - fx[k]) * h01[k] + fx[k] * h11[k];
       h[k] = (1.0 - fy[k]) * b0 + fy[k] * b1;
-      hs[k] = W * ((1.0 - fy[k]) * (h10 - h00) + fy[k] * (h11 - h01));
+      hs[k] = W * ((1.0 - fy[k]) * (h10[k] - h00[k]) + fy[k] * (h11[k] - h01[k]));
       ht[k] = H * (b1 - b0);
     }
     if (Base::Any(count, outside))
@@ -2671,14 +2794,135 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
     }
   }
 
+  // Whether the polygons @a cell and @a cell + 1 of the chunk ending at @a ce (@a cell a triangle
+  // of the corners @a ids) are a fan pair (a, b, d), (a, d, c): a quad split along (a, d), as
+  // parametric sources and vtkTriangleFilter make them.
+  static VTK_ALWAYS_INLINE bool FanPair(
+    const vtkIdType* offsets, const vtkIdType* ids, vtkIdType cell, vtkIdType ce)
+  {
+    return cell + 1 < ce && offsets[cell + 2] - offsets[cell + 1] == 3 && ids[3] == ids[0] &&
+      ids[4] == ids[2];
+  }
+
+  // Whether the triangle of the @a points @a q0, @a q1, @a q2 (e1 = q1 - q0, e2 = q2 - q0) faces
+  // against the sum of its corners' input @a normals: OrientedNormal's test. Its fan sum and normal
+  // sum start from +0 there; from the first terms here, which changes at most the sign of a zero
+  // in the dot product, and so not the test.
+  static VTK_ALWAYS_INLINE bool Faces(
+    const double e1[3], const double e2[3], const R* n0, const R* n1, const R* n2)
+  {
+    double orig[3];
+    Cross(e1, e2, orig);
+    const double nsum[3] = { double(n0[0]) + n1[0] + n2[0], double(n0[1]) + n1[1] + n2[1],
+      double(n0[2]) + n1[2] + n2[2] };
+    return Dot(orig, nsum) < 0.0;
+  }
+
+  // The edges from corner @a a of a fan pair to @a b, @a d and @a c (points of @a pts, 3
+  // components), in double as FanSum makes them.
+  static VTK_ALWAYS_INLINE void Edges(const R* pts, vtkIdType a, vtkIdType b, vtkIdType d,
+    vtkIdType c, double eb[3], double ed[3], double ec[3])
+  {
+    const R* qa = pts + 3 * a;
+    const R* qb = pts + 3 * b;
+    const R* qd = pts + 3 * d;
+    const R* qc = pts + 3 * c;
+    const double p0[3] = { qa[0], qa[1], qa[2] };
+    for (int k = 0; k < 3; ++k)
+    {
+      eb[k] = qb[k] - p0[k];
+      ed[k] = qd[k] - p0[k];
+      ec[k] = qc[k] - p0[k];
+    }
+  }
+
+  // A fan pair's two triangles: each one's oriented normal with OrientedNormal's operations (the
+  // edge d - a made once for both; no +0 start to the fan sum, which changes at most the sign of a
+  // zero term, which adds nothing to a sum that starts from +0 (and so never is -0), so the sums
+  // get the same bits), added to its corners in polygon order (a, b, d, then a, d, c). One range
+  // test for the four corners where the task holds them all.
+  template <bool SignKnown>
+  VTK_ALWAYS_INLINE void AddFan(const vtkIdType* ids, vtkIdType cell, vtkIdType pb,
+    std::uint64_t width, double* sums, const R* moved, const R* points, const R* normals,
+    signed char* signs) const
+  {
+    const vtkIdType a = ids[0], b = ids[1], d = ids[2], c = ids[5];
+    double eb[3], ed[3], ec[3];
+    Edges(moved, a, b, d, c, eb, ed, ec);
+    double x1[3], x2[3];
+    Cross(eb, ed, x1);
+    Cross(ed, ec, x2);
+    const std::uint64_t ja = static_cast<std::uint64_t>(a - pb);
+    const std::uint64_t jb = static_cast<std::uint64_t>(b - pb);
+    const std::uint64_t jd = static_cast<std::uint64_t>(d - pb);
+    const std::uint64_t jc = static_cast<std::uint64_t>(c - pb);
+    bool flip1, flip2;
+    if (SignKnown)
+    {
+      flip1 = signs[cell] < 0;
+      flip2 = signs[cell + 1] < 0;
+    }
+    else
+    {
+      double fb[3], fd[3], fc[3];
+      Edges(points, a, b, d, c, fb, fd, fc);
+      const R* na = normals + 3 * a;
+      const R* nd = normals + 3 * d;
+      flip1 = Faces(fb, fd, na, normals + 3 * b, nd);
+      flip2 = Faces(fd, fc, na, nd, normals + 3 * c);
+      if (ja < width)
+      {
+        signs[cell] = flip1 ? -1 : 1;
+        signs[cell + 1] = flip2 ? -1 : 1;
+      }
+    }
+    const Double4 v1 = { flip1 ? -x1[0] : x1[0], flip1 ? -x1[1] : x1[1], flip1 ? -x1[2] : x1[2],
+      0.0 };
+    const Double4 v2 = { flip2 ? -x2[0] : x2[0], flip2 ? -x2[1] : x2[1], flip2 ? -x2[2] : x2[2],
+      0.0 };
+    if (((ja | jb | jd | jc) < width) & (a != d))
+    {
+      // a's and d's two additions in registers, b's before and c's after them: each point still
+      // gets the first triangle's normal before the second's, however b and c coincide with a, d
+      // or each other (a and d distinct), so the same bits, without a store to forward from each
+      // first addition to the second.
+      Add(sums, jb, v1);
+      Double4 sa, sd;
+      std::memcpy(&sa, sums + 4 * ja, sizeof(sa));
+      sa += v1;
+      sa += v2;
+      std::memcpy(sums + 4 * ja, &sa, sizeof(sa));
+      std::memcpy(&sd, sums + 4 * jd, sizeof(sd));
+      sd += v1;
+      sd += v2;
+      std::memcpy(sums + 4 * jd, &sd, sizeof(sd));
+      Add(sums, jc, v2);
+      return;
+    }
+    const std::uint64_t j[6] = { ja, jb, jd, ja, jd, jc };
+    for (int k = 0; k < 6; ++k)
+    {
+      if (j[k] < width)
+      {
+        Add(sums, j[k], k < 3 ? v1 : v2);
+      }
+    }
+  }
+
   // The polygons' part of a task: ForCellsTouching's walk, with chunks whose corners are all the
-  // task's added without a test per corner.
+  // task's added without a test per polygon, fan pairs two triangles at a time.
   template <bool SignKnown>
   VTK_ALWAYS_INLINE void AddPolygons(vtkIdType pb, vtkIdType pe, double* sums) const
   {
-    const PolyLinks& mesh = *this->C.Polys;
+    const Context<R>& c = this->C;
+    const PolyLinks& mesh = *c.Polys;
     const vtkIdType* __restrict offsets = mesh.Offsets;
     const vtkIdType* __restrict conn = mesh.Conn;
+    // Held in registers: the sums' stores could alias members read through this.
+    const R* moved = this->Moved.P;
+    const R* points = c.Points->P;
+    const R* normals = c.Normals->P;
+    signed char* signs = this->Signs;
     const std::uint64_t width = static_cast<std::uint64_t>(pe - pb);
     vtkIdType first, last;
     this->Spans.Candidates(pb, pe, first, last);
@@ -2690,22 +2934,76 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
       }
       const vtkIdType cb = chunk * CellSpans::Chunk;
       const vtkIdType ce = std::min(mesh.NumCells, cb + CellSpans::Chunk);
-      if (this->Spans.Within(chunk, pb, pe))
+      const bool within = this->Spans.Within(chunk, pb, pe);
+      if (this->Spans.Triangles[chunk])
       {
-        for (vtkIdType cell = cb; cell < ce; ++cell)
+        // Triangles only: the corners follow one another in threes.
+        const vtkIdType* ids = conn + offsets[cb];
+        vtkIdType cell = cb;
+        for (; cell + 1 < ce;)
         {
-          const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
-          if (n > 0)
+          const bool touches = within || AnyInRange(pb, width, ids[0], ids[1], ids[2], ids[5]);
+          if ((ids[3] == ids[0]) & (ids[4] == ids[2]))
           {
-            this->template AddPolygon<SignKnown, true>(conn + b, n, cell, pb, width, sums);
+            if (touches)
+            {
+              this->template AddFan<SignKnown>(
+                ids, cell, pb, width, sums, moved, points, normals, signs);
+            }
+            cell += 2;
+            ids += 6;
+            continue;
           }
+          if (within || AnyInRange(pb, width, ids[0], ids[1], ids[2]))
+          {
+            this->template AddPolygonOf<SignKnown, false>(ids, 3, cell, pb, width, sums);
+          }
+          ++cell;
+          ids += 3;
+        }
+        if (cell < ce && (within || AnyInRange(pb, width, ids[0], ids[1], ids[2])))
+        {
+          this->template AddPolygonOf<SignKnown, false>(ids, 3, cell, pb, width, sums);
         }
         continue;
       }
-      for (vtkIdType cell = cb; cell < ce; ++cell)
+      if (within)
+      {
+        for (vtkIdType cell = cb; cell < ce;)
+        {
+          const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
+          const vtkIdType* ids = conn + b;
+          if (n == 3 && FanPair(offsets, ids, cell, ce))
+          {
+            this->template AddFan<SignKnown>(
+              ids, cell, pb, width, sums, moved, points, normals, signs);
+            cell += 2;
+            continue;
+          }
+          if (n > 0)
+          {
+            this->template AddPolygon<SignKnown, true>(ids, n, cell, pb, width, sums);
+          }
+          ++cell;
+        }
+        continue;
+      }
+      for (vtkIdType cell = cb; cell < ce;)
       {
         const vtkIdType b = offsets[cell], n = offsets[cell + 1] - b;
         const vtkIdType* ids = conn + b;
+        if (n == 3 && FanPair(offsets, ids, cell, ce))
+        {
+          // A pair of which one triangle does not touch the range adds nothing for it (and stores
+          // no orientation: its first corner is not the task's).
+          if (AnyInRange(pb, width, ids[0], ids[1], ids[2], ids[5]))
+          {
+            this->template AddFan<SignKnown>(
+              ids, cell, pb, width, sums, moved, points, normals, signs);
+          }
+          cell += 2;
+          continue;
+        }
         bool touches = false;
         for (vtkIdType k = 0; k < n; ++k)
         {
@@ -2715,6 +3013,7 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
         {
           this->template AddPolygon<SignKnown, false>(ids, n, cell, pb, width, sums);
         }
+        ++cell;
       }
     }
   }
@@ -2723,7 +3022,8 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
   VTK_ALWAYS_INLINE void Task(vtkIdType pb, vtkIdType pe, double* sums) const
   {
     const Context<R>& c = this->C;
-    std::fill_n(sums, 4 * (pe - pb), 0.0);
+    // The sums are zero here: the thread's buffer starts so, and each task's blocks clear theirs
+    // once read (while in cache, rather than a pass over the buffer before the walk).
     this->template AddPolygons<SignKnown>(pb, pe, sums);
     for (vtkIdType first = pb; first < pe; first += Block)
     {
@@ -2739,7 +3039,9 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
         Base::template PrefetchTuples<true>(c.OutNormals, next, nextCount);
         Base::template PrefetchTuples<true>(c.OutTangents, next, nextCount);
       }
-      this->FinishBlock(first, count, sums + 4 * (first - pb));
+      double* blockSums = sums + 4 * (first - pb);
+      this->FinishBlock(first, count, blockSums);
+      std::fill_n(blockSums, 4 * count, 0.0);
     }
   }
 };
