@@ -49,6 +49,17 @@
 #include <xmmintrin.h>
 #endif
 
+// The AVX-512 build (GCC's alone: see vtkSurfaceDetailVectorize.h) writes its permutations and
+// masked loads with GCC vector extensions and <immintrin.h> intrinsics. Elsewhere, or with
+// SURFACEDETAIL_MIKK_PORTABLE defined (to test them), plain loops that give the same bits.
+#if !defined(SURFACEDETAIL_MIKK_PORTABLE) && defined(__GNUC__) && !defined(__clang__) &&           \
+  (defined(__x86_64__) || defined(__i386__))
+#define SURFACEDETAIL_MIKK_AVX512 1
+#include <immintrin.h>
+#else
+#define SURFACEDETAIL_MIKK_AVX512 0
+#endif
+
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
 
 namespace
@@ -2720,9 +2731,10 @@ private:
   // vertex no triangle uses) stays empty, with copies of another lane's corners, as the
   // lanes past the vertices in SlotFans. Then SlotFans' steps per block of SlotBlock's
   // vertices. False if a check fails or a fan is too large.
-  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
-    const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
-    const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w,
+    vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce, std::int32_t vb,
+    std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* weld, TaskSlots& ts, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
@@ -2766,7 +2778,7 @@ private:
         // The triangle's texture orientation as the top bit of each corner's previous id (see
         // WeighSlots).
         const std::int32_t mark = static_cast<std::int32_t>(std::uint32_t(orient[t]) << 31);
-#if defined(__GNUC__) && !defined(__clang__)
+#if SURFACEDETAIL_MIKK_AVX512
         // The triangle's ids times 3 and its directions as two vectors (each reading past the
         // triangle: see Finish), and each corner's record one permutation of the two.
         typedef float Record __attribute__((vector_size(32)));
@@ -2793,7 +2805,7 @@ private:
             const std::int32_t at = cursor[x];
             cursor[x] = at + RowStride;
             float* to = d + std::min(at, lastSlot);
-#if defined(__GNUC__) && !defined(__clang__)
+#if SURFACEDETAIL_MIKK_AVX512
             std::memcpy(to, &records[i], sizeof(Record));
 #else
             const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3],
@@ -2939,7 +2951,7 @@ private:
     float (*__restrict dirs)[SlotBlock<Real>::Lanes])
   {
     static_assert(SlotBlock<Real>::Lanes == 16, "sixteen records of eight");
-#if defined(__GNUC__) && !defined(__clang__)
+#if SURFACEDETAIL_MIKK_AVX512
     typedef float V __attribute__((vector_size(64)));
     typedef std::int32_t M __attribute__((vector_size(64)));
     // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
@@ -2983,6 +2995,73 @@ private:
       for (int q = 0; q < 6; ++q)
       {
         dirs[q][i] = records[8 * i + 2 + q];
+      }
+    }
+#endif
+  }
+
+  // The positions of the next points (ends[0-2]: x, y, z) and previous points (ends[3-5]) of
+  // a row of a task's slots (float points; records as in TransposeRow). The corner loop
+  // read them with emulated gathers, a lane's id moved out of its vector and a scalar load
+  // for each coordinate (~6 instructions a value, a tenth of the filter's cycles on the 1M
+  // torus); here each id is read as a scalar from its record and each point is one masked
+  // load (the fourth float, past the last point's, is not read), four points to a vector,
+  // transposed by permutations.
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE static void GatherRow(const float* __restrict p,
+    const float* __restrict records, float (*__restrict ends)[SlotBlock<Real>::Lanes])
+  {
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    static_assert(Lanes == 16, "sixteen records of eight");
+    auto id = [records](int i, int which)
+    {
+      std::int32_t x;
+      std::memcpy(&x, records + 8 * i + which, sizeof(x));
+      // A previous id's top bit is its triangle's texture orientation (see LocalSlots).
+      return x & std::numeric_limits<std::int32_t>::max();
+    };
+#if SURFACEDETAIL_MIKK_AVX512
+    // Lanes (4 a, 4 a + 1, ...) from a and (4 a + 16, ...) from b: x of points 0-7, then y; z.
+    const __m512i xy = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 1, 5, 9, 13, 17, 21, 25, 29);
+    const __m512i zz =
+      _mm512_setr_epi32(2, 6, 10, 14, 18, 22, 26, 30, 2, 6, 10, 14, 18, 22, 26, 30);
+    for (int which = 0; which < 2; ++which)
+    {
+      __m512 four[4]; // points 4 k to 4 k + 3, one to each 128-bit block
+      for (int k = 0; k < 4; ++k)
+      {
+        __m128 pt[4]; // (lambdas do not take the function's target: no intrinsics in them)
+        for (int l = 0; l < 4; ++l)
+        {
+          pt[l] = _mm_maskz_loadu_ps(0x7, p + id(4 * k + l, which));
+        }
+        const __m256 lo = _mm256_insertf128_ps(_mm256_castps128_ps256(pt[0]), pt[1], 1);
+        const __m256 hi = _mm256_insertf128_ps(_mm256_castps128_ps256(pt[2]), pt[3], 1);
+        four[k] = _mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1);
+      }
+      const __m512 a = _mm512_permutex2var_ps(four[0], xy, four[1]);
+      const __m512 b = _mm512_permutex2var_ps(four[2], xy, four[3]);
+      const __m512 c = _mm512_permutex2var_ps(four[0], zz, four[1]);
+      const __m512 d = _mm512_permutex2var_ps(four[2], zz, four[3]);
+      // (_mm512_shuffle_f32x4 leaves GCC 12 warning of an uninitialised value; with the whole
+      // mask it is the same instruction.)
+      constexpr __mmask16 all = 0xffff;
+      _mm512_store_ps(
+        ends[3 * which], _mm512_mask_shuffle_f32x4(a, all, a, b, _MM_SHUFFLE(1, 0, 1, 0)));
+      _mm512_store_ps(
+        ends[3 * which + 1], _mm512_mask_shuffle_f32x4(a, all, a, b, _MM_SHUFFLE(3, 2, 3, 2)));
+      _mm512_store_ps(
+        ends[3 * which + 2], _mm512_mask_shuffle_f32x4(c, all, c, d, _MM_SHUFFLE(1, 0, 1, 0)));
+    }
+#else
+    for (int which = 0; which < 2; ++which)
+    {
+      for (int i = 0; i < Lanes; ++i)
+      {
+        const float* x = p + id(i, which);
+        for (int q = 0; q < 3; ++q)
+        {
+          ends[3 * which + q][i] = x[q];
+        }
       }
     }
 #endif
@@ -3500,10 +3579,10 @@ private:
     }
     return true;
   }
-  VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
-    float* out) const
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e,
+    const std::int32_t* nextIds, const std::int32_t* prevIds, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    const std::int32_t* weld, float* out) const
   {
     using Block = SlotBlock<Real>;
     std::unique_ptr<Block> block(new Block);
@@ -3653,10 +3732,14 @@ private:
   // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
   // Records: the slots are records (a task's slots), transposed a row at a time.
+  // WeighSlots, SlotFans and LocalSlots run in the AVX-512 build only and take its target, so
+  // that the intrinsics of GatherRow (which must inline into a function of that target) can.
   template <bool Records>
-  VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
+    // A task's slots with float points: the corners' ends from GatherRow.
+    constexpr bool Gathered = Records && std::is_same<PT, float>::value;
     const PT* __restrict p = this->P;
     const int groups = (fb.NumberOfVertices + Lanes - 1) / Lanes;
     std::int32_t within = 1;
@@ -3712,6 +3795,11 @@ private:
         const std::int32_t* __restrict prev = Records ? rowIds[1] : fb.Prev + c0;
         const float* __restrict dsx = dirs(0), * __restrict dsy = dirs(1), * __restrict dsz = dirs(2);
         const float* __restrict dtx = dirs(3), * __restrict dty = dirs(4), * __restrict dtz = dirs(5);
+        alignas(64) float ends[6][Lanes];
+        if constexpr (Gathered)
+        {
+          GatherRow(p, fb.Dir[0] - 2 + c0, ends);
+        }
         // Next and Prev hold 3 * id, the same multisets as the ids.
         for (int i = 0; i < Lanes; ++i)
         {
@@ -3723,9 +3811,11 @@ private:
           const std::int32_t x1 = next[i], x2 = prev[i];
           const Real osx = dsx[i], osy = dsy[i], osz = dsz[i];
           const Real otx = dtx[i], oty = dty[i], otz = dtz[i];
-          const Corner w = WeighCorner(Real(p[x1]) - vx[i], Real(p[x1 + 1]) - vy[i],
-            Real(p[x1 + 2]) - vz[i], Real(p[x2]) - vx[i], Real(p[x2 + 1]) - vy[i],
-            Real(p[x2 + 2]) - vz[i], nx[i], ny[i], nz[i], osx, osy, osz);
+          auto end = [&](int q, std::int32_t x)
+          { return Gathered ? ends[q][i] : Real(p[x + q % 3]); };
+          const Corner w = WeighCorner(end(0, x1) - vx[i], end(1, x1) - vy[i], end(2, x1) - vz[i],
+            end(3, x2) - vx[i], end(4, x2) - vy[i], end(5, x2) - vz[i], nx[i], ny[i], nz[i], osx,
+            osy, osz);
           turns[i] += live ? w.Turn : Real(0);
           // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
           const bool quarter = (osx * r0x[i] + osy * r0y[i] + osz * r0z[i] > Real(FastCos)) &
