@@ -1949,9 +1949,11 @@ private:
     {
       return false;
     }
-    Block<double> unitNormals(3 * static_cast<std::size_t>(this->NumberOfPoints));
-    this->ComputeUnitNormals(unitNormals.Get());
     std::vector<std::int32_t> taskFirst, taskChunks;
+    // The task-local slots make their lanes' unit normals themselves (LaneVertices): the
+    // 12 bytes per point that a pass of its own wrote, read back, cost more than the square
+    // roots.
+    std::unique_ptr<Block<double>> unitNormals;
     if (local && this->TaskChunks(spanLo, spanHi, taskFirst, taskChunks))
     {
       if (!this->LocalVertices(
@@ -1962,6 +1964,8 @@ private:
     }
     else
     {
+      unitNormals.reset(new Block<double>(3 * static_cast<std::size_t>(this->NumberOfPoints)));
+      this->ComputeUnitNormals(unitNormals->Get());
       Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
       Block<std::int32_t> corners(3 * nt);
       // Eight more: a fan's next and prev values are read eight at a time.
@@ -1992,7 +1996,7 @@ private:
   const int TcStride;
   const std::int32_t NumberOfPoints;
   bool Welded = false;
-  const double* UnitNormals = nullptr; // UnitNormal of every point, for the fans
+  const double* UnitNormals = nullptr; // UnitNormal of every point, for FanBlock and SlotFans
 
   // UnitNormal of every point into un (and UnitNormals), in a loop that vectorises: the fans
   // then do not wait on a square root and a division per vertex.
@@ -2032,17 +2036,22 @@ private:
   // UnitNormal without branches.
   VTK_ALWAYS_INLINE void UnitNormalRange(vtkIdType b, vtkIdType e, double* __restrict un) const
   {
-    const NT* __restrict n = this->N;
     for (vtkIdType i = b; i < e; ++i)
     {
-      const double x = double(n[3 * i]), y = double(n[3 * i + 1]), z = double(n[3 * i + 2]);
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && len <= DBL_MAX;
-      un[3 * i] = scale ? inv * x : x;
-      un[3 * i + 1] = scale ? inv * y : y;
-      un[3 * i + 2] = scale ? inv * z : z;
+      UnitNormalOf(this->N + 3 * i, un + 3 * i);
     }
+  }
+
+  // UnitNormal of the normal n into u.
+  VTK_ALWAYS_INLINE static void UnitNormalOf(const NT* __restrict n, double* __restrict u)
+  {
+    const double x = double(n[0]), y = double(n[1]), z = double(n[2]);
+    const double len = std::sqrt(x * x + y * y + z * z);
+    const double inv = 1.0 / len;
+    const bool scale = len > 0.0 && len <= DBL_MAX;
+    u[0] = scale ? inv * x : x;
+    u[1] = scale ? inv * y : y;
+    u[2] = scale ? inv * z : z;
   }
 
   V3 Position(std::int32_t i) const
@@ -2869,8 +2878,8 @@ private:
       // Lanes in vertex order: the last one nb - 1 after the first if no welded copy is
       // among them.
       bad |= fb.Vertex[nb - 1] - fb.Vertex[0] == nb - 1
-        ? LaneVertices<true>(fb, nb, this->UnitNormals, this->P)
-        : LaneVertices<false>(fb, nb, this->UnitNormals, this->P);
+        ? LaneVertices<true>(fb, nb, this->N, this->P)
+        : LaneVertices<false>(fb, nb, this->N, this->P);
       if (bad)
       {
         return false;
@@ -2917,12 +2926,13 @@ private:
     return true;
   }
 
-  // Each lane's unit normal and position; 1 if a lane with corners has a normal not of unit
-  // length. Consecutive: the lanes' vertices follow one another, so the compiler reads
-  // their values as consecutive triples (permutations) instead of emulated gathers.
+  // Each lane's unit normal (from the normals) and position; 1 if a lane with corners has a
+  // normal not of unit length. Consecutive: the lanes' vertices follow one another, so the
+  // compiler reads their values as consecutive triples (permutations) instead of emulated
+  // gathers.
   template <bool Consecutive>
   VTK_ALWAYS_INLINE static int LaneVertices(
-    SlotBlock<Real>& fb, int nb, const double* __restrict un, const PT* __restrict pts)
+    SlotBlock<Real>& fb, int nb, const NT* __restrict normals, const PT* __restrict pts)
   {
     int bad = 0;
     const std::size_t v0 = static_cast<std::size_t>(fb.Vertex[0]);
@@ -2930,7 +2940,8 @@ private:
     {
       const std::size_t v =
         Consecutive ? v0 + static_cast<std::size_t>(j) : static_cast<std::size_t>(fb.Vertex[j]);
-      const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
+      double u[3];
+      UnitNormalOf(normals + 3 * v, u);
       // An empty lane's vertex gets the default frame from its normal, as it is.
       bad |= (fb.K[j] > 0) & !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
       for (int q = 0; q < 3; ++q)
