@@ -3709,30 +3709,40 @@ private:
         fb.Position[x][j] = fb.Position[x][j0];
       }
     }
-    int full = 0; // the group's first lane with corners
-    for (int j = 0; j < nl; ++j)
+    for (int g = 0; g < nl / Lanes; ++g)
     {
-      const int g = j / Lanes, i = j % Lanes, k = fb.K[j];
-      if (i == 0)
+      const int j0 = Lanes * g;
+      // Most groups (every lane's fan as large as the group's largest) need nothing.
+      int uneven = 0;
+      for (int i = 0; i < Lanes; ++i)
       {
-        full = j;
-        while (fb.K[full] == 0 && full < j + Lanes - 1)
-        {
-          ++full;
-        }
+        uneven |= fb.K[j0 + i] != fb.GroupSlots[g];
+      }
+      if (!uneven)
+      {
+        continue;
+      }
+      int full = j0; // the group's first lane with corners
+      while (fb.K[full] == 0 && full < j0 + Lanes - 1)
+      {
+        ++full;
       }
       const int kf = fb.K[full];
-      for (int s = k; s < fb.GroupSlots[g]; ++s)
+      for (int i = 0; i < Lanes; ++i)
       {
-        const int c = fb.GroupFirst[g] + fb.RowStride * s + fb.LaneStride * i;
-        const int from = fb.GroupFirst[g] +
-          (k > 0 ? fb.RowStride * (k - 1) + fb.LaneStride * i
-                 : fb.RowStride * std::min(s, kf - 1) + fb.LaneStride * (full % Lanes));
-        fb.Next[c] = fb.Next[from];
-        fb.Prev[c] = fb.Prev[from];
-        for (int x = 0; x < 6; ++x)
+        const int k = fb.K[j0 + i];
+        for (int s = k; s < fb.GroupSlots[g]; ++s)
         {
-          fb.Dir[x][c] = fb.Dir[x][from];
+          const int c = fb.GroupFirst[g] + fb.RowStride * s + fb.LaneStride * i;
+          const int from = fb.GroupFirst[g] +
+            (k > 0 ? fb.RowStride * (k - 1) + fb.LaneStride * i
+                   : fb.RowStride * std::min(s, kf - 1) + fb.LaneStride * (full % Lanes));
+          fb.Next[c] = fb.Next[from];
+          fb.Prev[c] = fb.Prev[from];
+          for (int x = 0; x < 6; ++x)
+          {
+            fb.Dir[x][c] = fb.Dir[x][from];
+          }
         }
       }
     }
