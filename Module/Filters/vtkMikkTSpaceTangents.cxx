@@ -2332,7 +2332,7 @@ private:
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
     unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.TriangleRange(
+    return self.TriangleRange<true>(
       b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
@@ -2341,7 +2341,9 @@ private:
   // block fold into flags too, tested once per block: loops with an early exit do not
   // vectorise. With spanLo and spanHi, also each block's least and largest welded id (see
   // TaskChunks); b is then a multiple of SpanTriangles.
-  template <typename IdT>
+  // Stream: the AVX-512 build, whose welded corners and directions go out by streaming stores
+  // (StreamIds, StreamDirections: 2% and 1% fewer cycles on the 1M torus).
+  template <bool Stream = false, typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
     std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient, std::int32_t* spanLo,
@@ -2355,6 +2357,7 @@ private:
       alignas(32) double Good[Size];
       alignas(32) double Sign[Size];
       alignas(32) float D[6][Size];
+      alignas(64) std::int32_t W[3 * Size]; // the welded corners, to stream
     };
     std::unique_ptr<Columns> columns(new Columns);
     Columns& cb = *columns;
@@ -2366,7 +2369,7 @@ private:
       const int m = static_cast<int>(std::min<vtkIdType>(Size, e - t0));
       const IdT* __restrict o = offsets + t0;
       const IdT* __restrict ids = conn + 3 * t0;
-      std::int32_t* __restrict wb = w + 3 * t0;
+      std::int32_t* __restrict wb = Stream ? cb.W : w + 3 * t0;
       // RequestData leaves the ids' range to this pass, which reads them anyway.
       UIdT bad = 0;
       for (int j = 0; j < m; ++j)
@@ -2430,7 +2433,14 @@ private:
         good &= cb.Good[j] != 0.0 ? 1 : 0;
         ob[j] = cb.Sign[j] > 0.0 ? 1 : 0;
       }
-      for (int j = 0; j < m; ++j)
+      int streamed = 0;
+      if constexpr (Stream)
+      {
+        const int done = StreamIds(cb.W, 3 * m, w + 3 * t0);
+        std::copy(cb.W + done, cb.W + 3 * m, w + 3 * t0 + done);
+        streamed = StreamDirections(cb.D, m, dir[t0].data());
+      }
+      for (int j = streamed; j < m; ++j)
       {
         for (int i = 0; i < 6; ++i)
         {
@@ -2442,7 +2452,99 @@ private:
         return false;
       }
     }
+#if SURFACEDETAIL_MIKK_AVX512
+    if constexpr (Stream)
+    {
+      _mm_sfence(); // the streaming stores, before other threads read them
+    }
+#endif
     return true;
+  }
+
+  // Where the directions of 16 triangles go in their records of six floats: output vector o
+  // takes its element e from pair p of the six input arrays (d[2 p], d[2 p + 1]) at Index[o][p]
+  // if bit e of Mask[o][p] is set.
+  struct DirectionRecords
+  {
+    std::int32_t Index[6][3][16];
+    std::uint16_t Mask[6][3];
+    constexpr DirectionRecords()
+      : Index()
+      , Mask()
+    {
+      for (int f = 0; f < 96; ++f)
+      {
+        const int o = f / 16, e = f % 16, t = f / 6, c = f % 6;
+        this->Index[o][c / 2][e] = t + 16 * (c % 2);
+        this->Mask[o][c / 2] = static_cast<std::uint16_t>(this->Mask[o][c / 2] | (1u << e));
+      }
+    }
+  };
+
+  // The directions d of triangles [0, m) of a block into their records at `to` (six floats
+  // each), 16 triangles at a time, by permutations and streaming stores: the triangle pass
+  // writes 24 bytes per triangle that the fans read only after the whole pass, and ordinary
+  // stores first read each line from memory. Returns how many triangles it stored (none if
+  // `to` is not 64-byte aligned, or in builds without it); the caller stores the rest.
+  template <int Size>
+  SURFACEDETAIL_TARGET_AVX512 static int StreamDirections(
+    const float (&d)[6][Size], int m, float* to)
+  {
+    int j0 = 0;
+#if SURFACEDETAIL_MIKK_AVX512
+    static constexpr DirectionRecords records{};
+    if (reinterpret_cast<std::uintptr_t>(to) % 64 != 0)
+    {
+      return 0;
+    }
+    for (; j0 + 16 <= m; j0 += 16)
+    {
+      __m512 in[6];
+      for (int c = 0; c < 6; ++c)
+      {
+        in[c] = _mm512_loadu_ps(d[c] + j0);
+      }
+      for (int o = 0; o < 6; ++o)
+      {
+        __m512 r = _mm512_permutex2var_ps(in[0], _mm512_loadu_si512(records.Index[o][0]), in[1]);
+        for (int p = 1; p < 3; ++p)
+        {
+          r = _mm512_mask_blend_ps(records.Mask[o][p], r,
+            _mm512_permutex2var_ps(
+              in[2 * p], _mm512_loadu_si512(records.Index[o][p]), in[2 * p + 1]));
+        }
+        _mm512_stream_ps(to + 6 * j0 + 16 * o, r);
+      }
+    }
+#else
+    (void)d;
+    (void)m;
+    (void)to;
+#endif
+    return j0;
+  }
+
+  // The first n values of `from` to `to` by streaming stores (see StreamDirections), 16 at a
+  // time; returns how many it stored.
+  SURFACEDETAIL_TARGET_AVX512 static int StreamIds(
+    const std::int32_t* from, int n, std::int32_t* to)
+  {
+    int i = 0;
+#if SURFACEDETAIL_MIKK_AVX512
+    if (reinterpret_cast<std::uintptr_t>(to) % 64 != 0)
+    {
+      return 0;
+    }
+    for (; i + 16 <= n; i += 16)
+    {
+      _mm512_stream_si512(reinterpret_cast<__m512i*>(to + i), _mm512_loadu_si512(from + i));
+    }
+#else
+    (void)from;
+    (void)n;
+    (void)to;
+#endif
+    return i;
   }
 
   // One loop over a block's triangles (with gathers in the AVX2 build).
