@@ -2745,14 +2745,15 @@ private:
   // in triangle order and copies its vertices' corners straight into its fans' slots
   // (LocalSlots): no global vertex lists (VertexCorners: 36 MB written on the 1M torus, 13%
   // of the cycles) and no copies from them into the slots (GatherSlots: half the fan pass).
-  // A task's slots (~400 kB on the torus) stay in the level-2 cache from their copy to the
-  // corner loop. Tasks of 1024 vertices took 2% more cycles on the torus (more chunks read
-  // twice), of 4096 1% fewer, for twice the slots.
+  // A task's slots (~800 kB on the torus, of 4 MB of address space) stay in the level-2
+  // cache from their copy to the corner loop. Tasks of 4096 vertices read each chunk of the
+  // 1M torus about 1.26 times, 2048 1.52 times (2% more cycles since the triangle pass
+  // streams its output), 1024 more still.
   static constexpr vtkIdType SpanTriangles = 128;
-  static constexpr std::int32_t TaskVertices = 2048;
+  static constexpr std::int32_t TaskVertices = 4096;
   // The tasks may read each chunk this many times on average (each read is two passes: the
   // count and the copy); meshes whose welded ids are more scattered (a mesh numbered at
-  // random) use the global lists. The 1M torus: 1.5 times.
+  // random) use the global lists. The 1M torus: about 1.26 times.
   static constexpr vtkIdType MaxScans = 3;
 
   // Per task, the chunks whose corners' least and largest welded ids (lo and hi, which are
