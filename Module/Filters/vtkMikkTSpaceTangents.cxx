@@ -49,6 +49,17 @@
 #include <xmmintrin.h>
 #endif
 
+// The AVX-512 build (GCC's alone: see vtkSurfaceDetailVectorize.h) writes its permutations and
+// masked loads with GCC vector extensions and <immintrin.h> intrinsics. Elsewhere, or with
+// SURFACEDETAIL_MIKK_PORTABLE defined (to test them), plain loops that give the same bits.
+#if !defined(SURFACEDETAIL_MIKK_PORTABLE) && defined(__GNUC__) && !defined(__clang__) &&           \
+  (defined(__x86_64__) || defined(__i386__))
+#define SURFACEDETAIL_MIKK_AVX512 1
+#include <immintrin.h>
+#else
+#define SURFACEDETAIL_MIKK_AVX512 0
+#endif
+
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
 
 namespace
@@ -1931,9 +1942,11 @@ private:
     {
       return false;
     }
-    Block<double> unitNormals(3 * static_cast<std::size_t>(this->NumberOfPoints));
-    this->ComputeUnitNormals(unitNormals.Get());
     std::vector<std::int32_t> taskFirst, taskChunks;
+    // The task-local slots make their lanes' unit normals themselves (LaneVertices): the
+    // 12 bytes per point that a pass of its own wrote, read back, cost more than the square
+    // roots.
+    std::unique_ptr<Block<double>> unitNormals;
     if (local && this->TaskChunks(spanLo, spanHi, taskFirst, taskChunks))
     {
       if (!this->LocalVertices(
@@ -1944,6 +1957,8 @@ private:
     }
     else
     {
+      unitNormals.reset(new Block<double>(3 * static_cast<std::size_t>(this->NumberOfPoints)));
+      this->ComputeUnitNormals(unitNormals->Get());
       Block<std::int32_t> first(static_cast<std::size_t>(this->NumberOfPoints) + 1);
       Block<std::int32_t> corners(3 * nt);
       // Eight more: a fan's next and prev values are read eight at a time.
@@ -1974,7 +1989,7 @@ private:
   const int TcStride;
   const std::int32_t NumberOfPoints;
   bool Welded = false;
-  const double* UnitNormals = nullptr; // UnitNormal of every point, for the fans
+  const double* UnitNormals = nullptr; // UnitNormal of every point, for FanBlock and SlotFans
 
   // UnitNormal of every point into un (and UnitNormals), in a loop that vectorises: the fans
   // then do not wait on a square root and a division per vertex.
@@ -2014,17 +2029,22 @@ private:
   // UnitNormal without branches.
   VTK_ALWAYS_INLINE void UnitNormalRange(vtkIdType b, vtkIdType e, double* __restrict un) const
   {
-    const NT* __restrict n = this->N;
     for (vtkIdType i = b; i < e; ++i)
     {
-      const double x = double(n[3 * i]), y = double(n[3 * i + 1]), z = double(n[3 * i + 2]);
-      const double len = std::sqrt(x * x + y * y + z * z);
-      const double inv = 1.0 / len;
-      const bool scale = len > 0.0 && len <= DBL_MAX;
-      un[3 * i] = scale ? inv * x : x;
-      un[3 * i + 1] = scale ? inv * y : y;
-      un[3 * i + 2] = scale ? inv * z : z;
+      UnitNormalOf(this->N + 3 * i, un + 3 * i);
     }
+  }
+
+  // UnitNormal of the normal n into u.
+  VTK_ALWAYS_INLINE static void UnitNormalOf(const NT* __restrict n, double* __restrict u)
+  {
+    const double x = double(n[0]), y = double(n[1]), z = double(n[2]);
+    const double len = std::sqrt(x * x + y * y + z * z);
+    const double inv = 1.0 / len;
+    const bool scale = len > 0.0 && len <= DBL_MAX;
+    u[0] = scale ? inv * x : x;
+    u[1] = scale ? inv * y : y;
+    u[2] = scale ? inv * z : z;
   }
 
   V3 Position(std::int32_t i) const
@@ -2305,7 +2325,7 @@ private:
     std::atomic<unsigned char>* referenced, std::int32_t* w, std::array<float, 6>* dir,
     unsigned char* orient, std::int32_t* spanLo, std::int32_t* spanHi)
   {
-    return self.TriangleRange(
+    return self.TriangleRange<true>(
       b, e, offsets, conn, weld, referenced, w, dir, orient, spanLo, spanHi);
   }
 
@@ -2314,7 +2334,9 @@ private:
   // block fold into flags too, tested once per block: loops with an early exit do not
   // vectorise. With spanLo and spanHi, also each block's least and largest welded id (see
   // TaskChunks); b is then a multiple of SpanTriangles.
-  template <typename IdT>
+  // Stream: the AVX-512 build, whose welded corners and directions go out by streaming stores
+  // (StreamIds, StreamDirections: 2% and 1% fewer cycles on the 1M torus).
+  template <bool Stream = false, typename IdT>
   VTK_ALWAYS_INLINE bool TriangleRange(vtkIdType b, vtkIdType e, const IdT* offsets,
     const IdT* conn, const std::int32_t* weld, std::atomic<unsigned char>* referenced,
     std::int32_t* w, std::array<float, 6>* dir, unsigned char* orient, std::int32_t* spanLo,
@@ -2328,6 +2350,7 @@ private:
       alignas(32) double Good[Size];
       alignas(32) double Sign[Size];
       alignas(32) float D[6][Size];
+      alignas(64) std::int32_t W[3 * Size]; // the welded corners, to stream
     };
     std::unique_ptr<Columns> columns(new Columns);
     Columns& cb = *columns;
@@ -2339,7 +2362,7 @@ private:
       const int m = static_cast<int>(std::min<vtkIdType>(Size, e - t0));
       const IdT* __restrict o = offsets + t0;
       const IdT* __restrict ids = conn + 3 * t0;
-      std::int32_t* __restrict wb = w + 3 * t0;
+      std::int32_t* __restrict wb = Stream ? cb.W : w + 3 * t0;
       // RequestData leaves the ids' range to this pass, which reads them anyway.
       UIdT bad = 0;
       for (int j = 0; j < m; ++j)
@@ -2403,7 +2426,14 @@ private:
         good &= cb.Good[j] != 0.0 ? 1 : 0;
         ob[j] = cb.Sign[j] > 0.0 ? 1 : 0;
       }
-      for (int j = 0; j < m; ++j)
+      int streamed = 0;
+      if constexpr (Stream)
+      {
+        const int done = StreamIds(cb.W, 3 * m, w + 3 * t0);
+        std::copy(cb.W + done, cb.W + 3 * m, w + 3 * t0 + done);
+        streamed = StreamDirections(cb.D, m, dir[t0].data());
+      }
+      for (int j = streamed; j < m; ++j)
       {
         for (int i = 0; i < 6; ++i)
         {
@@ -2415,7 +2445,99 @@ private:
         return false;
       }
     }
+#if SURFACEDETAIL_MIKK_AVX512
+    if constexpr (Stream)
+    {
+      _mm_sfence(); // the streaming stores, before other threads read them
+    }
+#endif
     return true;
+  }
+
+  // Where the directions of 16 triangles go in their records of six floats: output vector o
+  // takes its element e from pair p of the six input arrays (d[2 p], d[2 p + 1]) at Index[o][p]
+  // if bit e of Mask[o][p] is set.
+  struct DirectionRecords
+  {
+    std::int32_t Index[6][3][16];
+    std::uint16_t Mask[6][3];
+    constexpr DirectionRecords()
+      : Index()
+      , Mask()
+    {
+      for (int f = 0; f < 96; ++f)
+      {
+        const int o = f / 16, e = f % 16, t = f / 6, c = f % 6;
+        this->Index[o][c / 2][e] = t + 16 * (c % 2);
+        this->Mask[o][c / 2] = static_cast<std::uint16_t>(this->Mask[o][c / 2] | (1u << e));
+      }
+    }
+  };
+
+  // The directions d of triangles [0, m) of a block into their records at `to` (six floats
+  // each), 16 triangles at a time, by permutations and streaming stores: the triangle pass
+  // writes 24 bytes per triangle that the fans read only after the whole pass, and ordinary
+  // stores first read each line from memory. Returns how many triangles it stored (none if
+  // `to` is not 64-byte aligned, or in builds without it); the caller stores the rest.
+  template <int Size>
+  SURFACEDETAIL_TARGET_AVX512 static int StreamDirections(
+    const float (&d)[6][Size], int m, float* to)
+  {
+    int j0 = 0;
+#if SURFACEDETAIL_MIKK_AVX512
+    static constexpr DirectionRecords records{};
+    if (reinterpret_cast<std::uintptr_t>(to) % 64 != 0)
+    {
+      return 0;
+    }
+    for (; j0 + 16 <= m; j0 += 16)
+    {
+      __m512 in[6];
+      for (int c = 0; c < 6; ++c)
+      {
+        in[c] = _mm512_loadu_ps(d[c] + j0);
+      }
+      for (int o = 0; o < 6; ++o)
+      {
+        __m512 r = _mm512_permutex2var_ps(in[0], _mm512_loadu_si512(records.Index[o][0]), in[1]);
+        for (int p = 1; p < 3; ++p)
+        {
+          r = _mm512_mask_blend_ps(records.Mask[o][p], r,
+            _mm512_permutex2var_ps(
+              in[2 * p], _mm512_loadu_si512(records.Index[o][p]), in[2 * p + 1]));
+        }
+        _mm512_stream_ps(to + 6 * j0 + 16 * o, r);
+      }
+    }
+#else
+    (void)d;
+    (void)m;
+    (void)to;
+#endif
+    return j0;
+  }
+
+  // The first n values of `from` to `to` by streaming stores (see StreamDirections), 16 at a
+  // time; returns how many it stored.
+  SURFACEDETAIL_TARGET_AVX512 static int StreamIds(
+    const std::int32_t* from, int n, std::int32_t* to)
+  {
+    int i = 0;
+#if SURFACEDETAIL_MIKK_AVX512
+    if (reinterpret_cast<std::uintptr_t>(to) % 64 != 0)
+    {
+      return 0;
+    }
+    for (; i + 16 <= n; i += 16)
+    {
+      _mm512_stream_si512(reinterpret_cast<__m512i*>(to + i), _mm512_loadu_si512(from + i));
+    }
+#else
+    (void)from;
+    (void)n;
+    (void)to;
+#endif
+    return i;
   }
 
   // One loop over a block's triangles (with gathers in the AVX2 build).
@@ -2616,14 +2738,15 @@ private:
   // in triangle order and copies its vertices' corners straight into its fans' slots
   // (LocalSlots): no global vertex lists (VertexCorners: 36 MB written on the 1M torus, 13%
   // of the cycles) and no copies from them into the slots (GatherSlots: half the fan pass).
-  // A task's slots (~400 kB on the torus) stay in the level-2 cache from their copy to the
-  // corner loop. Tasks of 1024 vertices took 2% more cycles on the torus (more chunks read
-  // twice), of 4096 1% fewer, for twice the slots.
+  // A task's slots (~800 kB on the torus, of 4 MB of address space) stay in the level-2
+  // cache from their copy to the corner loop. Tasks of 4096 vertices read each chunk of the
+  // 1M torus about 1.26 times, 2048 1.52 times (2% more cycles since the triangle pass
+  // streams its output), 1024 more still.
   static constexpr vtkIdType SpanTriangles = 128;
-  static constexpr std::int32_t TaskVertices = 2048;
+  static constexpr std::int32_t TaskVertices = 4096;
   // The tasks may read each chunk this many times on average (each read is two passes: the
   // count and the copy); meshes whose welded ids are more scattered (a mesh numbered at
-  // random) use the global lists. The 1M torus: 1.5 times.
+  // random) use the global lists. The 1M torus: about 1.26 times.
   static constexpr vtkIdType MaxScans = 3;
 
   // Per task, the chunks whose corners' least and largest welded ids (lo and hi, which are
@@ -2713,9 +2836,10 @@ private:
   // vertex no triangle uses) stays empty, with copies of another lane's corners, as the
   // lanes past the vertices in SlotFans. Then SlotFans' steps per block of SlotBlock's
   // vertices. False if a check fails or a fan is too large.
-  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
-    const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
-    const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w,
+    vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce, std::int32_t vb,
+    std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* weld, TaskSlots& ts, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
@@ -2759,7 +2883,7 @@ private:
         // The triangle's texture orientation as the top bit of each corner's previous id (see
         // WeighSlots).
         const std::int32_t mark = static_cast<std::int32_t>(std::uint32_t(orient[t]) << 31);
-#if defined(__GNUC__) && !defined(__clang__)
+#if SURFACEDETAIL_MIKK_AVX512
         // The triangle's ids times 3 and its directions as two vectors (each reading past the
         // triangle: see Finish), and each corner's record one permutation of the two.
         typedef float Record __attribute__((vector_size(32)));
@@ -2786,7 +2910,7 @@ private:
             const std::int32_t at = cursor[x];
             cursor[x] = at + RowStride;
             float* to = d + std::min(at, lastSlot);
-#if defined(__GNUC__) && !defined(__clang__)
+#if SURFACEDETAIL_MIKK_AVX512
             std::memcpy(to, &records[i], sizeof(Record));
 #else
             const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3],
@@ -2850,8 +2974,8 @@ private:
       // Lanes in vertex order: the last one nb - 1 after the first if no welded copy is
       // among them.
       bad |= fb.Vertex[nb - 1] - fb.Vertex[0] == nb - 1
-        ? LaneVertices<true>(fb, nb, this->UnitNormals, this->P)
-        : LaneVertices<false>(fb, nb, this->UnitNormals, this->P);
+        ? LaneVertices<true>(fb, nb, this->N, this->P)
+        : LaneVertices<false>(fb, nb, this->N, this->P);
       if (bad)
       {
         return false;
@@ -2898,12 +3022,13 @@ private:
     return true;
   }
 
-  // Each lane's unit normal and position; 1 if a lane with corners has a normal not of unit
-  // length. Consecutive: the lanes' vertices follow one another, so the compiler reads
-  // their values as consecutive triples (permutations) instead of emulated gathers.
+  // Each lane's unit normal (from the normals) and position; 1 if a lane with corners has a
+  // normal not of unit length. Consecutive: the lanes' vertices follow one another, so the
+  // compiler reads their values as consecutive triples (permutations) instead of emulated
+  // gathers.
   template <bool Consecutive>
   VTK_ALWAYS_INLINE static int LaneVertices(
-    SlotBlock<Real>& fb, int nb, const double* __restrict un, const PT* __restrict pts)
+    SlotBlock<Real>& fb, int nb, const NT* __restrict normals, const PT* __restrict pts)
   {
     int bad = 0;
     const std::size_t v0 = static_cast<std::size_t>(fb.Vertex[0]);
@@ -2911,7 +3036,8 @@ private:
     {
       const std::size_t v =
         Consecutive ? v0 + static_cast<std::size_t>(j) : static_cast<std::size_t>(fb.Vertex[j]);
-      const double u[3] = { un[3 * v], un[3 * v + 1], un[3 * v + 2] };
+      double u[3];
+      UnitNormalOf(normals + 3 * v, u);
       // An empty lane's vertex gets the default frame from its normal, as it is.
       bad |= (fb.K[j] > 0) & !(std::abs(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - 1.0) < 1e-6);
       for (int q = 0; q < 3; ++q)
@@ -2932,7 +3058,7 @@ private:
     float (*__restrict dirs)[SlotBlock<Real>::Lanes])
   {
     static_assert(SlotBlock<Real>::Lanes == 16, "sixteen records of eight");
-#if defined(__GNUC__) && !defined(__clang__)
+#if SURFACEDETAIL_MIKK_AVX512
     typedef float V __attribute__((vector_size(64)));
     typedef std::int32_t M __attribute__((vector_size(64)));
     // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
@@ -2976,6 +3102,73 @@ private:
       for (int q = 0; q < 6; ++q)
       {
         dirs[q][i] = records[8 * i + 2 + q];
+      }
+    }
+#endif
+  }
+
+  // The positions of the next points (ends[0-2]: x, y, z) and previous points (ends[3-5]) of
+  // a row of a task's slots (float points; records as in TransposeRow). The corner loop
+  // read them with emulated gathers, a lane's id moved out of its vector and a scalar load
+  // for each coordinate (~6 instructions a value, a tenth of the filter's cycles on the 1M
+  // torus); here each id is read as a scalar from its record and each point is one masked
+  // load (the fourth float, past the last point's, is not read), four points to a vector,
+  // transposed by permutations.
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE static void GatherRow(const float* __restrict p,
+    const float* __restrict records, float (*__restrict ends)[SlotBlock<Real>::Lanes])
+  {
+    constexpr int Lanes = SlotBlock<Real>::Lanes;
+    static_assert(Lanes == 16, "sixteen records of eight");
+    auto id = [records](int i, int which)
+    {
+      std::int32_t x;
+      std::memcpy(&x, records + 8 * i + which, sizeof(x));
+      // A previous id's top bit is its triangle's texture orientation (see LocalSlots).
+      return x & std::numeric_limits<std::int32_t>::max();
+    };
+#if SURFACEDETAIL_MIKK_AVX512
+    // Lanes (4 a, 4 a + 1, ...) from a and (4 a + 16, ...) from b: x of points 0-7, then y; z.
+    const __m512i xy = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 1, 5, 9, 13, 17, 21, 25, 29);
+    const __m512i zz =
+      _mm512_setr_epi32(2, 6, 10, 14, 18, 22, 26, 30, 2, 6, 10, 14, 18, 22, 26, 30);
+    for (int which = 0; which < 2; ++which)
+    {
+      __m512 four[4]; // points 4 k to 4 k + 3, one to each 128-bit block
+      for (int k = 0; k < 4; ++k)
+      {
+        __m128 pt[4]; // (lambdas do not take the function's target: no intrinsics in them)
+        for (int l = 0; l < 4; ++l)
+        {
+          pt[l] = _mm_maskz_loadu_ps(0x7, p + id(4 * k + l, which));
+        }
+        const __m256 lo = _mm256_insertf128_ps(_mm256_castps128_ps256(pt[0]), pt[1], 1);
+        const __m256 hi = _mm256_insertf128_ps(_mm256_castps128_ps256(pt[2]), pt[3], 1);
+        four[k] = _mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1);
+      }
+      const __m512 a = _mm512_permutex2var_ps(four[0], xy, four[1]);
+      const __m512 b = _mm512_permutex2var_ps(four[2], xy, four[3]);
+      const __m512 c = _mm512_permutex2var_ps(four[0], zz, four[1]);
+      const __m512 d = _mm512_permutex2var_ps(four[2], zz, four[3]);
+      // (_mm512_shuffle_f32x4 leaves GCC 12 warning of an uninitialised value; with the whole
+      // mask it is the same instruction.)
+      constexpr __mmask16 all = 0xffff;
+      _mm512_store_ps(
+        ends[3 * which], _mm512_mask_shuffle_f32x4(a, all, a, b, _MM_SHUFFLE(1, 0, 1, 0)));
+      _mm512_store_ps(
+        ends[3 * which + 1], _mm512_mask_shuffle_f32x4(a, all, a, b, _MM_SHUFFLE(3, 2, 3, 2)));
+      _mm512_store_ps(
+        ends[3 * which + 2], _mm512_mask_shuffle_f32x4(c, all, c, d, _MM_SHUFFLE(1, 0, 1, 0)));
+    }
+#else
+    for (int which = 0; which < 2; ++which)
+    {
+      for (int i = 0; i < Lanes; ++i)
+      {
+        const float* x = p + id(i, which);
+        for (int q = 0; q < 3; ++q)
+        {
+          ends[3 * which + q][i] = x[q];
+        }
       }
     }
 #endif
@@ -3493,10 +3686,10 @@ private:
     }
     return true;
   }
-  VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e, const std::int32_t* nextIds,
-    const std::int32_t* prevIds, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* first, const std::int32_t* corners, const std::int32_t* weld,
-    float* out) const
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool SlotFans(std::int32_t b, std::int32_t e,
+    const std::int32_t* nextIds, const std::int32_t* prevIds, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* first, const std::int32_t* corners,
+    const std::int32_t* weld, float* out) const
   {
     using Block = SlotBlock<Real>;
     std::unique_ptr<Block> block(new Block);
@@ -3612,30 +3805,40 @@ private:
         fb.Position[x][j] = fb.Position[x][j0];
       }
     }
-    int full = 0; // the group's first lane with corners
-    for (int j = 0; j < nl; ++j)
+    for (int g = 0; g < nl / Lanes; ++g)
     {
-      const int g = j / Lanes, i = j % Lanes, k = fb.K[j];
-      if (i == 0)
+      const int j0 = Lanes * g;
+      // Most groups (every lane's fan as large as the group's largest) need nothing.
+      int uneven = 0;
+      for (int i = 0; i < Lanes; ++i)
       {
-        full = j;
-        while (fb.K[full] == 0 && full < j + Lanes - 1)
-        {
-          ++full;
-        }
+        uneven |= fb.K[j0 + i] != fb.GroupSlots[g];
+      }
+      if (!uneven)
+      {
+        continue;
+      }
+      int full = j0; // the group's first lane with corners
+      while (fb.K[full] == 0 && full < j0 + Lanes - 1)
+      {
+        ++full;
       }
       const int kf = fb.K[full];
-      for (int s = k; s < fb.GroupSlots[g]; ++s)
+      for (int i = 0; i < Lanes; ++i)
       {
-        const int c = fb.GroupFirst[g] + fb.RowStride * s + fb.LaneStride * i;
-        const int from = fb.GroupFirst[g] +
-          (k > 0 ? fb.RowStride * (k - 1) + fb.LaneStride * i
-                 : fb.RowStride * std::min(s, kf - 1) + fb.LaneStride * (full % Lanes));
-        fb.Next[c] = fb.Next[from];
-        fb.Prev[c] = fb.Prev[from];
-        for (int x = 0; x < 6; ++x)
+        const int k = fb.K[j0 + i];
+        for (int s = k; s < fb.GroupSlots[g]; ++s)
         {
-          fb.Dir[x][c] = fb.Dir[x][from];
+          const int c = fb.GroupFirst[g] + fb.RowStride * s + fb.LaneStride * i;
+          const int from = fb.GroupFirst[g] +
+            (k > 0 ? fb.RowStride * (k - 1) + fb.LaneStride * i
+                   : fb.RowStride * std::min(s, kf - 1) + fb.LaneStride * (full % Lanes));
+          fb.Next[c] = fb.Next[from];
+          fb.Prev[c] = fb.Prev[from];
+          for (int x = 0; x < 6; ++x)
+          {
+            fb.Dir[x][c] = fb.Dir[x][from];
+          }
         }
       }
     }
@@ -3646,10 +3849,14 @@ private:
   // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
   // Records: the slots are records (a task's slots), transposed a row at a time.
+  // WeighSlots, SlotFans and LocalSlots run in the AVX-512 build only and take its target, so
+  // that the intrinsics of GatherRow (which must inline into a function of that target) can.
   template <bool Records>
-  VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
+  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
+    // A task's slots with float points: the corners' ends from GatherRow.
+    constexpr bool Gathered = Records && std::is_same<PT, float>::value;
     const PT* __restrict p = this->P;
     const int groups = (fb.NumberOfVertices + Lanes - 1) / Lanes;
     std::int32_t within = 1;
@@ -3705,6 +3912,11 @@ private:
         const std::int32_t* __restrict prev = Records ? rowIds[1] : fb.Prev + c0;
         const float* __restrict dsx = dirs(0), * __restrict dsy = dirs(1), * __restrict dsz = dirs(2);
         const float* __restrict dtx = dirs(3), * __restrict dty = dirs(4), * __restrict dtz = dirs(5);
+        alignas(64) float ends[6][Lanes];
+        if constexpr (Gathered)
+        {
+          GatherRow(p, fb.Dir[0] - 2 + c0, ends);
+        }
         // Next and Prev hold 3 * id, the same multisets as the ids.
         for (int i = 0; i < Lanes; ++i)
         {
@@ -3716,9 +3928,11 @@ private:
           const std::int32_t x1 = next[i], x2 = prev[i];
           const Real osx = dsx[i], osy = dsy[i], osz = dsz[i];
           const Real otx = dtx[i], oty = dty[i], otz = dtz[i];
-          const Corner w = WeighCorner(Real(p[x1]) - vx[i], Real(p[x1 + 1]) - vy[i],
-            Real(p[x1 + 2]) - vz[i], Real(p[x2]) - vx[i], Real(p[x2 + 1]) - vy[i],
-            Real(p[x2 + 2]) - vz[i], nx[i], ny[i], nz[i], osx, osy, osz);
+          auto end = [&](int q, std::int32_t x)
+          { return Gathered ? ends[q][i] : Real(p[x + q % 3]); };
+          const Corner w = WeighCorner(end(0, x1) - vx[i], end(1, x1) - vy[i], end(2, x1) - vz[i],
+            end(3, x2) - vx[i], end(4, x2) - vy[i], end(5, x2) - vz[i], nx[i], ny[i], nz[i], osx,
+            osy, osz);
           turns[i] += live ? w.Turn : Real(0);
           // In float for float points: its rounding (1e-7) is far inside the margin FastCos.
           const bool quarter = (osx * r0x[i] + osy * r0y[i] + osz * r0z[i] > Real(FastCos)) &
