@@ -49,9 +49,10 @@
 #include <xmmintrin.h>
 #endif
 
-// The AVX-512 build (GCC's alone: see vtkSurfaceDetailVectorize.h) writes its permutations and
-// masked loads with GCC vector extensions and <immintrin.h> intrinsics. Elsewhere, or with
-// SURFACEDETAIL_MIKK_PORTABLE defined (to test them), plain loops that give the same bits.
+// The AVX-512 build writes its permutations and masked loads with GCC vector extensions and
+// <immintrin.h> intrinsics when GCC compiles it. Elsewhere (clang's AVX-512 build included, which
+// scripts/test-clang.sh tests), or with SURFACEDETAIL_MIKK_PORTABLE defined, plain loops that give
+// the same bits.
 #if !defined(SURFACEDETAIL_MIKK_PORTABLE) && defined(__GNUC__) && !defined(__clang__) &&           \
   (defined(__x86_64__) || defined(__i386__))
 #define SURFACEDETAIL_MIKK_AVX512 1
