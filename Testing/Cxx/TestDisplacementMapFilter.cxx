@@ -2043,6 +2043,147 @@ TEST(DisplacementMapFilter, MeshNormalsDoNotDependOnPointNumbering)
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+// Mesh normals walk a quad split along (a, d) as the fan pair (a, b, d), (a, d, c) in one step,
+// holding a's and d's sums in registers; where a and d are the same point (a pair (a, b, a),
+// (a, a, c): both triangles of zero area) the step must add in polygon order instead. A triangle
+// of zero area has a zero normal and adds nothing to an area-weighted sum (nor to the seam test:
+// its corners' neighbours cancel), so a torus with such pairs inserted after every seventh polygon
+// must give every output of the torus without them, bit for bit: with triangles only (chunks of
+// triangles) and with quads among the later polygons (mixed chunks), at 1 and 2 threads, on first
+// executions and on re-executions (orientations kept).
+TEST(DisplacementMapFilter, DegenerateFanPairsAddNothingToMeshNormalsAndFitAsThroughLinks)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  for (bool quads : { false, true })
+  {
+    auto grid = MakeMesh(s, 256, 128, false, true);
+    vtkCellArray* tris = grid->GetPolys();
+    const vtkIdType nTris = tris->GetNumberOfCells();
+    // The reference's polygons (with quads: every fifth fan pair of the second half merged into
+    // the quad (a, b, d, c)) and the same with the degenerate pairs.
+    vtkNew<vtkCellArray> plain, withPairs;
+    vtkNew<vtkIdList> t0, t1;
+    vtkIdType emitted = 0, degenerate = 0;
+    auto emit = [&](vtkIdType n, const vtkIdType* ids)
+    {
+      plain->InsertNextCell(n, ids);
+      withPairs->InsertNextCell(n, ids);
+      if (++emitted % 7 == 0)
+      {
+        const vtkIdType a = ids[0], b = ids[1], c = ids[2];
+        const vtkIdType first[3] = { a, b, a }, second[3] = { a, a, c };
+        withPairs->InsertNextCell(3, first);
+        withPairs->InsertNextCell(3, second);
+        ++degenerate;
+      }
+    };
+    for (vtkIdType c = 0; c < nTris; c += 2)
+    {
+      tris->GetCellAtId(c, t0);
+      tris->GetCellAtId(c + 1, t1);
+      if (quads && c >= nTris / 2 && (c / 2) % 5 == 0)
+      {
+        const vtkIdType quad[4] = { t0->GetId(0), t0->GetId(1), t0->GetId(2), t1->GetId(2) };
+        emit(4, quad);
+        continue;
+      }
+      emit(3, t0->GetPointer(0));
+      emit(3, t1->GetPointer(0));
+    }
+    ASSERT_GT(degenerate, 1000);
+    vtkNew<vtkPolyData> reference, augmented;
+    reference->ShallowCopy(grid);
+    reference->SetPolys(plain);
+    augmented->ShallowCopy(grid);
+    augmented->SetPolys(withPairs);
+    for (int threads : { 1, 2 })
+    {
+      vtkSMPTools::Initialize(threads);
+      vtkNew<vtkDisplacementMapFilter> a, b;
+      for (vtkDisplacementMapFilter* f : { a.Get(), b.Get() })
+      {
+        f->SetInputData(0, f == a.Get() ? reference.Get() : augmented.Get());
+        f->SetInputData(1, image);
+        f->SetNormalModeToMesh();
+        f->SetMidlevel(0.5);
+      }
+      for (double scale : { 0.1, 0.25 })
+      {
+        for (vtkDisplacementMapFilter* f : { a.Get(), b.Get() })
+        {
+          f->SetScale(scale);
+          f->Update();
+          EXPECT_FALSE(ThroughLinks(f));
+        }
+        for (const char* name : { "", "Normals", "Tangents" })
+        {
+          vtkPolyData* x = a->GetOutput();
+          vtkPolyData* y = b->GetOutput();
+          vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
+          vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
+          ASSERT_TRUE(u && v) << name;
+          ASSERT_EQ(u->GetNumberOfValues(), v->GetNumberOfValues());
+          EXPECT_EQ(0,
+            std::memcmp(u->GetVoidPointer(0), v->GetVoidPointer(0),
+              static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfValues()))
+            << (*name ? name : "Points") << " quads " << quads << " threads " << threads
+            << " scale " << scale;
+        }
+        EXPECT_TRUE(AllFinite(b->GetOutput()));
+      }
+    }
+    // The fits count a pair's neighbours whatever its area, so with Exact the pairs matter: the
+    // walk over the spans (fan pairs of four distinct points in one step, others in polygon
+    // order) must give the bits of the gather through the point links (the points renumbered,
+    // the polygons in the same order), which visits each point's polygons one at a time; so must
+    // Mesh normals. Seams not merged: their means add the members in id order.
+    const std::vector<vtkIdType> perm =
+      RenumberedPoints::RandomIds(augmented->GetNumberOfPoints(), 7);
+    auto renumbered = RenumberedPoints::Moved(augmented, perm, augmented->GetNumberOfPoints());
+    for (int mode : { vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh })
+    {
+      for (int threads : { 1, 2 })
+      {
+        vtkSMPTools::Initialize(threads);
+        vtkNew<vtkDisplacementMapFilter> a, b;
+        for (vtkDisplacementMapFilter* f : { a.Get(), b.Get() })
+        {
+          f->SetInputData(0, f == a.Get() ? augmented.Get() : renumbered.Get());
+          f->SetInputData(1, image);
+          f->SetNormalMode(mode);
+          f->SetMidlevel(0.5);
+          f->SetScale(0.1);
+          f->MergeSeamsOff();
+          f->Update();
+        }
+        EXPECT_FALSE(ThroughLinks(a));
+        EXPECT_TRUE(ThroughLinks(b));
+        for (const char* name : { "", "Normals", "Tangents" })
+        {
+          vtkPolyData* x = a->GetOutput();
+          vtkPolyData* y = b->GetOutput();
+          vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
+          vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
+          ASSERT_TRUE(u && v) << name;
+          const size_t bytes = static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfComponents();
+          const auto* pu = static_cast<const unsigned char*>(u->GetVoidPointer(0));
+          const auto* pv = static_cast<const unsigned char*>(v->GetVoidPointer(0));
+          vtkIdType differ = 0;
+          for (vtkIdType i = 0; i < augmented->GetNumberOfPoints(); ++i)
+          {
+            differ += std::memcmp(pu + bytes * i, pv + bytes * perm[i], bytes) != 0;
+          }
+          EXPECT_EQ(differ, 0) << (*name ? name : "Points") << " mode " << mode << " quads "
+                               << quads << " threads " << threads;
+        }
+        EXPECT_TRUE(AllFinite(a->GetOutput()));
+      }
+    }
+  }
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 #ifdef __linux__
 // Point ids too scattered for the cell spans send Mesh normals and the fits through the point
 // links, which visit the polygons one at a time. A polygon with no points, last in the list,
