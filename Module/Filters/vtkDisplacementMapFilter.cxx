@@ -3106,6 +3106,29 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
     if (n == 3)
     {
       const vtkIdType p = corner[0], q = corner[1], r = corner[2];
+      // A quad split along (p, r) into the fan pair (p, q, r), (p, r, c), as parametric sources
+      // and vtkTriangleFilter make them, in one step: r's and p's terms from the two triangles
+      // partly cancel (p: hq - hr + hr - hc), so four hashes and four sums instead of six and
+      // six. The sums are wrapping integer additions, the same whatever their grouping or order.
+      if (cell + 1 < numCells && offsets[cell + 2] - offsets[cell + 1] == 3 && corner[3] == p &&
+        corner[4] == r)
+      {
+        const vtkIdType c = corner[5];
+        ++cell;
+        if (outside(p) | outside(q) | outside(r) | outside(c))
+        {
+          inRange = false;
+          continue;
+        }
+        const std::uint64_t hp = point[p].Hash, hq = point[q].Hash, hr = point[r].Hash,
+                            hc = point[c].Hash;
+        point[p].Sum += hq - hc;
+        point[q].Sum += hr - hp;
+        point[r].Sum += hc - hq;
+        point[c].Sum += hp - hr;
+        used[p] = used[q] = used[r] = used[c] = 1;
+        continue;
+      }
       if (outside(p) | outside(q) | outside(r))
       {
         inRange = false;
