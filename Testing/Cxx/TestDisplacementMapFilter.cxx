@@ -1957,6 +1957,29 @@ bool ThroughLinks(vtkDisplacementMapFilter* f)
   EXPECT_NE(at, std::string::npos);
   return at != std::string::npos && os.str().compare(at + key.size(), 3, "yes") == 0;
 }
+
+// Points, normals and tangents of @a y are those of @a x bit for bit, point i of @a x against
+// point perm[i] of @a y (the same point without @a perm).
+void ExpectSameOutputBits(vtkPolyData* x, vtkPolyData* y, const std::string& what,
+  const std::vector<vtkIdType>* perm = nullptr)
+{
+  for (const char* name : { "", "Normals", "Tangents" })
+  {
+    vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
+    vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
+    ASSERT_TRUE(u && v) << name << " " << what;
+    ASSERT_EQ(u->GetNumberOfValues(), v->GetNumberOfValues()) << name << " " << what;
+    const size_t bytes = static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfComponents();
+    const auto* pu = static_cast<const unsigned char*>(u->GetVoidPointer(0));
+    const auto* pv = static_cast<const unsigned char*>(v->GetVoidPointer(0));
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i)
+    {
+      differ += std::memcmp(pu + bytes * i, pv + bytes * (perm ? (*perm)[i] : i), bytes) != 0;
+    }
+    EXPECT_EQ(differ, 0) << (*name ? name : "Points") << " " << what;
+  }
+}
 }
 
 // Mesh normals sum each point's polygons in polygon order, by point ranges over the polygons'
@@ -2116,20 +2139,9 @@ TEST(DisplacementMapFilter, DegenerateFanPairsAddNothingToMeshNormalsAndFitAsThr
           f->Update();
           EXPECT_FALSE(ThroughLinks(f));
         }
-        for (const char* name : { "", "Normals", "Tangents" })
-        {
-          vtkPolyData* x = a->GetOutput();
-          vtkPolyData* y = b->GetOutput();
-          vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
-          vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
-          ASSERT_TRUE(u && v) << name;
-          ASSERT_EQ(u->GetNumberOfValues(), v->GetNumberOfValues());
-          EXPECT_EQ(0,
-            std::memcmp(u->GetVoidPointer(0), v->GetVoidPointer(0),
-              static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfValues()))
-            << (*name ? name : "Points") << " quads " << quads << " threads " << threads
-            << " scale " << scale;
-        }
+        ExpectSameOutputBits(a->GetOutput(), b->GetOutput(),
+          "quads " + std::to_string(quads) + " threads " + std::to_string(threads) + " scale " +
+            std::to_string(scale));
         EXPECT_TRUE(AllFinite(b->GetOutput()));
       }
     }
@@ -2159,24 +2171,10 @@ TEST(DisplacementMapFilter, DegenerateFanPairsAddNothingToMeshNormalsAndFitAsThr
         }
         EXPECT_FALSE(ThroughLinks(a));
         EXPECT_TRUE(ThroughLinks(b));
-        for (const char* name : { "", "Normals", "Tangents" })
-        {
-          vtkPolyData* x = a->GetOutput();
-          vtkPolyData* y = b->GetOutput();
-          vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
-          vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
-          ASSERT_TRUE(u && v) << name;
-          const size_t bytes = static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfComponents();
-          const auto* pu = static_cast<const unsigned char*>(u->GetVoidPointer(0));
-          const auto* pv = static_cast<const unsigned char*>(v->GetVoidPointer(0));
-          vtkIdType differ = 0;
-          for (vtkIdType i = 0; i < augmented->GetNumberOfPoints(); ++i)
-          {
-            differ += std::memcmp(pu + bytes * i, pv + bytes * perm[i], bytes) != 0;
-          }
-          EXPECT_EQ(differ, 0) << (*name ? name : "Points") << " mode " << mode << " quads "
-                               << quads << " threads " << threads;
-        }
+        ExpectSameOutputBits(a->GetOutput(), b->GetOutput(),
+          "mode " + std::to_string(mode) + " quads " + std::to_string(quads) + " threads " +
+            std::to_string(threads),
+          &perm);
         EXPECT_TRUE(AllFinite(a->GetOutput()));
       }
     }
@@ -2238,19 +2236,7 @@ TEST(DisplacementMapFilter, EmptyLastPolygonNotReadThroughLinks)
         f->Update();
       }
       EXPECT_TRUE(ThroughLinks(b));
-      for (const char* name : { "", "Normals", "Tangents" })
-      {
-        vtkPolyData* x = a->GetOutput();
-        vtkPolyData* y = b->GetOutput();
-        vtkDataArray* u = *name ? x->GetPointData()->GetArray(name) : x->GetPoints()->GetData();
-        vtkDataArray* v = *name ? y->GetPointData()->GetArray(name) : y->GetPoints()->GetData();
-        ASSERT_TRUE(u && v) << name << " mode " << mode;
-        ASSERT_EQ(u->GetNumberOfValues(), v->GetNumberOfValues());
-        EXPECT_EQ(0,
-          std::memcmp(u->GetVoidPointer(0), v->GetVoidPointer(0),
-            static_cast<size_t>(u->GetDataTypeSize()) * u->GetNumberOfValues()))
-          << (*name ? name : "Points") << " mode " << mode;
-      }
+      ExpectSameOutputBits(a->GetOutput(), b->GetOutput(), "mode " + std::to_string(mode));
     }
   }
   munmap(memory, bytes + page);
