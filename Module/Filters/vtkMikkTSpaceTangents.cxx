@@ -49,16 +49,16 @@
 #include <xmmintrin.h>
 #endif
 
-// The AVX-512 build writes its permutations and masked loads with GCC vector extensions and
-// <immintrin.h> intrinsics when GCC compiles it. Elsewhere (clang's AVX-512 build included, which
-// scripts/test-clang.sh tests), or with SURFACEDETAIL_MIKK_PORTABLE defined, plain loops that give
-// the same bits.
+// The AVX-512 and AVX2 builds write their permutations and masked loads with GCC vector
+// extensions and <immintrin.h> intrinsics when GCC compiles them. Elsewhere (clang's builds
+// included, which scripts/test-clang.sh tests), or with SURFACEDETAIL_MIKK_PORTABLE defined, plain
+// loops that give the same bits.
 #if !defined(SURFACEDETAIL_MIKK_PORTABLE) && defined(__GNUC__) && !defined(__clang__) &&           \
   (defined(__x86_64__) || defined(__i386__))
-#define SURFACEDETAIL_MIKK_AVX512 1
+#define SURFACEDETAIL_MIKK_INTRINSICS 1
 #include <immintrin.h>
 #else
-#define SURFACEDETAIL_MIKK_AVX512 0
+#define SURFACEDETAIL_MIKK_INTRINSICS 0
 #endif
 
 vtkStandardNewMacro(vtkMikkTSpaceTangents);
@@ -1933,8 +1933,9 @@ private:
     w[3 * nt] = 0;
     dir[nt] = {};
     Block<unsigned char> orient(nt);
-    // The spans of the triangle chunks, for the task-local slots (AVX-512 build only).
-    const bool local = vtkSurfaceDetailVectorize::HaveAVX512();
+    // The spans of the triangle chunks, for the task-local slots (AVX-512 and AVX2 builds).
+    const bool local =
+      vtkSurfaceDetailVectorize::HaveAVX512() || vtkSurfaceDetailVectorize::HaveAVX2();
     std::vector<std::int32_t> spanLo(local ? (nt + SpanTriangles - 1) / SpanTriangles : 0),
       spanHi(spanLo.size());
     if (!this->Triangles(offsets, conn, nTris, weld.Get(), referenced ? referenced->Get() : nullptr,
@@ -2446,7 +2447,7 @@ private:
         return false;
       }
     }
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
     if constexpr (Stream)
     {
       _mm_sfence(); // the streaming stores, before other threads read them
@@ -2485,7 +2486,7 @@ private:
     const float (&d)[6][Size], int m, float* to)
   {
     int j0 = 0;
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
     static constexpr DirectionRecords records{};
     if (reinterpret_cast<std::uintptr_t>(to) % 64 != 0)
     {
@@ -2524,7 +2525,7 @@ private:
     const std::int32_t* from, int n, std::int32_t* to)
   {
     int i = 0;
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
     if (reinterpret_cast<std::uintptr_t>(to) % 64 != 0)
     {
       return 0;
@@ -2837,7 +2838,8 @@ private:
   // vertex no triangle uses) stays empty, with copies of another lane's corners, as the
   // lanes past the vertices in SlotFans. Then SlotFans' steps per block of SlotBlock's
   // vertices. False if a check fails or a fan is too large.
-  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w,
+  template <bool Wide512>
+  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w,
     vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce, std::int32_t vb,
     std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
     const std::int32_t* weld, TaskSlots& ts, float* out) const
@@ -2884,7 +2886,7 @@ private:
         // The triangle's texture orientation as the top bit of each corner's previous id (see
         // WeighSlots).
         const std::int32_t mark = static_cast<std::int32_t>(std::uint32_t(orient[t]) << 31);
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
         // The triangle's ids times 3 and its directions as two vectors (each reading past the
         // triangle: see Finish), and each corner's record one permutation of the two.
         typedef float Record __attribute__((vector_size(32)));
@@ -2911,7 +2913,7 @@ private:
             const std::int32_t at = cursor[x];
             cursor[x] = at + RowStride;
             float* to = d + std::min(at, lastSlot);
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
             std::memcpy(to, &records[i], sizeof(Record));
 #else
             const std::int32_t np[2] = { 3 * w[3 * t + (i + 1) % 3],
@@ -2990,7 +2992,7 @@ private:
       {
         alignas(64) std::int32_t rowIds[2][Lanes];
         alignas(64) float rowDir[6][Lanes];
-        TransposeRow(d + fb.GroupFirst[g], rowIds, rowDir);
+        TransposeRow<Wide512>(d + fb.GroupFirst[g], rowIds, rowDir);
         for (int q = 0; q < 6; ++q)
         {
           std::copy_n(rowDir[q], Lanes, firstDir[q] + Lanes * g);
@@ -3015,7 +3017,7 @@ private:
         }
         return FanIsOneRun<true>(n, p, fb.K[j]);
       };
-      if (!this->WeighSlots<true>(fb) || !SumSlots(fb, oneRun, out))
+      if (!this->WeighSlots<true, Wide512>(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
@@ -3054,12 +3056,20 @@ private:
   // One row of a task's slots, Lanes records of eight values (next and previous ids, dP/ds,
   // dP/dt), as eight arrays of Lanes values: in the AVX-512 build three steps of two-vector
   // permutations, 24 in all, in place of the copies' seven more scattered stores per corner.
+  template <bool Wide512>
   VTK_ALWAYS_INLINE static void TransposeRow(const float* __restrict records,
     std::int32_t (*__restrict ids)[SlotBlock<Real>::Lanes],
     float (*__restrict dirs)[SlotBlock<Real>::Lanes])
   {
     static_assert(SlotBlock<Real>::Lanes == 16, "sixteen records of eight");
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
+    if constexpr (!Wide512)
+    {
+      TransposeRowAVX2(records, ids, dirs);
+      return;
+    }
+    else
+    {
     typedef float V __attribute__((vector_size(64)));
     typedef std::int32_t M __attribute__((vector_size(64)));
     // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
@@ -3095,7 +3105,9 @@ private:
       std::memcpy(
         q < 2 ? static_cast<void*>(ids[q]) : static_cast<void*>(dirs[q - 2]), &v, sizeof(V));
     }
-#else
+    return;
+    }
+#endif
     for (int i = 0; i < SlotBlock<Real>::Lanes; ++i)
     {
       std::memcpy(&ids[0][i], records + 8 * i, sizeof(float));
@@ -3105,8 +3117,45 @@ private:
         dirs[q][i] = records[8 * i + 2 + q];
       }
     }
-#endif
   }
+
+#if SURFACEDETAIL_MIKK_INTRINSICS
+  // TransposeRow in the AVX2 build: each half of the row (eight records) one 8 x 8 transposition,
+  // 24 unpacks, shuffles and 128-bit permutations (the plain loop's 128 scalar loads and stores
+  // took a tenth of the task-local slots' time on the 1M torus). Not forced inline, as
+  // GatherRow.
+  SURFACEDETAIL_TARGET_AVX2 static void TransposeRowAVX2(const float* __restrict records,
+    std::int32_t (*__restrict ids)[SlotBlock<Real>::Lanes],
+    float (*__restrict dirs)[SlotBlock<Real>::Lanes])
+  {
+    for (int h = 0; h < 2; ++h)
+    {
+      __m256 r[8], t[8], u[8];
+      for (int k = 0; k < 8; ++k)
+      {
+        r[k] = _mm256_loadu_ps(records + 8 * (8 * h + k));
+      }
+      for (int k = 0; k < 4; ++k) // t[2 k]: values 0, 1 | 4, 5 of records 2 k and 2 k + 1
+      {
+        t[2 * k] = _mm256_unpacklo_ps(r[2 * k], r[2 * k + 1]);
+        t[2 * k + 1] = _mm256_unpackhi_ps(r[2 * k], r[2 * k + 1]);
+      }
+      for (int m = 0; m < 2; ++m) // u[4 m + v]: value v | v + 4 of records 4 m to 4 m + 3
+      {
+        u[4 * m] = _mm256_shuffle_ps(t[4 * m], t[4 * m + 2], _MM_SHUFFLE(1, 0, 1, 0));
+        u[4 * m + 1] = _mm256_shuffle_ps(t[4 * m], t[4 * m + 2], _MM_SHUFFLE(3, 2, 3, 2));
+        u[4 * m + 2] = _mm256_shuffle_ps(t[4 * m + 1], t[4 * m + 3], _MM_SHUFFLE(1, 0, 1, 0));
+        u[4 * m + 3] = _mm256_shuffle_ps(t[4 * m + 1], t[4 * m + 3], _MM_SHUFFLE(3, 2, 3, 2));
+      }
+      for (int v = 0; v < 4; ++v) // values v and v + 4 of the eight records
+      {
+        float* to = v < 2 ? reinterpret_cast<float*>(ids[v]) : dirs[v - 2];
+        _mm256_store_ps(to + 8 * h, _mm256_permute2f128_ps(u[v], u[4 + v], 0x20));
+        _mm256_store_ps(dirs[v + 2] + 8 * h, _mm256_permute2f128_ps(u[v], u[4 + v], 0x31));
+      }
+    }
+  }
+#endif
 
   // The positions of the next points (ends[0-2]: x, y, z) and previous points (ends[3-5]) of
   // a row of a task's slots (float points; records as in TransposeRow). The corner loop
@@ -3115,7 +3164,10 @@ private:
   // torus); here each id is read as a scalar from its record and each point is one masked
   // load (the fourth float, past the last point's, is not read), four points to a vector,
   // transposed by permutations.
-  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE static void GatherRow(const float* __restrict p,
+  // Not forced inline: it is built for AVX-512 (its intrinsics need that target), and its
+  // callers, always inlined, are not (see WeighSlots); the compiler inlines it into the
+  // AVX-512 build that runs them.
+  SURFACEDETAIL_TARGET_AVX512 static void GatherRow(const float* __restrict p,
     const float* __restrict records, float (*__restrict ends)[SlotBlock<Real>::Lanes])
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
@@ -3127,7 +3179,7 @@ private:
       // A previous id's top bit is its triangle's texture orientation (see LocalSlots).
       return x & std::numeric_limits<std::int32_t>::max();
     };
-#if SURFACEDETAIL_MIKK_AVX512
+#if SURFACEDETAIL_MIKK_INTRINSICS
     // Lanes (4 a, 4 a + 1, ...) from a and (4 a + 16, ...) from b: x of points 0-7, then y; z.
     const __m512i xy = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 1, 5, 9, 13, 17, 21, 25, 29);
     const __m512i zz =
@@ -3175,15 +3227,82 @@ private:
 #endif
   }
 
+#if SURFACEDETAIL_MIKK_INTRINSICS
+  // GatherRow in the AVX2 build: each point one masked load of its three floats (vmaskmovps,
+  // which does not read the fourth), points k and k + 4 to one vector, and each eight points
+  // transposed by unpacks and shuffles within the 128-bit halves. Not forced inline, as
+  // GatherRow.
+  SURFACEDETAIL_TARGET_AVX2 static void GatherRowAVX2(const float* __restrict p,
+    const float* __restrict records, float (*__restrict ends)[SlotBlock<Real>::Lanes])
+  {
+    static_assert(SlotBlock<Real>::Lanes == 16, "sixteen records of eight");
+    const __m128i xyz = _mm_setr_epi32(-1, -1, -1, 0);
+    for (int which = 0; which < 2; ++which)
+    {
+      for (int h = 0; h < 2; ++h) // lanes 8 h to 8 h + 7
+      {
+        __m256 q[4]; // point 8 h + k, then point 8 h + k + 4: (x, y, z, 0) each
+        for (int k = 0; k < 4; ++k)
+        {
+          std::int32_t lo, hi;
+          std::memcpy(&lo, records + 8 * (8 * h + k) + which, sizeof(lo));
+          std::memcpy(&hi, records + 8 * (8 * h + k + 4) + which, sizeof(hi));
+          // A previous id's top bit is its triangle's texture orientation (see LocalSlots).
+          lo &= std::numeric_limits<std::int32_t>::max();
+          hi &= std::numeric_limits<std::int32_t>::max();
+          q[k] = _mm256_insertf128_ps(
+            _mm256_castps128_ps256(_mm_maskload_ps(p + lo, xyz)), _mm_maskload_ps(p + hi, xyz), 1);
+        }
+        const __m256 xy01 = _mm256_unpacklo_ps(q[0], q[1]); // x0 x1 y0 y1 | x4 x5 y4 y5
+        const __m256 xy23 = _mm256_unpacklo_ps(q[2], q[3]);
+        const __m256 z01 = _mm256_unpackhi_ps(q[0], q[1]); // z0 z1 0 0 | z4 z5 0 0
+        const __m256 z23 = _mm256_unpackhi_ps(q[2], q[3]);
+        _mm256_store_ps(ends[3 * which] + 8 * h, _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0)));
+        _mm256_store_ps(
+          ends[3 * which + 1] + 8 * h, _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2)));
+        _mm256_store_ps(
+          ends[3 * which + 2] + 8 * h, _mm256_shuffle_ps(z01, z23, _MM_SHUFFLE(1, 0, 1, 0)));
+      }
+    }
+  }
+#endif
+
+  // GatherRow of the build: AVX-512 or (where the intrinsics are compiled) AVX2.
+  template <bool Wide512>
+  VTK_ALWAYS_INLINE static void GatherRowOf(const float* __restrict p,
+    const float* __restrict records, float (*__restrict ends)[SlotBlock<Real>::Lanes])
+  {
+    if constexpr (Wide512)
+    {
+      GatherRow(p, records, ends);
+    }
+    else
+    {
+#if SURFACEDETAIL_MIKK_INTRINSICS
+      GatherRowAVX2(p, records, ends);
+#else
+      static_assert(Wide512, "the AVX2 build gathers in the corner loop without intrinsics");
+#endif
+    }
+  }
+
   SURFACEDETAIL_TARGET_AVX512 static bool LocalSlotsAVX512(const FastMikk& self,
     const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce,
     std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
     const std::int32_t* weld, TaskSlots& ts, float* out)
   {
-    return self.LocalSlots(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
+    return self.LocalSlots<true>(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
   }
 
-  // Every vertex's fan by tasks (LocalSlots), in the AVX-512 build.
+  SURFACEDETAIL_TARGET_AVX2 static bool LocalSlotsAVX2(const FastMikk& self,
+    const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce,
+    std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
+    const std::int32_t* weld, TaskSlots& ts, float* out)
+  {
+    return self.LocalSlots<false>(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
+  }
+
+  // Every vertex's fan by tasks (LocalSlots), in the AVX-512 or the AVX2 build.
   bool LocalVertices(const std::int32_t* w, vtkIdType nTris,
     const std::vector<std::int32_t>& taskFirst, const std::vector<std::int32_t>& taskChunks,
     const std::array<float, 6>* dir, const unsigned char* orient, const std::int32_t* weld,
@@ -3191,6 +3310,7 @@ private:
   {
     std::atomic<bool> fail(false);
     vtkSMPThreadLocal<TaskSlots> slots;
+    const bool wide512 = vtkSurfaceDetailVectorize::HaveAVX512();
     const vtkIdType nTasks = static_cast<vtkIdType>(taskFirst.size()) - 1;
     vtkSMPTools::For(0, nTasks, 1,
       [&](vtkIdType b, vtkIdType e)
@@ -3205,8 +3325,11 @@ private:
           }
           const std::int32_t vb = static_cast<std::int32_t>(task * TaskVertices);
           const std::int32_t ve = std::min(this->NumberOfPoints, vb + TaskVertices);
-          if (!LocalSlotsAVX512(*this, w, nTris, taskChunks.data() + taskFirst[task],
-                taskChunks.data() + taskFirst[task + 1], vb, ve, dir, orient, weld, ts, out))
+          const std::int32_t* cb = taskChunks.data() + taskFirst[task];
+          const std::int32_t* ce = taskChunks.data() + taskFirst[task + 1];
+          if (!(wide512
+                  ? LocalSlotsAVX512(*this, w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out)
+                  : LocalSlotsAVX2(*this, w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out)))
           {
             fail.store(true, std::memory_order_relaxed);
           }
@@ -3729,7 +3852,7 @@ private:
         const std::int32_t f = first[fb.Vertex[j]];
         return FanIsOneRun<true>(nextIds + f, prevIds + f, fb.K[j]);
       };
-      if (!this->WeighSlots<false>(fb) || !SumSlots(fb, oneRun, out))
+      if (!this->WeighSlots<false, true>(fb) || !SumSlots(fb, oneRun, out))
       {
         return false;
       }
@@ -3850,14 +3973,16 @@ private:
   // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
   // Records: the slots are records (a task's slots), transposed a row at a time.
-  // WeighSlots, SlotFans and LocalSlots run in the AVX-512 build only and take its target, so
-  // that the intrinsics of GatherRow (which must inline into a function of that target) can.
-  template <bool Records>
-  SURFACEDETAIL_TARGET_AVX512 VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
+  // Wide512: the AVX-512 build, else the AVX2 one (GatherRowOf, TransposeRow). WeighSlots and LocalSlots take no target of their own: they
+  // are inlined into LocalSlotsAVX512, LocalSlotsAVX2 and SlotFans, whose target they are
+  // compiled for.
+  template <bool Records, bool Wide512>
+  VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     // A task's slots with float points: the corners' ends from GatherRow.
-    constexpr bool Gathered = Records && std::is_same<PT, float>::value;
+    constexpr bool Gathered =
+      (Wide512 || SURFACEDETAIL_MIKK_INTRINSICS) && Records && std::is_same<PT, float>::value;
     const PT* __restrict p = this->P;
     const int groups = (fb.NumberOfVertices + Lanes - 1) / Lanes;
     std::int32_t within = 1;
@@ -3882,7 +4007,8 @@ private:
       std::fill_n(turns, Lanes, Real(0));
       std::fill_n(cycles, Lanes, std::uint64_t(0));
       std::fill_n(ok, Lanes, 1);
-      alignas(64) std::int32_t firstOrient[Lanes];
+      alignas(64) std::int32_t firstOrient[Lanes]; // set at the first slot, before use
+      std::fill_n(firstOrient, Lanes, 0); // (which GCC does not see in the AVX2 build)
       for (int s = 0; s < fb.GroupSlots[g]; ++s)
       {
         const int c0 = fb.GroupFirst[g] + fb.RowStride * s;
@@ -3890,7 +4016,7 @@ private:
         alignas(64) float rowDir[6][Lanes];
         if constexpr (Records)
         {
-          TransposeRow(fb.Dir[0] - 2 + c0, rowIds, rowDir);
+          TransposeRow<Wide512>(fb.Dir[0] - 2 + c0, rowIds, rowDir);
           // The top bit of a previous id is its triangle's texture orientation (see
           // LocalSlots): every corner's must be its lane's first corner's.
           alignas(64) std::int32_t orient[Lanes];
@@ -3916,7 +4042,7 @@ private:
         alignas(64) float ends[6][Lanes];
         if constexpr (Gathered)
         {
-          GatherRow(p, fb.Dir[0] - 2 + c0, ends);
+          GatherRowOf<Wide512>(p, fb.Dir[0] - 2 + c0, ends);
         }
         // Next and Prev hold 3 * id, the same multisets as the ids.
         for (int i = 0; i < Lanes; ++i)
