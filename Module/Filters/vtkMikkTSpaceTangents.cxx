@@ -1783,7 +1783,8 @@ struct FanBlock
 // (adding +0 would not, where flush-to-zero made one -0). Each corner's next and previous
 // ids and directions are copied into its slot, 8 scalar stores. On the 1M torus (Zen 5):
 // 6% fewer cycles than FanBlock in the AVX-512 build, but 2.3% more in the AVX2 build and
-// 4.6% more in the baseline, which keep FanBlock.
+// 4.6% more in the baseline, which keep FanBlock for the global vertex lists (the task-local
+// slots below, in the AVX-512 and AVX2 builds, use SlotBlock).
 template <typename Real>
 struct SlotBlock
 {
@@ -2735,15 +2736,16 @@ private:
     return !fail;
   }
 
-  // In the AVX-512 build, the vertices go in tasks of TaskVertices, each of which reads the
-  // chunks of SpanTriangles triangles that may have corners among its vertices (TaskChunks)
-  // in triangle order and copies its vertices' corners straight into its fans' slots
-  // (LocalSlots): no global vertex lists (VertexCorners: 36 MB written on the 1M torus, 13%
-  // of the cycles) and no copies from them into the slots (GatherSlots: half the fan pass).
-  // A task's slots (~800 kB on the torus, of 4 MB of address space) stay in the level-2
-  // cache from their copy to the corner loop. Tasks of 4096 vertices read each chunk of the
-  // 1M torus about 1.26 times, 2048 1.52 times (2% more cycles since the triangle pass
-  // streams its output), 1024 more still.
+  // In the AVX-512 and AVX2 builds, the vertices go in tasks of TaskVertices, each of which reads
+  // the chunks of SpanTriangles triangles that may have corners among its vertices (TaskChunks) in
+  // triangle order and copies its vertices' corners straight into its fans' slots (LocalSlots): no
+  // global vertex lists (VertexCorners: 36 MB written on the 1M torus, 13% of the cycles) and no
+  // copies from them into the slots (GatherSlots: half the fan pass). A task's slots (~800 kB on
+  // the torus, of 4 MB of address space) stay in the level-2 cache from their copy to the corner
+  // loop. Tasks of 4096 vertices read each chunk of the 1M torus about 1.26 times, 2048 1.52 times
+  // (2% more cycles since the triangle pass streams its output), 1024 more still. In the AVX2 build
+  // on a Zen 4 (1 MB of level-2 cache), the task-local slots took the 1M torus from 71-72 to 58-59
+  // ms on one thread.
   static constexpr vtkIdType SpanTriangles = 128;
   static constexpr std::int32_t TaskVertices = 4096;
   // The tasks may read each chunk this many times on average (each read is two passes: the
@@ -2828,8 +2830,8 @@ private:
     alignas(64) float FirstDir[6][SlotBlock<Real>::MaxVertices];
   };
 
-  // The fans of the vertices [vb, ve) in the AVX-512 build, from the triangles of the chunks
-  // [cb, ce) of taskChunks (see TaskChunks). The task gives each vertex that is not a copy
+  // The fans of the vertices [vb, ve) in the AVX-512 or AVX2 build, from the triangles of the
+  // chunks [cb, ce) of taskChunks (see TaskChunks). The task gives each vertex that is not a copy
   // of a smaller one a lane (in vertex order, as SlotFans does, but in one layout for the
   // whole task) and room for the largest fan, copies each corner of its vertices, in
   // triangle order (the order of VertexCorners' lists, so each fan's sums are SlotFans' to
@@ -2839,10 +2841,9 @@ private:
   // lanes past the vertices in SlotFans. Then SlotFans' steps per block of SlotBlock's
   // vertices. False if a check fails or a fan is too large.
   template <bool Wide512>
-  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w,
-    vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce, std::int32_t vb,
-    std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
-    const std::int32_t* weld, TaskSlots& ts, float* out) const
+  VTK_ALWAYS_INLINE bool LocalSlots(const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb,
+    const std::int32_t* ce, std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir,
+    const unsigned char* orient, const std::int32_t* weld, TaskSlots& ts, float* out) const
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     constexpr int RowStride = 8 * Lanes;
@@ -3055,7 +3056,8 @@ private:
 
   // One row of a task's slots, Lanes records of eight values (next and previous ids, dP/ds,
   // dP/dt), as eight arrays of Lanes values: in the AVX-512 build three steps of two-vector
-  // permutations, 24 in all, in place of the copies' seven more scattered stores per corner.
+  // permutations, 24 in all, in place of the copies' seven more scattered stores per corner
+  // (in the AVX2 build TransposeRowAVX2).
   template <bool Wide512>
   VTK_ALWAYS_INLINE static void TransposeRow(const float* __restrict records,
     std::int32_t (*__restrict ids)[SlotBlock<Real>::Lanes],
@@ -3070,42 +3072,42 @@ private:
     }
     else
     {
-    typedef float V __attribute__((vector_size(64)));
-    typedef std::int32_t M __attribute__((vector_size(64)));
-    // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
-    // records) their values 0-3 or 4-7, in the order (value, record); the second, from two
-    // of those, two values of eight records; the third one value of all sixteen.
-    const M lo4 = { 0, 8, 16, 24, 1, 9, 17, 25, 2, 10, 18, 26, 3, 11, 19, 27 };
-    const M hi4 = { 4, 12, 20, 28, 5, 13, 21, 29, 6, 14, 22, 30, 7, 15, 23, 31 };
-    const M lo2 = { 0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23 };
-    const M hi2 = { 8, 9, 10, 11, 24, 25, 26, 27, 12, 13, 14, 15, 28, 29, 30, 31 };
-    const M lo1 = { 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 };
-    const M hi1 = { 8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31 };
-    V r[8], a[8], b[8];
-    for (int k = 0; k < 8; ++k)
-    {
-      std::memcpy(&r[k], records + 16 * k, sizeof(V));
-    }
-    for (int m = 0; m < 4; ++m) // a[2 m + h]: records 4m to 4m + 3, values 4h to 4h + 3
-    {
-      a[2 * m] = __builtin_shuffle(r[2 * m], r[2 * m + 1], lo4);
-      a[2 * m + 1] = __builtin_shuffle(r[2 * m], r[2 * m + 1], hi4);
-    }
-    for (int n = 0; n < 2; ++n) // b[4 n + 2 h + e]: records 8n to 8n + 7, values 4h + 2e, + 1
-    {
-      for (int h = 0; h < 2; ++h)
+      typedef float V __attribute__((vector_size(64)));
+      typedef std::int32_t M __attribute__((vector_size(64)));
+      // Register k holds records 2k and 2k + 1. The first step takes from two registers (four
+      // records) their values 0-3 or 4-7, in the order (value, record); the second, from two
+      // of those, two values of eight records; the third one value of all sixteen.
+      const M lo4 = { 0, 8, 16, 24, 1, 9, 17, 25, 2, 10, 18, 26, 3, 11, 19, 27 };
+      const M hi4 = { 4, 12, 20, 28, 5, 13, 21, 29, 6, 14, 22, 30, 7, 15, 23, 31 };
+      const M lo2 = { 0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23 };
+      const M hi2 = { 8, 9, 10, 11, 24, 25, 26, 27, 12, 13, 14, 15, 28, 29, 30, 31 };
+      const M lo1 = { 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 };
+      const M hi1 = { 8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31 };
+      V r[8], a[8], b[8];
+      for (int k = 0; k < 8; ++k)
       {
-        b[4 * n + 2 * h] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], lo2);
-        b[4 * n + 2 * h + 1] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], hi2);
+        std::memcpy(&r[k], records + 16 * k, sizeof(V));
       }
-    }
-    for (int q = 0; q < 8; ++q)
-    {
-      const V v = __builtin_shuffle(b[q / 2], b[4 + q / 2], q % 2 ? hi1 : lo1);
-      std::memcpy(
-        q < 2 ? static_cast<void*>(ids[q]) : static_cast<void*>(dirs[q - 2]), &v, sizeof(V));
-    }
-    return;
+      for (int m = 0; m < 4; ++m) // a[2 m + h]: records 4m to 4m + 3, values 4h to 4h + 3
+      {
+        a[2 * m] = __builtin_shuffle(r[2 * m], r[2 * m + 1], lo4);
+        a[2 * m + 1] = __builtin_shuffle(r[2 * m], r[2 * m + 1], hi4);
+      }
+      for (int n = 0; n < 2; ++n) // b[4 n + 2 h + e]: records 8n to 8n + 7, values 4h + 2e, + 1
+      {
+        for (int h = 0; h < 2; ++h)
+        {
+          b[4 * n + 2 * h] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], lo2);
+          b[4 * n + 2 * h + 1] = __builtin_shuffle(a[4 * n + h], a[4 * n + 2 + h], hi2);
+        }
+      }
+      for (int q = 0; q < 8; ++q)
+      {
+        const V v = __builtin_shuffle(b[q / 2], b[4 + q / 2], q % 2 ? hi1 : lo1);
+        std::memcpy(
+          q < 2 ? static_cast<void*>(ids[q]) : static_cast<void*>(dirs[q - 2]), &v, sizeof(V));
+      }
+      return;
     }
 #endif
     for (int i = 0; i < SlotBlock<Real>::Lanes; ++i)
@@ -3257,7 +3259,8 @@ private:
         const __m256 xy23 = _mm256_unpacklo_ps(q[2], q[3]);
         const __m256 z01 = _mm256_unpackhi_ps(q[0], q[1]); // z0 z1 0 0 | z4 z5 0 0
         const __m256 z23 = _mm256_unpackhi_ps(q[2], q[3]);
-        _mm256_store_ps(ends[3 * which] + 8 * h, _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0)));
+        _mm256_store_ps(
+          ends[3 * which] + 8 * h, _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0)));
         _mm256_store_ps(
           ends[3 * which + 1] + 8 * h, _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2)));
         _mm256_store_ps(
@@ -3294,9 +3297,9 @@ private:
     return self.LocalSlots<true>(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
   }
 
-  SURFACEDETAIL_TARGET_AVX2 static bool LocalSlotsAVX2(const FastMikk& self,
-    const std::int32_t* w, vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce,
-    std::int32_t vb, std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
+  SURFACEDETAIL_TARGET_AVX2 static bool LocalSlotsAVX2(const FastMikk& self, const std::int32_t* w,
+    vtkIdType nTris, const std::int32_t* cb, const std::int32_t* ce, std::int32_t vb,
+    std::int32_t ve, const std::array<float, 6>* dir, const unsigned char* orient,
     const std::int32_t* weld, TaskSlots& ts, float* out)
   {
     return self.LocalSlots<false>(w, nTris, cb, ce, vb, ve, dir, orient, weld, ts, out);
@@ -3973,9 +3976,9 @@ private:
   // id mix are summed. One loop over each group's slots, vectorised over its lanes (gathers for the
   // corners' points only). False if a check failed.
   // Records: the slots are records (a task's slots), transposed a row at a time.
-  // Wide512: the AVX-512 build, else the AVX2 one (GatherRowOf, TransposeRow). WeighSlots and LocalSlots take no target of their own: they
-  // are inlined into LocalSlotsAVX512, LocalSlotsAVX2 and SlotFans, whose target they are
-  // compiled for.
+  // Wide512: the AVX-512 build, else the AVX2 one (GatherRowOf, TransposeRow). WeighSlots and
+  // LocalSlots take no target of their own: they are inlined into LocalSlotsAVX512,
+  // LocalSlotsAVX2 and SlotFans, whose target they are compiled for.
   template <bool Records, bool Wide512>
   VTK_ALWAYS_INLINE bool WeighSlots(SlotBlock<Real>& fb) const
   {
@@ -4007,8 +4010,10 @@ private:
       std::fill_n(turns, Lanes, Real(0));
       std::fill_n(cycles, Lanes, std::uint64_t(0));
       std::fill_n(ok, Lanes, 1);
-      alignas(64) std::int32_t firstOrient[Lanes]; // set at the first slot, before use
-      std::fill_n(firstOrient, Lanes, 0); // (which GCC does not see in the AVX2 build)
+      // Set at the first slot, before any use; filled first all the same, as GCC does not see
+      // that in the AVX2 build.
+      alignas(64) std::int32_t firstOrient[Lanes];
+      std::fill_n(firstOrient, Lanes, 0);
       for (int s = 0; s < fb.GroupSlots[g]; ++s)
       {
         const int c0 = fb.GroupFirst[g] + fb.RowStride * s;
