@@ -588,12 +588,13 @@ TEST(vtkMikkTSpaceTangents, FastPathTaskSlotsKeepUnusedPointsAndHandOverLargeFan
     MakeSurface(points, polys, normals, tcoords), "a fan of 8191 at point 2047");
 }
 
-// In the AVX-512 build the fast path reads each corner's neighbours with one masked 16-byte load
-// a point (GatherRow): x, y, z and, masked off, the next point's x, which past the last point is
-// past the end of the array. Masked-off lanes must not be read: a torus whose float points end
-// exactly at a page that cannot be read (the last point is a corner's neighbour) must run and give
-// the bits of the same torus in ordinary memory, at 1 and 2 threads. (Builds without AVX-512
-// read three floats a point anyway; there the test shows the same of their loops.)
+// In the AVX-512 and AVX2 builds (GCC) the fast path reads each corner's neighbours with one masked
+// 16-byte load a point (GatherRow, GatherRowAVX2): x, y, z and, masked off, the next point's x,
+// which past the last point is past the end of the array. Masked-off lanes must not be read: a
+// torus whose float points end exactly at a page that cannot be read (the last point is a corner's
+// neighbour) must run and give the bits of the same torus in ordinary memory, at 1 and 2 threads.
+// (The other builds read three floats a point anyway; there the test shows the same of their
+// loops.)
 TEST(vtkMikkTSpaceTangents, FastPathReadsNoFloatPastTheLastPoint)
 {
 #ifdef __linux__
