@@ -3159,6 +3159,16 @@ private:
   }
 #endif
 
+  // The point id (an end of a corner's edge: which 0 or 1) in record i of a row of records (eight
+  // floats each) for GatherRow and GatherRowAVX2. A previous id's top bit is its triangle's
+  // texture orientation (see LocalSlots): cleared.
+  VTK_ALWAYS_INLINE static std::int32_t RecordPointId(const float* records, int i, int which)
+  {
+    std::int32_t x;
+    std::memcpy(&x, records + 8 * i + which, sizeof(x));
+    return x & std::numeric_limits<std::int32_t>::max();
+  }
+
   // The positions of the next points (ends[0-2]: x, y, z) and previous points (ends[3-5]) of
   // a row of a task's slots (float points; records as in TransposeRow). The corner loop
   // read them with emulated gathers, a lane's id moved out of its vector and a scalar load
@@ -3174,13 +3184,6 @@ private:
   {
     constexpr int Lanes = SlotBlock<Real>::Lanes;
     static_assert(Lanes == 16, "sixteen records of eight");
-    auto id = [records](int i, int which)
-    {
-      std::int32_t x;
-      std::memcpy(&x, records + 8 * i + which, sizeof(x));
-      // A previous id's top bit is its triangle's texture orientation (see LocalSlots).
-      return x & std::numeric_limits<std::int32_t>::max();
-    };
 #if SURFACEDETAIL_MIKK_INTRINSICS
     // Lanes (4 a, 4 a + 1, ...) from a and (4 a + 16, ...) from b: x of points 0-7, then y; z.
     const __m512i xy = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 1, 5, 9, 13, 17, 21, 25, 29);
@@ -3194,7 +3197,7 @@ private:
         __m128 pt[4]; // (lambdas do not take the function's target: no intrinsics in them)
         for (int l = 0; l < 4; ++l)
         {
-          pt[l] = _mm_maskz_loadu_ps(0x7, p + id(4 * k + l, which));
+          pt[l] = _mm_maskz_loadu_ps(0x7, p + RecordPointId(records, 4 * k + l, which));
         }
         const __m256 lo = _mm256_insertf128_ps(_mm256_castps128_ps256(pt[0]), pt[1], 1);
         const __m256 hi = _mm256_insertf128_ps(_mm256_castps128_ps256(pt[2]), pt[3], 1);
@@ -3219,7 +3222,7 @@ private:
     {
       for (int i = 0; i < Lanes; ++i)
       {
-        const float* x = p + id(i, which);
+        const float* x = p + RecordPointId(records, i, which);
         for (int q = 0; q < 3; ++q)
         {
           ends[3 * which + q][i] = x[q];
@@ -3246,12 +3249,8 @@ private:
         __m256 q[4]; // point 8 h + k, then point 8 h + k + 4: (x, y, z, 0) each
         for (int k = 0; k < 4; ++k)
         {
-          std::int32_t lo, hi;
-          std::memcpy(&lo, records + 8 * (8 * h + k) + which, sizeof(lo));
-          std::memcpy(&hi, records + 8 * (8 * h + k + 4) + which, sizeof(hi));
-          // A previous id's top bit is its triangle's texture orientation (see LocalSlots).
-          lo &= std::numeric_limits<std::int32_t>::max();
-          hi &= std::numeric_limits<std::int32_t>::max();
+          const std::int32_t lo = RecordPointId(records, 8 * h + k, which);
+          const std::int32_t hi = RecordPointId(records, 8 * h + k + 4, which);
           q[k] = _mm256_insertf128_ps(
             _mm256_castps128_ps256(_mm_maskload_ps(p + lo, xyz)), _mm_maskload_ps(p + hi, xyz), 1);
         }
