@@ -3054,7 +3054,7 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
 // cancel exactly; a boundary edge leaves a non-zero sum. The hash is a bijection, so the sum of a
 // point on one boundary fan (a seam's usual point), the hash of the fan's last neighbour minus that
 // of its first, is never zero; where several boundary fans meet (a bowtie), sums cancel only by a
-// 64-bit chance, if the hash mixes well.
+// 63-bit chance, if the hash mixes well.
 // Inconsistent orientation or non-manifold edges only add candidates, which the position test then
 // discards. Points without polygons are candidates too. Serial, and integer sums commute: the flags
 // never depend on threads.
@@ -3063,16 +3063,22 @@ struct MeshScatterNormalWorker : MeshNormalBlocks<R, L>
 // corners are then left out, and the candidates mean nothing).
 std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, bool& idsInRange)
 {
-  // splitmix64's finaliser: sums of a few hashes of structured ids behave as random 64-bit values.
-  // A multiply and one xor-shift cost a third less of this sweep but stay nearly additive (for
-  // a + b = c + d, h(a) + h(b) - h(c) - h(d) spans about 37 bits): a bowtie point of a 1M-point
-  // grid then goes unfound about 4 times in 10^9 (test BowtieSeamPointMerges has such ids).
+  // splitmix64's finaliser on 63 bits (each step, an addition, a multiplication by an odd number
+  // or an xor with a right shift, modulo 2^63, is a bijection of [0, 2^63)), shifted up one bit:
+  // every hash is even, distinct for distinct ids (vtkIdType is below 2^63), and so is every sum,
+  // whose lowest bit is then free to mark the points that some polygon uses (it is set after each
+  // addition, which keeps the even part exact). Sums of a few hashes of structured ids behave as
+  // random 63-bit values. A multiply and one xor-shift cost a third less of this sweep but stay
+  // nearly additive (for a + b = c + d, h(a) + h(b) - h(c) - h(d) spans about 37 bits): a bowtie
+  // point of a 1M-point grid then goes unfound about 4 times in 10^9 (test BowtieSeamPointMerges has
+  // such ids).
   auto hash = [](vtkIdType id)
   {
-    std::uint64_t z = static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    constexpr std::uint64_t Low63 = ~std::uint64_t(0) >> 1;
+    std::uint64_t z = (static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL) & Low63;
+    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL) & Low63;
+    z = ((z ^ (z >> 27)) * 0x94D049BB133111EBULL) & Low63;
+    return (z ^ (z >> 31)) << 1;
   };
   // Each point's hash made once and read per corner (on usual meshes from nearby entries, which
   // the cache holds): fewer instructions than hashing every corner's next point. A point's hash
@@ -3082,21 +3088,37 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
     std::uint64_t Hash, Sum;
   };
   Buffer<HashSum> table(numPts);
-  Buffer<unsigned char> marks(numPts);
   HashSum* __restrict point = table.data();
-  unsigned char* __restrict used = marks.data();
   for (vtkIdType i = 0; i < numPts; ++i)
   {
     point[i].Hash = hash(i);
     point[i].Sum = 0;
-    used[i] = 0;
   }
+  // Adds @a d to point i's sum and marks the point used.
+  auto add = [point](vtkIdType i, std::uint64_t d) { point[i].Sum = (point[i].Sum + d) | 1; };
   const vtkIdType* __restrict offsets = mesh.Offsets;
   const vtkIdType* __restrict conn = mesh.Conn;
   const vtkIdType numCells = mesh.NumCells;
   const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
   auto outside = [limit](vtkIdType id) { return static_cast<std::uint64_t>(id) >= limit; };
   bool inRange = true;
+  // A strip of fan pairs (a row of split quads, as parametric sources and vtkTriangleFilter make
+  // them) hands two points on from pair to pair: pair (p, q, r), (p, r, c) is followed by
+  // (q, ., ., r). Their sums' terms from this pair wait in registers (with their hashes) for the
+  // next pair's, and reach memory once, added together: two hashes read and two sums updated per
+  // pair instead of four and four, and no pair waits on the store of the one before. Flushed
+  // when a pair does not continue the strip, and at the end.
+  vtkIdType heldQ = -1, heldR = -1;
+  std::uint64_t heldQSum = 0, heldRSum = 0, heldQHash = 0, heldRHash = 0;
+  auto flush = [&]()
+  {
+    if (heldQ >= 0)
+    {
+      add(heldQ, heldQSum);
+      add(heldR, heldRSum);
+      heldQ = -1;
+    }
+  };
   for (vtkIdType cell = 0; cell < numCells; ++cell)
   {
     const vtkIdType* corner = conn + offsets[cell];
@@ -3106,10 +3128,10 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
     if (n == 3)
     {
       const vtkIdType p = corner[0], q = corner[1], r = corner[2];
-      // A quad split along (p, r) into the fan pair (p, q, r), (p, r, c), as parametric sources
-      // and vtkTriangleFilter make them, in one step: r's and p's terms from the two triangles
-      // partly cancel (p: hq - hr + hr - hc), so four hashes and four sums instead of six and
-      // six. The sums are wrapping integer additions, the same whatever their grouping or order.
+      // A quad split along (p, r) into the fan pair (p, q, r), (p, r, c) in one step: r's and p's
+      // terms from the two triangles partly cancel (p: hq - hr + hr - hc), so four hashes and four
+      // sums instead of six and six. The sums are wrapping integer additions, the same whatever
+      // their grouping or order.
       if (cell + 1 < numCells && offsets[cell + 2] - offsets[cell + 1] == 3 && corner[3] == p &&
         corner[4] == r)
       {
@@ -3120,13 +3142,29 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
           inRange = false;
           continue;
         }
-        const std::uint64_t hp = point[p].Hash, hq = point[q].Hash, hr = point[r].Hash,
-                            hc = point[c].Hash;
-        point[p].Sum += hq - hc;
-        point[q].Sum += hr - hp;
-        point[r].Sum += hc - hq;
-        point[c].Sum += hp - hr;
-        used[p] = used[q] = used[r] = used[c] = 1;
+        std::uint64_t hp, hc, heldP = 0, heldC = 0;
+        if (p == heldQ && c == heldR)
+        {
+          hp = heldQHash;
+          hc = heldRHash;
+          heldP = heldQSum;
+          heldC = heldRSum;
+        }
+        else
+        {
+          flush();
+          hp = point[p].Hash;
+          hc = point[c].Hash;
+        }
+        const std::uint64_t hq = point[q].Hash, hr = point[r].Hash;
+        add(p, heldP + (hq - hc));
+        add(c, heldC + (hp - hr));
+        heldQ = q;
+        heldR = r;
+        heldQSum = hr - hp;
+        heldRSum = hc - hq;
+        heldQHash = hq;
+        heldRHash = hr;
         continue;
       }
       if (outside(p) | outside(q) | outside(r))
@@ -3135,10 +3173,9 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
         continue;
       }
       const std::uint64_t hp = point[p].Hash, hq = point[q].Hash, hr = point[r].Hash;
-      point[p].Sum += hq - hr;
-      point[q].Sum += hr - hp;
-      point[r].Sum += hp - hq;
-      used[p] = used[q] = used[r] = 1;
+      add(p, hq - hr);
+      add(q, hr - hp);
+      add(r, hp - hq);
       continue;
     }
     bool bad = false;
@@ -3160,17 +3197,18 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
     for (vtkIdType k = 0; k < n; ++k)
     {
       const std::uint64_t nextHash = point[corner[k + 1 < n ? k + 1 : 0]].Hash;
-      point[corner[k]].Sum += nextHash - prevHash;
-      used[corner[k]] = 1;
+      add(corner[k], nextHash - prevHash);
       prevHash = hereHash;
       hereHash = nextHash;
     }
   }
+  flush();
   idsInRange = inRange;
+  // Interior points: sum 0, marked used. Candidates: a non-zero sum, or no polygon at all.
   std::vector<vtkIdType> candidates;
   for (vtkIdType i = 0; i < numPts; ++i)
   {
-    if (point[i].Sum != 0 || !used[i])
+    if (point[i].Sum != 1)
     {
       candidates.push_back(i);
     }
