@@ -1846,19 +1846,9 @@ struct DisplaceWorker : BlockOps<R, L>
     }
     const vtkIdType rowStride = static_cast<vtkIdType>(tex.W) * tex.NC;
     const int tnc = tex.NC;
-    // Where the block's first and last points read the same two rows a little apart (texture
-    // coordinates that advance with the point ids, as parametric sources make them), the next
-    // block likely reads on from there: its texels are asked for (as pass 1's arrays are).
-    if (count == Block && !(outside[0] | outside[Block - 1]) && j0[0] == j0[Block - 1])
-    {
-      const vtkIdType span = static_cast<vtkIdType>(i0[Block - 1] - i0[0] + 1) * tnc;
-      if (span > 0 && span * static_cast<vtkIdType>(sizeof(T)) <= 4096)
-      {
-        const T* last = tex.Data + j0[0] * rowStride + i0[Block - 1] * tnc;
-        PrefetchBytes<false>(last, sizeof(T) * span);
-        PrefetchBytes<false>(last + rowStride, sizeof(T) * span);
-      }
-    }
+    // The texels are not prefetched: the hardware follows their two rows. Asking for the next
+    // block's texels took about 4% off Approximate's re-execution on the Intel machine of the
+    // ninth round but added about 9% on the AMD EPYC (BENCHMARKS.md).
     // The texels read in a scalar loop, the blend in one of its own that vectorises (in the same
     // loop the blend stayed scalar too).
     alignas(64) DoubleLanes h00, h10, h01, h11;
