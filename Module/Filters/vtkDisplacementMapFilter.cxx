@@ -3092,23 +3092,6 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
   const std::uint64_t limit = static_cast<std::uint64_t>(numPts);
   auto outside = [limit](vtkIdType id) { return static_cast<std::uint64_t>(id) >= limit; };
   bool inRange = true;
-  // A strip of fan pairs (a row of split quads, as parametric sources and vtkTriangleFilter make
-  // them) hands two points on from pair to pair: pair (p, q, r), (p, r, c) is followed by
-  // (q, ., ., r). Their sums' terms from this pair wait in registers (with their hashes) for the
-  // next pair's, and reach memory once, added together: two hashes read and two sums updated per
-  // pair instead of four and four, and no pair waits on the store of the one before. Flushed
-  // when a pair does not continue the strip, and at the end.
-  vtkIdType heldQ = -1, heldR = -1;
-  std::uint64_t heldQSum = 0, heldRSum = 0, heldQHash = 0, heldRHash = 0;
-  auto flush = [&]()
-  {
-    if (heldQ >= 0)
-    {
-      add(heldQ, heldQSum);
-      add(heldR, heldRSum);
-      heldQ = -1;
-    }
-  };
   for (vtkIdType cell = 0; cell < numCells; ++cell)
   {
     const vtkIdType* corner = conn + offsets[cell];
@@ -3132,29 +3115,12 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
           inRange = false;
           continue;
         }
-        std::uint64_t hp, hc, heldP = 0, heldC = 0;
-        if (p == heldQ && c == heldR)
-        {
-          hp = heldQHash;
-          hc = heldRHash;
-          heldP = heldQSum;
-          heldC = heldRSum;
-        }
-        else
-        {
-          flush();
-          hp = point[p].Hash;
-          hc = point[c].Hash;
-        }
-        const std::uint64_t hq = point[q].Hash, hr = point[r].Hash;
-        add(p, heldP + (hq - hc));
-        add(c, heldC + (hp - hr));
-        heldQ = q;
-        heldR = r;
-        heldQSum = hr - hp;
-        heldRSum = hc - hq;
-        heldQHash = hq;
-        heldRHash = hr;
+        const std::uint64_t hp = point[p].Hash, hq = point[q].Hash, hr = point[r].Hash,
+                            hc = point[c].Hash;
+        add(p, hq - hc);
+        add(q, hr - hp);
+        add(r, hc - hq);
+        add(c, hp - hr);
         continue;
       }
       if (outside(p) | outside(q) | outside(r))
@@ -3192,7 +3158,6 @@ std::vector<vtkIdType> BoundaryPoints(const PolyLinks& mesh, vtkIdType numPts, b
       hereHash = nextHash;
     }
   }
-  flush();
   idsInRange = inRange;
   // Interior points: sum 0, marked used. Candidates: a non-zero sum, or no polygon at all.
   std::vector<vtkIdType> candidates;
