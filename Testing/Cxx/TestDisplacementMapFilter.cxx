@@ -2486,3 +2486,85 @@ TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
   }
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
+
+// Texture coordinates that are NaN or infinite locate no texel: in every mode and interpolation,
+// with dPdu/dPdv and without, the output stays finite (points, normals, tangents), no error is
+// raised, every other point moves exactly as in a run without them (a position depends on its
+// own coordinates only), and the normals of points two or more grid steps away from them are
+// those of the clean run (the bad coordinates reach no fit or polygon beyond their neighbours).
+TEST(DisplacementMapFilter, NonFiniteTextureCoordinatesStayLocal)
+{
+  const Surface s = Torus();
+  const int U = 24, V = 12;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  // Interior points of the grid (i, j) (no seam partner), one coordinate or both bad.
+  struct Spoilt
+  {
+    int I, J;
+    double S, T;
+  };
+  const Spoilt spoilt[4] = { { 5, 3, nan, 0.25 }, { 11, 6, 0.5, inf }, { 17, 8, -inf, nan },
+    { 3, 9, inf, -inf } };
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  for (bool derivatives : { false, true })
+  {
+    auto clean = MakeMesh(s, U, V, derivatives);
+    auto bad = vtkSmartPointer<vtkPolyData>::New();
+    bad->DeepCopy(clean);
+    for (const Spoilt& x : spoilt)
+    {
+      bad->GetPointData()->GetTCoords()->SetTuple2(
+        static_cast<vtkIdType>(x.J) * (U + 1) + x.I, x.S, x.T);
+    }
+    for (int mode : AllModes)
+    {
+      for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
+             vtkDisplacementMapFilter::Cubic })
+      {
+        SCOPED_TRACE("mode " + std::to_string(mode) + " interp " + std::to_string(interp) +
+          (derivatives ? " with dPdu" : ""));
+        vtkNew<vtkDisplacementMapFilter> f;
+        auto obs = Watch(f);
+        f->SetInputData(0, bad);
+        f->SetInputData(1, image);
+        f->SetNormalMode(mode);
+        f->SetScale(0.1);
+        f->SetMidlevel(0.5);
+        f->SetInterpolation(interp);
+        f->Update();
+        EXPECT_EQ(obs->Errors, 0) << obs->Message;
+        vtkPolyData* out = f->GetOutput();
+        ASSERT_EQ(out->GetNumberOfPoints(), clean->GetNumberOfPoints());
+        EXPECT_TRUE(AllFinite(out));
+        auto ref = Displace(clean, image, mode, 0.1, 0.5, interp);
+        vtkIdType moved = 0;
+        double worst = 0.0;
+        for (int j = 0; j <= V; ++j)
+        {
+          for (int i = 0; i <= U; ++i)
+          {
+            const vtkIdType id = static_cast<vtkIdType>(j) * (U + 1) + i;
+            int distance = U;
+            for (const Spoilt& x : spoilt)
+            {
+              distance = std::min(distance, std::max(std::abs(i - x.I), std::abs(j - x.J)));
+            }
+            double p[3], q[3], n[3], m[3];
+            out->GetPoint(id, p);
+            ref->GetPoint(id, q);
+            moved += distance > 0 && (p[0] != q[0] || p[1] != q[1] || p[2] != q[2]);
+            if (distance >= 2)
+            {
+              out->GetPointData()->GetNormals()->GetTuple(id, n);
+              ref->GetPointData()->GetNormals()->GetTuple(id, m);
+              worst = std::max(worst, AngleDeg({ n[0], n[1], n[2] }, { m[0], m[1], m[2] }));
+            }
+          }
+        }
+        EXPECT_EQ(moved, 0);
+        EXPECT_LT(worst, 1e-9);
+      }
+    }
+  }
+}
