@@ -3686,6 +3686,12 @@ int vtkDisplacementMapFilter::RequestData(
                                             "(extract a slice with vtkExtractVOI).");
     return 0;
   }
+  if (dims[0] == 1 && dims[1] == 1)
+  {
+    // Valid (a 1x1 texture samples to its only texel), but seldom meant: say what it does.
+    vtkWarningMacro("The height map is a single texel: a constant, so every point moves by the "
+                    "same distance and the map gives the normals no slope.");
+  }
   if (this->Component >= scalars->GetNumberOfComponents())
   {
     vtkErrorMacro("Component " << this->Component << " was asked for but the height map has "

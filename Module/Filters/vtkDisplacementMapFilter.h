@@ -28,7 +28,8 @@
  *   smooth height map sampled into W texels is reconstructed with O(1/W^3) error in value
  *   and O(1/W^2) in slope.
  * A 1x1 height map is valid: it is a constant (a 1x1 texture samples to its only texel in
- * every mode), so all points move by the same distance. NaN and infinite heights are
+ * every mode), so all points move by the same distance; as that is seldom what was meant,
+ * the filter says so in a warning. NaN and infinite heights are
  * treated as Midlevel, with one warning giving their count.
  *
  * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt, n the unit input normal and

@@ -1166,8 +1166,8 @@ TEST(DisplacementMapFilter, HugeScaleStaysFinite)
   }
 }
 
-// 1x1 is a constant; a constant map moves every point by the same distance along its
-// normal and, in Approximate/Exact, keeps the normal; 2x2 works too.
+// 1x1 is a constant (with a warning); a constant map moves every point by the same distance along
+// its normal and, in Approximate/Exact, keeps the normal; 2x2 works too.
 TEST(DisplacementMapFilter, TinyAndConstantHeightMaps)
 {
   const Surface s = Sphere();
@@ -1178,6 +1178,18 @@ TEST(DisplacementMapFilter, TinyAndConstantHeightMaps)
     image->SetDimensions(size, size, 1);
     image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
     std::memset(image->GetScalarPointer(), 255, static_cast<size_t>(size * size));
+    {
+      // Valid, but a single texel is seldom meant: one warning saying what it does.
+      vtkNew<vtkDisplacementMapFilter> f;
+      auto obs = Watch(f);
+      f->SetInputData(0, mesh);
+      f->SetInputData(1, image);
+      f->Update();
+      EXPECT_EQ(obs->Errors, 0);
+      EXPECT_EQ(obs->Warnings, size == 1 ? 1 : 0) << obs->Message;
+      EXPECT_EQ(obs->Message.find("single texel") != std::string::npos, size == 1);
+      EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+    }
     for (int mode : AllModes)
     {
       for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
