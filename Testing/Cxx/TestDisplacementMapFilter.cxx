@@ -9,6 +9,7 @@
 #include "vtkDisplacementMapFilter.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
@@ -28,6 +29,7 @@
 #include <vtkRTAnalyticSource.h>
 #include <vtkSMPTools.h>
 #include <vtkSphereSource.h>
+#include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
 
@@ -173,19 +175,29 @@ vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, in
   return out;
 }
 
+// Points, normals and (where there are) tangents all finite.
 bool AllFinite(vtkPolyData* out)
 {
+  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
   {
-    double p[3], n[3];
+    double p[3], n[3], t[4] = { 0.0, 0.0, 0.0, 0.0 };
     out->GetPoint(i, p);
     out->GetPointData()->GetNormals()->GetTuple(i, n);
+    if (tangents)
+    {
+      tangents->GetTuple(i, t);
+    }
     for (int k = 0; k < 3; ++k)
     {
-      if (!std::isfinite(p[k]) || !std::isfinite(n[k]))
+      if (!std::isfinite(p[k]) || !std::isfinite(n[k]) || !std::isfinite(t[k]))
       {
         return false;
       }
+    }
+    if (!std::isfinite(t[3]))
+    {
+      return false;
     }
   }
   return true;
@@ -232,6 +244,15 @@ protected:
 };
 vtkStandardNewMacro(SphereTCoords);
 } // namespace
+
+// The wrap modes are vtkTexture's, value for value, so that a texture's GetWrap() can be passed
+// to SetWrap().
+static_assert(static_cast<int>(vtkDisplacementMapFilter::ClampToEdge) ==
+      static_cast<int>(vtkTexture::ClampToEdge) &&
+    static_cast<int>(vtkDisplacementMapFilter::Repeat) == static_cast<int>(vtkTexture::Repeat) &&
+    static_cast<int>(vtkDisplacementMapFilter::MirroredRepeat) ==
+      static_cast<int>(vtkTexture::MirroredRepeat),
+  "vtkDisplacementMapFilter's Wrap values must be vtkTexture's");
 
 // The Linear and Nearest samples equal an independent transcription of OpenGL's sampling
 // rules for every wrap mode, inside and outside [0,1] (so the CPU displacement matches
@@ -2497,6 +2518,316 @@ TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
     }
   }
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+namespace
+{
+// Catmull-Rom through p0..p3 at the fraction f of the way from p1 to p2: the value and its
+// derivative in f, from the spline's polynomial form (the cardinal spline of tension 1/2),
+// written independently of the filter's weights.
+std::array<double, 2> CatmullRomSpline(double p0, double p1, double p2, double p3, double f)
+{
+  const double a = -p0 + 3 * p1 - 3 * p2 + p3, b = 2 * p0 - 5 * p1 + 4 * p2 - p3, c = p2 - p0;
+  return { 0.5 * (((a * f + b) * f + c) * f + 2 * p1), 0.5 * ((3 * a * f + 2 * b) * f + c) };
+}
+
+// The bicubic Catmull-Rom interpolant through the texel centres, each of its 4x4 texels
+// wrapped by GLWrap (as GLLinear wraps its 2x2): height and its derivatives in s and t.
+std::array<double, 3> RefCubic(const float* img, int W, int H, int mode, double s, double t)
+{
+  const double u = s * W - 0.5, v = t * H - 0.5;
+  const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+  const double fx = u - std::floor(u), fy = v - std::floor(v);
+  auto T = [&](int i, int j)
+  { return static_cast<double>(img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)]); };
+  double row[4], drow[4];
+  for (int l = 0; l < 4; ++l)
+  {
+    const int j = j0 - 1 + l;
+    const auto r = CatmullRomSpline(T(i0 - 1, j), T(i0, j), T(i0 + 1, j), T(i0 + 2, j), fx);
+    row[l] = r[0];
+    drow[l] = r[1];
+  }
+  const auto h = CatmullRomSpline(row[0], row[1], row[2], row[3], fy);
+  const auto hs = CatmullRomSpline(drow[0], drow[1], drow[2], drow[3], fy);
+  return { h[0], W * hs[0], H * h[1] };
+}
+
+// GLLinear with its derivatives: within the 2x2 texels around (s,t) the bilinear form's
+// slope, which jumps where (s,t) crosses a row or column of texel centres.
+std::array<double, 3> RefLinear(const float* img, int W, int H, int mode, double s, double t)
+{
+  const double u = s * W - 0.5, v = t * H - 0.5;
+  const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+  const double a = u - std::floor(u), b = v - std::floor(v);
+  auto T = [&](int i, int j)
+  { return static_cast<double>(img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)]); };
+  const double t00 = T(i0, j0), t10 = T(i0 + 1, j0), t01 = T(i0, j0 + 1), t11 = T(i0 + 1, j0 + 1);
+  return { GLLinear(img, W, H, mode, s, t), W * ((1 - b) * (t10 - t00) + b * (t11 - t01)),
+    H * ((1 - a) * (t01 - t00) + a * (t11 - t10)) };
+}
+} // namespace
+
+// Every interpolant's slope, not only its height: on the flat probes (normal +z, P_s = +x,
+// P_t = +y) Approximate's normal of z = Scale h is (-Scale h_s, -Scale h_t, 1), which must
+// equal the references' analytic derivatives in every wrap mode, inside and outside [0,1],
+// Cubic across the borders included. Probes a millionth of a texel either side of the texel
+// centres, where Linear's slope jumps, tell the interpolant's own derivative from a central
+// difference with a fixed epsilon, which would blur the jump into a mean of the two slopes.
+TEST(DisplacementMapFilter, SlopesMatchTheInterpolants)
+{
+  const int W = 7, H = 5;
+  auto image = RandomImage(W, H, 3);
+  const float* img = static_cast<float*>(image->GetScalarPointer());
+  std::vector<std::array<double, 2>> st;
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(17);
+  for (int k = 0; k < 300; ++k)
+  {
+    const double s = random->GetNextRangeValue(-2.3, 3.1);
+    const double t = random->GetNextRangeValue(-2.3, 3.1);
+    st.push_back({ s, t });
+  }
+  for (int i = -1; i <= W; ++i)
+  {
+    for (double side : { -1e-6, 1e-6 })
+    {
+      st.push_back({ (i + 0.5 + side) / W, random->GetNextRangeValue(-0.5, 1.5) });
+      st.push_back({ random->GetNextRangeValue(-0.5, 1.5), (i % H + 0.5 + side) / H });
+    }
+  }
+  auto probes = Probes(st);
+  const double scale = 0.7;
+  for (int wrap : { vtkDisplacementMapFilter::ClampToEdge, vtkDisplacementMapFilter::Repeat,
+         vtkDisplacementMapFilter::MirroredRepeat })
+  {
+    // The test's own premise: the slope does jump across the texel centres probed.
+    double jump = 0.0;
+    for (int i = 0; i + 1 < W; ++i)
+    {
+      const auto left = RefLinear(img, W, H, wrap, (i + 0.5 - 1e-6) / W, 0.3);
+      const auto right = RefLinear(img, W, H, wrap, (i + 0.5 + 1e-6) / W, 0.3);
+      jump = std::max(jump, std::abs(left[1] - right[1]));
+    }
+    EXPECT_GT(jump, 1.0);
+    for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear,
+           vtkDisplacementMapFilter::Cubic })
+    {
+      auto out =
+        Displace(probes, image, vtkDisplacementMapFilter::Approximate, scale, 0.0, interp, wrap);
+      double worstHeight = 0.0, worstAngle = 0.0;
+      for (size_t k = 0; k < st.size(); ++k)
+      {
+        const double s = st[k][0], t = st[k][1];
+        std::array<double, 3> ref;
+        if (interp == vtkDisplacementMapFilter::Nearest)
+        {
+          ref = { GLNearest(img, W, H, wrap, s, t), 0.0, 0.0 };
+        }
+        else if (interp == vtkDisplacementMapFilter::Linear)
+        {
+          ref = RefLinear(img, W, H, wrap, s, t);
+        }
+        else
+        {
+          ref = RefCubic(img, W, H, wrap, s, t);
+        }
+        double p[3], n[3];
+        out->GetPoint(static_cast<vtkIdType>(k), p);
+        out->GetPointData()->GetNormals()->GetTuple(static_cast<vtkIdType>(k), n);
+        worstHeight = std::max(worstHeight, std::abs(p[2] - scale * ref[0]));
+        worstAngle = std::max(worstAngle,
+          AngleDeg({ n[0], n[1], n[2] }, Unit({ -scale * ref[1], -scale * ref[2], 1.0 })));
+      }
+      EXPECT_LT(worstHeight, 1e-12) << "wrap " << wrap << " interp " << interp;
+      EXPECT_LT(worstAngle, 1e-9) << "wrap " << wrap << " interp " << interp;
+    }
+  }
+}
+
+// Mesh normals are area-weighted: on a grid whose interior points are moved at random within
+// their cells (the texture coordinates with them), so that the triangles around a point differ
+// in area and a few are even turned over, each output normal equals the normalised sum of the
+// cross products of the displaced triangles around it, computed here from the output points,
+// each triangle oriented as its corners' input normals (the sign of its input cross product
+// against their sum). The same mesh's mean of unit triangle normals (vtkPolyDataNormals'
+// weighting) differs from it by far more than the tolerance, so the test tells them apart.
+TEST(DisplacementMapFilter, MeshNormalsAreAreaWeighted)
+{
+  const int U = 12;
+  const Surface s = Rectangle(0.3);
+  auto mesh = MakeMesh(s, U, U, false);
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(29);
+  vtkDataArray* tc = mesh->GetPointData()->GetTCoords();
+  for (int j = 1; j < U; ++j)
+  {
+    for (int i = 1; i < U; ++i)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(j) * (U + 1) + i;
+      const double u = (i + random->GetNextRangeValue(-0.35, 0.35)) / U;
+      const double v = (j + random->GetNextRangeValue(-0.35, 0.35)) / U;
+      const Vec p = s.P(u, v);
+      mesh->GetPoints()->SetPoint(id, p.data());
+      tc->SetTuple2(id, u, v);
+    }
+  }
+  auto out = Displace(mesh, MakeHeightImage(s.Height, 64, 64), vtkDisplacementMapFilter::Mesh,
+    s.Scale, s.Midlevel, vtkDisplacementMapFilter::Linear);
+  const vtkIdType n = out->GetNumberOfPoints();
+  std::vector<Vec> weighted(n, Vec{ 0, 0, 0 }), unweighted(n, Vec{ 0, 0, 0 });
+  vtkCellArray* polys = out->GetPolys();
+  vtkDataArray* normalsIn = mesh->GetPointData()->GetNormals();
+  vtkNew<vtkIdList> ids;
+  int turned = 0;
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    ASSERT_EQ(ids->GetNumberOfIds(), 3);
+    Vec p[3], q[3], nsum{ 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      out->GetPoint(ids->GetId(k), p[k].data());
+      mesh->GetPoint(ids->GetId(k), q[k].data());
+      Vec nk;
+      normalsIn->GetTuple(ids->GetId(k), nk.data());
+      nsum = Add(nsum, nk);
+    }
+    Vec m = CrossV(Add(p[1], p[0], -1.0), Add(p[2], p[0], -1.0));
+    if (DotV(CrossV(Add(q[1], q[0], -1.0), Add(q[2], q[0], -1.0)), nsum) < 0.0)
+    {
+      m = { -m[0], -m[1], -m[2] };
+      ++turned;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      weighted[ids->GetId(k)] = Add(weighted[ids->GetId(k)], m);
+      unweighted[ids->GetId(k)] = Add(unweighted[ids->GetId(k)], Unit(m));
+    }
+  }
+  double worst = 0.0, apart = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    Vec got;
+    out->GetPointData()->GetNormals()->GetTuple(i, got.data());
+    worst = std::max(worst, AngleDeg(got, weighted[i]));
+    apart = std::max(apart, AngleDeg(weighted[i], unweighted[i]));
+  }
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(apart, 0.5);
+  EXPECT_GT(turned, 0); // the orientation rule is exercised
+}
+
+// Tangents in every mode that makes new normals: the input tangent with its part along the new
+// normal removed and normalised (Gram-Schmidt), its handedness w kept, whether w is +1 or -1,
+// and with 3-component tangents (the tangents attribute) as with 4.
+TEST(DisplacementMapFilter, TangentsAreTheInputsOrthogonalised)
+{
+  const Surface s = Torus(0.15);
+  auto image = MakeHeightImage(s.Height, 128, 64);
+  for (int components : { 4, 3 })
+  {
+    auto mesh = MakeMesh(s, 32, 16, true);
+    vtkDataArray* t4 = mesh->GetPointData()->GetArray("Tangents");
+    vtkNew<vtkDoubleArray> tin;
+    tin->SetName("Tangents");
+    tin->SetNumberOfComponents(components);
+    tin->SetNumberOfTuples(mesh->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double t[4];
+      t4->GetTuple(i, t);
+      // Every third point mirrored: w = -1 (a mirrored texture there).
+      t[3] = i % 3 == 1 ? -1.0 : 1.0;
+      tin->SetTuple(i, t);
+    }
+    mesh->GetPointData()->RemoveArray("Tangents");
+    if (components == 3)
+    {
+      mesh->GetPointData()->SetTangents(tin);
+    }
+    else
+    {
+      mesh->GetPointData()->AddArray(tin);
+    }
+    for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
+           vtkDisplacementMapFilter::Mesh })
+    {
+      SCOPED_TRACE(std::to_string(components) + " components, mode " + std::to_string(mode));
+      auto out = Displace(mesh, image, mode, s.Scale);
+      vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
+      ASSERT_NE(t, nullptr);
+      ASSERT_EQ(t->GetNumberOfComponents(), components);
+      double worst = 0.0, turned = 0.0;
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double nn[3], got[4], in[4];
+        out->GetPointData()->GetNormals()->GetTuple(i, nn);
+        t->GetTuple(i, got);
+        tin->GetTuple(i, in);
+        const Vec normal = { nn[0], nn[1], nn[2] }, input = { in[0], in[1], in[2] };
+        const Vec expected = Unit(Add(input, normal, -DotV(input, normal)));
+        worst = std::max(worst, AngleDeg({ got[0], got[1], got[2] }, expected));
+        turned = std::max(turned, AngleDeg(input, expected));
+        EXPECT_NEAR(got[0] * got[0] + got[1] * got[1] + got[2] * got[2], 1.0, 1e-12);
+        if (components == 4)
+        {
+          ASSERT_EQ(got[3], in[3]) << i;
+        }
+      }
+      EXPECT_LT(worst, 1e-9);
+      // The premise: the new normals did turn the tangents, so keeping them would fail.
+      EXPECT_GT(turned, 1.0);
+    }
+  }
+}
+
+// Every array but the points, normals and tangents passes through in every mode, bit for bit:
+// other point arrays, dPdu and dPdv (they describe the input surface), texture coordinates and
+// cell data.
+TEST(DisplacementMapFilter, OtherArraysPassThroughInEveryMode)
+{
+  const Surface s = Torus();
+  auto mesh = MakeMesh(s, 16, 8, true);
+  vtkNew<vtkFloatArray> temperature;
+  temperature->SetName("Temperature");
+  vtkNew<vtkIntArray> material;
+  material->SetName("Material");
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    temperature->InsertNextValue(static_cast<float>(0.5 * i));
+  }
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    material->InsertNextValue(static_cast<int>(c % 7));
+  }
+  mesh->GetPointData()->AddArray(temperature);
+  mesh->GetCellData()->AddArray(material);
+  auto image = MakeHeightImage(s.Height, 32, 16);
+  vtkNew<vtkPolyData> before;
+  before->DeepCopy(mesh);
+  for (int mode : AllModes)
+  {
+    SCOPED_TRACE(mode);
+    auto out = Displace(mesh, image, mode);
+    vtkPointData* pd = out->GetPointData();
+    for (const char* name : { "Temperature", "dPdu", "dPdv", "TCoords" })
+    {
+      ASSERT_NE(pd->GetArray(name), nullptr) << name;
+      EXPECT_TRUE(SameBits(pd->GetArray(name), mesh->GetPointData()->GetArray(name))) << name;
+    }
+    EXPECT_EQ(pd->GetTCoords(), pd->GetArray("TCoords"));
+    ASSERT_NE(out->GetCellData()->GetArray("Material"), nullptr);
+    EXPECT_TRUE(SameBits(out->GetCellData()->GetArray("Material"), material));
+    EXPECT_EQ(out->GetNumberOfCells(), mesh->GetNumberOfCells());
+    // And the input is left as it was.
+    EXPECT_TRUE(SameBits(mesh->GetPoints()->GetData(), before->GetPoints()->GetData()));
+    for (const char* name : { "Normals", "Tangents", "TCoords", "Temperature" })
+    {
+      EXPECT_TRUE(
+        SameBits(mesh->GetPointData()->GetArray(name), before->GetPointData()->GetArray(name)))
+        << name;
+    }
+  }
 }
 
 // Texture coordinates that are NaN or infinite locate no texel: in every mode and interpolation,
