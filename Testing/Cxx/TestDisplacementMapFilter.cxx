@@ -151,6 +151,21 @@ double GLLinear(const float* img, int W, int H, int mode, double s, double t)
     a * b * T(i0 + 1, j0 + 1);
 }
 
+// @a count texture coordinates drawn from @a random in [-2.3, 3.1]^2: outside [0,1] too, where
+// the wrap modes differ.
+std::vector<std::array<double, 2>> RandomCoordinates(
+  vtkMinimalStandardRandomSequence* random, int count)
+{
+  std::vector<std::array<double, 2>> st;
+  for (int k = 0; k < count; ++k)
+  {
+    const double s = random->GetNextRangeValue(-2.3, 3.1);
+    const double t = random->GetNextRangeValue(-2.3, 3.1);
+    st.push_back({ s, t });
+  }
+  return st;
+}
+
 double GLNearest(const float* img, int W, int H, int mode, double s, double t)
 {
   const int i = static_cast<int>(std::floor(s * W)), j = static_cast<int>(std::floor(t * H));
@@ -262,15 +277,9 @@ TEST(DisplacementMapFilter, SamplingMatchesOpenGLRules)
   const int W = 7, H = 5;
   auto image = RandomImage(W, H, 3);
   const float* img = static_cast<float*>(image->GetScalarPointer());
-  std::vector<std::array<double, 2>> st;
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(11);
-  for (int k = 0; k < 400; ++k)
-  {
-    const double s = random->GetNextRangeValue(-2.3, 3.1);
-    const double t = random->GetNextRangeValue(-2.3, 3.1);
-    st.push_back({ s, t });
-  }
+  std::vector<std::array<double, 2>> st = RandomCoordinates(random, 400);
   st.push_back({ 0.0, 0.0 });
   st.push_back({ 1.0, 1.0 });
   st.push_back({ 0.5 / W, 0.5 / H });
@@ -2579,15 +2588,9 @@ TEST(DisplacementMapFilter, SlopesMatchTheInterpolants)
   const int W = 7, H = 5;
   auto image = RandomImage(W, H, 3);
   const float* img = static_cast<float*>(image->GetScalarPointer());
-  std::vector<std::array<double, 2>> st;
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(17);
-  for (int k = 0; k < 300; ++k)
-  {
-    const double s = random->GetNextRangeValue(-2.3, 3.1);
-    const double t = random->GetNextRangeValue(-2.3, 3.1);
-    st.push_back({ s, t });
-  }
+  std::vector<std::array<double, 2>> st = RandomCoordinates(random, 300);
   for (int i = -1; i <= W; ++i)
   {
     for (double side : { -1e-6, 1e-6 })
