@@ -1352,13 +1352,28 @@ TEST(DisplacementMapFilter, NaNHeightsAreMidlevelWithOneWarning)
     f->GetOutput()->GetPoint(i, p);
     EXPECT_EQ(p[2], 0.0);
   }
-  // Linear and Cubic next to the NaN stay finite in every normal mode.
+  // Linear and Cubic next to the non-finite texels, in every normal mode: finite, and the very
+  // output of the same map with Midlevel written in their place.
+  vtkNew<vtkImageData> replaced;
+  replaced->DeepCopy(image);
+  auto* r = static_cast<float*>(replaced->GetScalarPointer());
+  for (int k = 0; k < W * H; ++k)
+  {
+    r[k] = std::isfinite(r[k]) ? r[k] : 0.5f;
+  }
   const Surface s = Rectangle();
   auto mesh = MakeMesh(s, 16, 16, false);
-  for (int mode : AllModes)
+  for (int interp : { vtkDisplacementMapFilter::Linear, vtkDisplacementMapFilter::Cubic })
   {
-    auto out = Displace(mesh, image, mode, 0.1, 0.5, vtkDisplacementMapFilter::Cubic);
-    EXPECT_TRUE(AllFinite(out));
+    for (int mode : AllModes)
+    {
+      SCOPED_TRACE("interp " + std::to_string(interp) + " mode " + std::to_string(mode));
+      auto out = Displace(mesh, image, mode, 0.1, 0.5, interp);
+      auto ref = Displace(mesh, replaced, mode, 0.1, 0.5, interp);
+      EXPECT_TRUE(AllFinite(out));
+      EXPECT_TRUE(SameBits(out->GetPoints()->GetData(), ref->GetPoints()->GetData()));
+      EXPECT_TRUE(SameBits(out->GetPointData()->GetNormals(), ref->GetPointData()->GetNormals()));
+    }
   }
 }
 
@@ -1394,6 +1409,12 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
   ints->SetDimensions(4, 4, 1);
   ints->AllocateScalars(VTK_INT, 1);
   const unsigned long before = good->GetMTime();
+  std::vector<std::pair<vtkDataObject*, vtkMTimeType>> inputTimes;
+  for (vtkDataObject* x : std::initializer_list<vtkDataObject*>{
+         noTCoords, noNormals, shortNormals, shortTCoords, empty, volume, ints, image })
+  {
+    inputTimes.emplace_back(x, x->GetMTime());
+  }
   auto Inputs = [](vtkDataObject* surface, vtkDataObject* map)
   {
     return [=](vtkDisplacementMapFilter* f)
@@ -1431,9 +1452,16 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
     EXPECT_GE(obs->Errors, 1);
     EXPECT_NE(obs->Message.find(c.Expect), std::string::npos) << obs->Message;
     EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+    EXPECT_EQ(f->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
   }
   EXPECT_EQ(good->GetMTime(), before);
   EXPECT_EQ(good->GetNumberOfPoints(), 25);
+  // The other inputs are untouched too.
+  for (const auto& x : inputTimes)
+  {
+    EXPECT_EQ(x.first->GetMTime(), x.second) << x.first->GetClassName();
+  }
   // An empty surface is not an error: empty in, empty out.
   vtkNew<vtkPolyData> nothing;
   vtkNew<vtkDisplacementMapFilter> f;
