@@ -97,7 +97,8 @@ void SetThreads(int threads)
 }
 
 // Whether quad (i, j)'s two triangles are (a, b, d), (a, d, c) with a = j NU + i, b = a + 1,
-// c = a + NU, d = c + 1, as MakeMesh (and a parametric source) makes them: quad rows [j0, j1).
+// c = a + NU, d = c + 1, as MakeMesh makes them: quad rows [j0, j1). (A real path would also have
+// to accept the parametric sources' other split and 32-bit cell storage.)
 struct CheckWorker
 {
   const Grid& G;
