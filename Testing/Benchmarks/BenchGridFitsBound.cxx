@@ -90,12 +90,6 @@ Grid& TheGrid()
   return g;
 }
 
-void SetThreads(int threads)
-{
-  vtkSMPTools::Initialize(
-    threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
-}
-
 // Whether quad (i, j)'s two triangles are (a, b, d), (a, d, c) with a = j NU + i, b = a + 1,
 // c = a + NU, d = c + 1, as MakeMesh makes them: quad rows [j0, j1). (A real path would also have
 // to accept the parametric sources' other split and 32-bit cell storage.)
@@ -308,7 +302,8 @@ enum Stage
 // normals made before the timing).
 void BM_Stages(benchmark::State& state, int stages)
 {
-  SetThreads(0);
+  // Every core, as the filter's benchmark runs it by default.
+  vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
   Grid& g = TheGrid();
   if ((stages & Check) && !g.Conn)
   {
