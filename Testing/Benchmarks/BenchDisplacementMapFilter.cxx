@@ -9,6 +9,7 @@
 // (threads 0, each one's default) and on one thread. Our filter keeps what depends on the
 // mesh alone between executions, so it is timed both ways: a first execution (the mesh's
 // points and polygons modified before each) and a re-execution with a new Scale (a slider).
+// BM_TouchOnce times one execution's memory traffic alone, for scale.
 //
 //   build/bin/BenchDisplacementMapFilter --benchmark_repetitions=5
 //     --benchmark_report_aggregates_only=true --benchmark_out=displacement.json
@@ -18,6 +19,7 @@
 #include "DisplacementTestSurfaces.h"
 
 #include "vtkDisplacementMapFilter.h"
+#include "vtkSurfaceDetailMemory.h"
 
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -26,6 +28,7 @@
 #include <vtkImageWrapPad.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkPolyDataTangents.h>
@@ -34,6 +37,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <thread>
@@ -222,6 +227,130 @@ void BM_VTKChain(benchmark::State& state)
   state.counters["threads"] = vtkSMPTools::GetEstimatedNumberOfThreads();
 }
 
+// What one execution's memory traffic costs: a simple loop that moves exactly the bytes any
+// filter making this benchmark's outputs from its inputs must move. It reads every input array
+// once (points, normals, texture coordinates, tangents, dPdu, dPdv: 72 bytes per point of
+// float) and the four texels of each point's bilinear sample from the height image (Repeat). It
+// writes the 40 bytes per point of output (points, normals, tangents) into blocks allocated once
+// from vtkSurfaceDetailMemory (huge pages), as the filter's memory cache gives it warm blocks.
+// Its arithmetic is the least that uses every value: the displaced point; the normal with
+// 1e-30 (dPdu + dPdv) added (so that both are read; below float's resolution but at zeros); the
+// tangent copied. No mesh work (no seams, cells or fits) and no normal formula. The loop's time
+// bounds the traffic's cost from above; BENCHMARKS.md (issue 5) compares it with the time 20x of
+// the chain allows. Arguments: U, threads (as below).
+void BM_TouchOnce(benchmark::State& state)
+{
+  const Case& c = GetCase(static_cast<int>(state.range(0)));
+  SetThreads(static_cast<int>(state.range(1)));
+  vtkPointData* pd = c.Mesh->GetPointData();
+  auto floats = [&](vtkDataArray* a) -> const float*
+  {
+    auto* f = vtkFloatArray::SafeDownCast(a);
+    return f ? f->GetPointer(0) : nullptr;
+  };
+  const float* points = floats(c.Mesh->GetPoints()->GetData());
+  const float* normals = floats(pd->GetNormals());
+  const float* tcoords = floats(pd->GetTCoords());
+  const float* tangents = floats(pd->GetArray("Tangents"));
+  const float* du = floats(pd->GetArray("dPdu"));
+  const float* dv = floats(pd->GetArray("dPdv"));
+  vtkImageData* image = HeightImage();
+  const double* texels = static_cast<const double*>(image->GetScalarPointer());
+  if (!points || !normals || !tcoords || !tangents || !du || !dv ||
+    image->GetScalarType() != VTK_DOUBLE)
+  {
+    state.SkipWithError(
+      "the benchmark's mesh or image does not have the expected float/double arrays");
+    return;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const int W = dims[0], H = dims[1];
+  const vtkIdType n = c.Mesh->GetNumberOfPoints();
+  // The filter's own allocator for big outputs (huge pages), so that both pay the same TLB.
+  struct Block
+  {
+    float* P;
+    explicit Block(vtkIdType floats)
+      : P(static_cast<float*>(vtkSurfaceDetailMemory::Allocate(sizeof(float) * floats)))
+    {
+    }
+    ~Block() { vtkSurfaceDetailMemory::Release(this->P); }
+    Block(const Block&) = delete;
+    Block& operator=(const Block&) = delete;
+  };
+  const Block outPoints(3 * n), outNormals(3 * n), outTangents(4 * n);
+  float* op = outPoints.P;
+  float* on = outNormals.P;
+  float* ot = outTangents.P;
+  if (!op || !on || !ot)
+  {
+    state.SkipWithError("out of memory");
+    return;
+  }
+  for (auto _ : state)
+  {
+    vtkSMPTools::For(0, n, 16384,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          // Texel centres at (k + 0.5) / W, as the filter and vtkTexture sample.
+          const double x = tcoords[2 * i] * W - 0.5, y = tcoords[2 * i + 1] * H - 0.5;
+          const double fx0 = std::floor(x), fy0 = std::floor(y);
+          const double fx = x - fx0, fy = y - fy0;
+          // Repeat for coordinates in [0, 1] (this mesh's) without a division.
+          int i0 = static_cast<int>(fx0), j0 = static_cast<int>(fy0);
+          i0 += i0 < 0 ? W : 0;
+          j0 += j0 < 0 ? H : 0;
+          i0 -= i0 >= W ? W : 0;
+          j0 -= j0 >= H ? H : 0;
+          const int i1 = i0 + 1 < W ? i0 + 1 : 0, j1 = j0 + 1 < H ? j0 + 1 : 0;
+          const double* r0 = texels + static_cast<vtkIdType>(j0) * W;
+          const double* r1 = texels + static_cast<vtkIdType>(j1) * W;
+          const double h0 = r0[i0] + fx * (r0[i1] - r0[i0]);
+          const double h1 = r1[i0] + fx * (r1[i1] - r1[i0]);
+          const float d = static_cast<float>(Scale * (h0 + fy * (h1 - h0) - Mid));
+          for (int k = 0; k < 3; ++k)
+          {
+            const float nk = normals[3 * i + k];
+            op[3 * i + k] = points[3 * i + k] + d * nk;
+            on[3 * i + k] = nk + 1e-30f * (du[3 * i + k] + dv[3 * i + k]);
+            ot[4 * i + k] = tangents[4 * i + k];
+          }
+          ot[4 * i + 3] = tangents[4 * i + 3];
+        }
+      });
+    benchmark::ClobberMemory();
+  }
+  // The loop must compute what it claims to: its points against the filter's with Linear
+  // sampling (NormalMode None: the same displacement, nothing else), as the counter vs_filter.
+  vtkNew<vtkDisplacementMapFilter> filter;
+  filter->SetInputData(0, c.Mesh);
+  filter->SetInputData(1, image);
+  filter->SetScale(Scale);
+  filter->SetMidlevel(Mid);
+  filter->SetNormalMode(vtkDisplacementMapFilter::None);
+  filter->SetInterpolation(vtkDisplacementMapFilter::Linear);
+  filter->Update();
+  double worst = 0.0;
+  vtkPoints* ref = filter->GetOutput()->GetPoints();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    Vec q;
+    ref->GetPoint(i, q.data());
+    for (int k = 0; k < 3; ++k)
+    {
+      worst = std::max(worst, std::abs(q[k] - op[3 * i + k]));
+    }
+  }
+  state.counters["vs_filter"] = worst;
+  state.counters["points"] = static_cast<double>(n);
+  state.counters["threads"] = vtkSMPTools::GetEstimatedNumberOfThreads();
+  state.SetItemsProcessed(state.iterations() * n);
+  state.SetBytesProcessed(state.iterations() * n * (72 + 40));
+}
+
 // Resolutions U (torus U x U/2): the last two are about 1M and 4M points. Arguments:
 // U, normal mode (0 for the chain), interpolation (the chain's is Linear), threads, and for
 // our filter reexec: 0 a first execution on a changed mesh, 1 a re-execution on the same
@@ -270,5 +399,10 @@ void Sizes(benchmark::internal::Benchmark* b, bool modes)
 BENCHMARK(BM_DisplacementMapFilter)
   ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, true); });
 BENCHMARK(BM_VTKChain)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, false); });
+BENCHMARK(BM_TouchOnce)
+  ->ArgsProduct({ { 1414, 2828 }, { 0, 1 } })
+  ->ArgNames({ "U", "threads" })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 
 BENCHMARK_MAIN();
