@@ -16,8 +16,7 @@ packages=(
   # the displacement benchmark's time-vs-error plot
   python3-matplotlib
 
-  # CI's second build (scripts/test-clang.sh): clang takes the portable fallbacks of the
-  # GCC-only vector code
+  # CI's second stage (scripts/test-sanitizers.sh): clang with ASan and UBSan
   clang
 )
 # node runs the reference MikkTSpace (npm package "mikktspace") in the tests. Only

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Fuzzes each libFuzzer target of the sanitizer build (scripts/test-sanitizers.sh builds them
+# into $BUILD_DIR, default build-sanitizers/) for a bounded time: FUZZ_SECONDS (default 60)
+# each, starting from Testing/Fuzz/corpus/<target>. New inputs go to a scratch corpus in the
+# build tree, never into the repository. A crash stops the run and leaves its input in
+# $BUILD_DIR/fuzz-artifacts: fix the bug, then add that input to the target's corpus folder so
+# that ctest replays it from then on.
+set -euo pipefail
+src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${BUILD_DIR:-$src/build-sanitizers}"
+seconds="${FUZZ_SECONDS:-60}"
+export ASAN_OPTIONS="detect_leaks=1"
+export LSAN_OPTIONS="suppressions=$src/scripts/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+mkdir -p "$build/fuzz-artifacts"
+for target in FuzzDisplacementMapFilter FuzzHeightMapToNormalMap FuzzMikkTSpaceTangents \
+  FuzzOIIOImageReader; do
+  scratch="$build/fuzz-corpus/$target"
+  mkdir -p "$scratch"
+  echo "fuzz: $target for $seconds s"
+  "$build/bin/$target" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 \
+    -artifact_prefix="$build/fuzz-artifacts/$target-" "$scratch" \
+    "$src/Testing/Fuzz/corpus/$target" 2>&1 | grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)' || true
+  if ls "$build/fuzz-artifacts/$target-"* >/dev/null 2>&1; then
+    echo "fuzz: $target failed; inputs in $build/fuzz-artifacts" >&2
+    exit 1
+  fi
+done
+echo "fuzz: no target failed"

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The second stage of CI: every test again, built by clang with AddressSanitizer and
+# UndefinedBehaviorSanitizer (in $BUILD_DIR, default build-sanitizers/ in the source tree),
+# warnings as errors. Undefined behaviour stops the program; LeakSanitizer reports leaks at
+# exit, except inside Mesa and X (scripts/lsan.supp says which and why).
+set -euo pipefail
+src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export BUILD_DIR="${BUILD_DIR:-$src/build-sanitizers}"
+export CC=clang CXX=clang++
+# Optimised, so that the threaded loops run as they do in a release build, with the frame
+# pointers and line tables that make the reports readable.
+export CMAKE_ARGS="${CMAKE_ARGS:-} -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSURFACEDETAIL_SANITIZE=ON \
+  -DSURFACEDETAIL_BUILD_BENCHMARKS=OFF -DSURFACEDETAIL_BUILD_EXAMPLES=OFF \
+  -DCMAKE_COMPILE_WARNING_AS_ERROR=ON"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1"
+export LSAN_OPTIONS="suppressions=$src/scripts/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+exec bash "$src/scripts/test.sh" "$@"
