@@ -722,7 +722,8 @@ GroupList CoincidentGroups(const R* points, const std::vector<vtkIdType>& ids, d
   for (size_t k = 0; k < ids.size(); ++k)
   {
     const R* p = points + 3 * ids[k];
-    if (std::isfinite(p[0] + p[1] + p[2]))
+    // (In double: float's sum of three large coordinates could overflow.)
+    if (std::isfinite(static_cast<double>(p[0]) + p[1] + p[2]))
     {
       // (+0 makes -0 and +0 one key.)
       entries.push_back({ { std::floor(p[0] / cell) + 0.0, std::floor(p[1] / cell) + 0.0,
@@ -984,6 +985,16 @@ void WithTexelType(vtkDataArray* scalars, F&& body)
       break;
   }
 }
+// Whether normal mode @a mode fits derivatives to a point's neighbours (the surface's own
+// derivatives are missing), and so reads its polygons.
+bool FitsDerivatives(int mode, vtkPointData* pd)
+{
+  const bool derivatives = Vector(pd, "dPdu") && Vector(pd, "dPdv");
+  return (mode == vtkDisplacementMapFilter::Approximate && !derivatives) ||
+    (mode == vtkDisplacementMapFilter::Exact &&
+      !(derivatives && Vector(pd, "dNdu") && Vector(pd, "dNdv")));
+}
+
 //------------------------------------------------------------------------------
 // One execution, with every array read and written as R.
 template <typename R>
@@ -1107,9 +1118,8 @@ struct Execution
     }
     this->Polys.reset(new Polygons(this->Input->GetPolys()));
     c.Polys = this->Polys.get();
-    const bool fits = (mode == vtkDisplacementMapFilter::Approximate && !c.DPdu) ||
-      (mode == vtkDisplacementMapFilter::Exact && !(c.DPdu && c.DNdu));
-    if (fits || mode == vtkDisplacementMapFilter::Mesh)
+    if (mode == vtkDisplacementMapFilter::Mesh ||
+      FitsDerivatives(mode, this->Input->GetPointData()))
     {
       // Serial: each point's polygons in one fixed order, so that sums over them do not depend
       // on the threads.
@@ -1262,8 +1272,8 @@ bool vtkDisplacementMapFilter::CheckSurface(vtkPolyData* input)
       return false;
     }
   }
-  const bool analytic = this->NormalMode == Approximate || this->NormalMode == Exact;
-  if ((this->NormalMode == Mesh || analytic) && input->GetNumberOfStrips() > 0)
+  if ((this->NormalMode == Mesh || FitsDerivatives(this->NormalMode, pd)) &&
+    input->GetNumberOfStrips() > 0)
   {
     vtkErrorMacro("The input has triangle strips; normal mode " << this->GetNormalModeAsString()
                                                                 << " needs polygons. Run "
