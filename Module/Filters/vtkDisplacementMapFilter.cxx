@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -129,13 +130,15 @@ void CatmullRom(double f, double w[4], double dw[4])
 }
 
 // The height map as a texture of scalar type T: one component, normalised, non-finite
-// values read as the midlevel (so that they do not move the surface).
+// values read as the midlevel (so that they do not move the surface) and reported in
+// @a SawNonFinite (so that only a map with such values is counted, for the warning).
 template <typename T>
 struct HeightMap
 {
   const T* Data;
   int W, H, NC, Comp, Wrap, Interpolation;
   double Norm, Mid;
+  std::atomic<bool>* SawNonFinite;
 
   double Texel(int i, int j) const
   {
@@ -146,7 +149,12 @@ struct HeightMap
                                                                    : WrapIndex(j, this->H, this->Wrap);
     const double v =
       this->Norm * this->Data[(static_cast<vtkIdType>(j) * this->W + i) * this->NC + this->Comp];
-    return std::isfinite(v) ? v : this->Mid;
+    if (std::isfinite(v))
+    {
+      return v;
+    }
+    this->SawNonFinite->store(true, std::memory_order_relaxed);
+    return this->Mid;
   }
 
   // The interpolant h(s,t) and its analytic derivatives in s and t.
@@ -241,12 +249,31 @@ double Finite(double x)
     std::max(x, -std::numeric_limits<double>::max()), std::numeric_limits<double>::max());
 }
 
-void RemoveNormalPart(const double n[3], double v[3])
+// The passes work on blocks of points held as arrays per coordinate ("lanes"): each step is a
+// short loop over the block without branches, which the compiler vectorises and the processor
+// overlaps from point to point (one point's square roots and divisions are a long chain).
+constexpr int Block = 64;
+using Lanes = double[Block];
+
+// Whether a length is positive and finite.
+inline bool Usable(double length)
 {
-  const double d = Dot(n, v);
-  v[0] -= d * n[0];
-  v[1] -= d * n[1];
-  v[2] -= d * n[2];
+  return length > 0.0 && length <= std::numeric_limits<double>::max();
+}
+
+// Scales each vector @a v to unit length where its length (@a length) is Usable, and leaves it
+// as it is elsewhere.
+void UnitLanes(int count, Lanes v[3], Lanes length)
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const double len = std::sqrt(v[0][k] * v[0][k] + v[1][k] * v[1][k] + v[2][k] * v[2][k]);
+    const double inv = 1.0 / (Usable(len) ? len : 1.0);
+    v[0][k] *= inv;
+    v[1][k] *= inv;
+    v[2][k] *= inv;
+    length[k] = len;
+  }
 }
 
 // A position as R: beyond float's range the largest float of its sign, never infinity.
@@ -256,6 +283,13 @@ R ToPosition(double v)
   constexpr double big = std::numeric_limits<R>::max();
   return static_cast<R>(std::min(std::max(v, -big), big));
 }
+
+// The point derivatives of a block: P_s, P_t and (Exact) n_s, n_t as lanes, and the unit input
+// normal n.
+struct BlockDerivatives
+{
+  Lanes N[3], Ps[3], Pt[3], Ns[3], Nt[3];
+};
 
 // Everything the passes read and write, as raw arrays of R (float or double).
 template <typename R>
@@ -278,6 +312,9 @@ struct Context
   double Midlevel = 0.0;
   const Polygons* Polys = nullptr;
   Links* PointLinks = nullptr; // where the fits or Mesh normals read a point's polygons
+  // Exact's fits: each point's input normal made unit (left as it is where its length is zero
+  // or not finite), 3 per point; each point is a neighbour in a dozen fits.
+  const double* UnitNormals = nullptr;
   R* OutPoints = nullptr;
   R* OutNormals = nullptr;  // null in None mode
   R* OutTangents = nullptr; // null without input tangents or in None mode
@@ -289,13 +326,24 @@ struct Context
     v[2] = a[3 * i + 2];
   }
 
-  // The unit input normal, or zero where it has no direction.
-  void InputNormal(vtkIdType i, double n[3]) const
+  // The unit input normals of the points @a ids, zero where one has no direction.
+  void InputNormals(const vtkIdType* ids, int count, Lanes n[3]) const
   {
-    this->Get3(this->Normals, i, n);
-    if (Normalize(n) == 0.0 || !std::isfinite(n[0] + n[1] + n[2]))
+    for (int k = 0; k < count; ++k)
     {
-      n[0] = n[1] = n[2] = 0.0;
+      for (int j = 0; j < 3; ++j)
+      {
+        n[j][k] = this->Normals[3 * ids[k] + j];
+      }
+    }
+    Lanes length;
+    UnitLanes(count, n, length);
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        n[j][k] = Usable(length[k]) ? n[j][k] : 0.0;
+      }
     }
   }
 
@@ -310,43 +358,73 @@ struct Context
     }
   }
 
-  // Normalises @a m and writes it (the input normal where @a m has no direction, +z where
-  // neither has), then the tangent re-orthogonalised to it with its handedness kept.
-  void WriteNormalAndTangent(vtkIdType i, double m[3]) const
+  // Normalises the directions @a m of the points @a ids and writes them as their normals (the
+  // unit input normal @a n where a direction is degenerate, +z where that is zero too), then
+  // their tangents re-orthogonalised to them with the handedness kept.
+  void WriteNormalsAndTangents(
+    const vtkIdType* ids, int count, const Lanes n[3], Lanes m[3]) const
   {
-    if (Normalize(m) == 0.0 || !std::isfinite(m[0] + m[1] + m[2]))
+    Lanes length;
+    UnitLanes(count, m, length);
+    for (int k = 0; k < count; ++k)
     {
-      this->InputNormal(i, m);
-      if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0)
+      const bool ok = Usable(length[k]);
+      const bool none = n[0][k] == 0.0 && n[1][k] == 0.0 && n[2][k] == 0.0;
+      m[0][k] = ok ? m[0][k] : n[0][k];
+      m[1][k] = ok ? m[1][k] : n[1][k];
+      m[2][k] = ok ? m[2][k] : (none ? 1.0 : n[2][k]);
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      for (int j = 0; j < 3; ++j)
       {
-        m[2] = 1.0;
+        this->OutNormals[3 * ids[k] + j] = static_cast<R>(m[j][k]);
       }
     }
-    for (int k = 0; k < 3; ++k)
+    if (this->OutTangents)
     {
-      this->OutNormals[3 * i + k] = static_cast<R>(m[k]);
+      this->WriteTangents(ids, count, m);
     }
-    if (!this->OutTangents)
-    {
-      return;
-    }
+  }
+
+  void WriteTangents(const vtkIdType* ids, int count, const Lanes m[3]) const
+  {
     const int nc = this->TangentsNC;
-    double tg[4] = { 0.0, 0.0, 0.0, 1.0 };
-    for (int k = 0; k < nc; ++k)
+    Lanes t[4];
+    for (int k = 0; k < count; ++k)
     {
-      tg[k] = this->Tangents[nc * i + k];
+      for (int j = 0; j < nc; ++j)
+      {
+        t[j][k] = this->Tangents[nc * ids[k] + j];
+      }
     }
-    RemoveNormalPart(m, tg);
-    if (Normalize(tg) == 0.0 || !std::isfinite(tg[0] + tg[1] + tg[2]))
+    for (int k = 0; k < count; ++k)
     {
-      const double zero[3] = { 0.0, 0.0, 0.0 };
-      const double w = tg[3];
-      MakeTangentFrame(m, zero, zero, tg);
-      tg[3] = w;
+      const double along = m[0][k] * t[0][k] + m[1][k] * t[1][k] + m[2][k] * t[2][k];
+      for (int j = 0; j < 3; ++j)
+      {
+        t[j][k] -= along * m[j][k];
+      }
     }
-    for (int k = 0; k < nc; ++k)
+    Lanes length;
+    UnitLanes(count, t, length);
+    for (int k = 0; k < count; ++k)
     {
-      this->OutTangents[nc * i + k] = static_cast<R>(tg[k]);
+      if (!Usable(length[k]))
+      {
+        // No direction left across the normal: any unit vector orthogonal to it.
+        const double mk[3] = { m[0][k], m[1][k], m[2][k] }, zero[3] = { 0.0, 0.0, 0.0 };
+        double frame[4];
+        MakeTangentFrame(mk, zero, zero, frame);
+        for (int j = 0; j < 3; ++j)
+        {
+          t[j][k] = frame[j];
+        }
+      }
+      for (int j = 0; j < nc; ++j)
+      {
+        this->OutTangents[nc * ids[k] + j] = static_cast<R>(t[j][k]);
+      }
     }
   }
 
@@ -357,16 +435,14 @@ struct Context
   // difference. Where the texture coordinates around the point do not span two directions, or
   // (P) a neighbour sits at the point with other texture coordinates (a pole: p(s,t) is
   // singular there), the derivatives are 0 and the normal falls back on the input's.
-  void Fit(vtkIdType i, bool wantP, bool wantN, double ps[3], double pt[3], double ns[3],
-    double nt[3]) const
+  void Fit(vtkIdType i, bool wantP, bool wantN, BlockDerivatives& b, int k) const
   {
     const R* tc = this->TCoords;
     const vtkIdType tnc = this->TCoordsNC;
     const double s = tc[tnc * i], t = tc[tnc * i + 1];
-    double p[3], n[3];
+    double p[3];
     this->Get3(this->Points, i, p);
-    this->Get3(this->Normals, i, n);
-    Normalize(n);
+    const double* n = this->UnitNormals + 3 * i;
     double ss = 0.0, st = 0.0, tt = 0.0, bp[6] = {}, bn[6] = {};
     double nearest = std::numeric_limits<double>::max(), farthest = 0.0;
     const vtkIdType* cells = this->PointLinks->GetCells(i);
@@ -401,12 +477,11 @@ struct Context
         }
         if (wantN)
         {
+          const double* nj = this->UnitNormals + 3 * j;
           double d[3];
-          this->Get3(this->Normals, j, d);
-          Normalize(d);
           for (int q = 0; q < 3; ++q)
           {
-            d[q] -= n[q];
+            d[q] = nj[q] - n[q];
             bn[q] += ds * d[q];
             bn[3 + q] += dt * d[q];
           }
@@ -420,107 +495,139 @@ struct Context
     {
       if (wantP)
       {
-        ps[q] = distinct ? (tt * bp[q] - st * bp[3 + q]) / det : 0.0;
-        pt[q] = distinct ? (ss * bp[3 + q] - st * bp[q]) / det : 0.0;
+        b.Ps[q][k] = distinct ? (tt * bp[q] - st * bp[3 + q]) / det : 0.0;
+        b.Pt[q][k] = distinct ? (ss * bp[3 + q] - st * bp[q]) / det : 0.0;
       }
       if (wantN)
       {
-        ns[q] = spans ? (tt * bn[q] - st * bn[3 + q]) / det : 0.0;
-        nt[q] = spans ? (ss * bn[3 + q] - st * bn[q]) / det : 0.0;
+        b.Ns[q][k] = spans ? (tt * bn[q] - st * bn[3 + q]) / det : 0.0;
+        b.Nt[q][k] = spans ? (ss * bn[3 + q] - st * bn[q]) / det : 0.0;
       }
     }
   }
 
-  // P_s, P_t and (Exact) n_s, n_t at point @a i: from dPdu/dPdv (and dNdu/dNdv) scaled by the
-  // texture coordinates' affine fit, else fitted from the neighbours.
-  void Derivatives(vtkIdType i, bool exact, double ps[3], double pt[3], double ns[3],
-    double nt[3]) const
+  // P_s, P_t and (Exact) n_s, n_t of the points [first, first + count): from dPdu/dPdv (and
+  // dNdu/dNdv) scaled by the texture coordinates' affine fit, else fitted from the neighbours.
+  void Derivatives(vtkIdType first, int count, bool exact, BlockDerivatives& b) const
   {
+    auto scaled = [&](const R* du, const R* dv, Lanes s[3], Lanes t[3])
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          s[q][k] = du[3 * (first + k) + q] * this->DerivativeScale[0];
+          t[q][k] = dv[3 * (first + k) + q] * this->DerivativeScale[1];
+        }
+      }
+    };
     if (this->DPdu)
     {
-      for (int q = 0; q < 3; ++q)
-      {
-        ps[q] = this->DPdu[3 * i + q] * this->DerivativeScale[0];
-        pt[q] = this->DPdv[3 * i + q] * this->DerivativeScale[1];
-      }
+      scaled(this->DPdu, this->DPdv, b.Ps, b.Pt);
     }
     if (exact && this->DNdu)
     {
-      for (int q = 0; q < 3; ++q)
-      {
-        ns[q] = this->DNdu[3 * i + q] * this->DerivativeScale[0];
-        nt[q] = this->DNdv[3 * i + q] * this->DerivativeScale[1];
-      }
+      scaled(this->DNdu, this->DNdv, b.Ns, b.Nt);
     }
     const bool wantP = !this->DPdu, wantN = exact && !this->DNdu;
-    if (wantP || wantN)
+    for (int k = 0; (wantP || wantN) && k < count; ++k)
     {
-      this->Fit(i, wantP, wantN, ps, pt, ns, nt);
+      this->Fit(first + k, wantP, wantN, b, k);
     }
   }
 };
 
-// The direction of the displaced normal at a point with unit input normal @a n, displacement
-// @a d and its derivatives @a ds, @a dt: the seed's formula (Approximate), or (Exact) the cross
-// product of the displaced surface's derivatives. P_s and P_t count only across n (n defines
-// the tangent plane), so that a map without slope gives back n itself, and the result is
-// oriented by n . (P_s x P_t), whatever the orientation of the parameterisation. Where
-// P_s x P_t vanishes (a singular point of the parameterisation) the input normal is kept.
-void DisplacedDirection(bool exact, const double n[3], double d, double ds, double dt,
-  double Ps[3], double Pt[3], double Ns[3], double Nt[3], double m[3])
+// The directions @a m of the displaced normals of a block, from the displacement @a d and its
+// derivatives @a ds, @a dt: the seed's formula (Approximate), or (Exact) the cross product of
+// the displaced surface's derivatives. P_s and P_t count only across n (n defines the tangent
+// plane), so that a map without slope gives back n itself, and the result is oriented by
+// n . (P_s x P_t), whatever the orientation of the parameterisation. Where P_s x P_t vanishes
+// (a singular point of the parameterisation) the input normal is kept.
+void Directions(int count, bool exact, BlockDerivatives& b, const Lanes d, const Lanes ds,
+  const Lanes dt, Lanes m[3])
 {
-  RemoveNormalPart(n, Ps);
-  RemoveNormalPart(n, Pt);
-  double base[3];
-  Cross(Ps, Pt, base);
-  const double area = Dot(n, base);
-  const double size = std::sqrt(Dot(Ps, Ps) * Dot(Pt, Pt));
-  if (!(std::abs(area) > 1e-10 * size) || !std::isfinite(area))
+  const Lanes* n = b.N;
+  Lanes* const across[4] = { b.Ps, b.Pt, b.Ns, b.Nt };
+  for (int a = 0; a < (exact ? 4 : 2); ++a)
   {
-    std::copy_n(n, 3, m);
-    return;
+    Lanes* v = across[a];
+    for (int k = 0; k < count; ++k)
+    {
+      const double along = n[0][k] * v[0][k] + n[1][k] * v[1][k] + n[2][k] * v[2][k];
+      for (int j = 0; j < 3; ++j)
+      {
+        v[j][k] -= along * n[j][k];
+      }
+    }
+  }
+  // The sign of n . (P_s x P_t), 0 where that vanishes (the input normal is kept there).
+  Lanes area, sign;
+  for (int k = 0; k < count; ++k)
+  {
+    const double ps[3] = { b.Ps[0][k], b.Ps[1][k], b.Ps[2][k] };
+    const double pt[3] = { b.Pt[0][k], b.Pt[1][k], b.Pt[2][k] };
+    const double nk[3] = { n[0][k], n[1][k], n[2][k] };
+    double base[3];
+    Cross(ps, pt, base);
+    area[k] = Dot(nk, base);
+    const double size = std::sqrt(Dot(ps, ps) * Dot(pt, pt));
+    const bool degenerate = !(std::abs(area[k]) > 1e-10 * size) || !std::isfinite(area[k]);
+    sign[k] = degenerate ? 0.0 : (area[k] < 0.0 ? -1.0 : 1.0);
   }
   if (exact)
   {
-    RemoveNormalPart(n, Ns);
-    RemoveNormalPart(n, Nt);
-    double qs[3], qt[3];
-    for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < count; ++k)
     {
-      qs[j] = Finite(Ps[j] + ds * n[j] + d * Ns[j]);
-      qt[j] = Finite(Pt[j] + dt * n[j] + d * Nt[j]);
-    }
-    // Only the direction matters: each vector divided by its largest component keeps the
-    // cross product finite.
-    for (double* q : { qs, qt })
-    {
-      const double largest = std::max({ std::abs(q[0]), std::abs(q[1]), std::abs(q[2]) });
-      for (int j = 0; largest > 0.0 && j < 3; ++j)
+      double qs[3], qt[3];
+      for (int j = 0; j < 3; ++j)
       {
-        q[j] /= largest;
+        qs[j] = Finite(b.Ps[j][k] + ds[k] * n[j][k] + d[k] * b.Ns[j][k]);
+        qt[j] = Finite(b.Pt[j][k] + dt[k] * n[j][k] + d[k] * b.Nt[j][k]);
+      }
+      // Only the direction matters: each vector divided by its largest component keeps the
+      // cross product finite.
+      const double ls = std::max(std::max(std::abs(qs[0]), std::abs(qs[1])), std::abs(qs[2]));
+      const double lt = std::max(std::max(std::abs(qt[0]), std::abs(qt[1])), std::abs(qt[2]));
+      const double is = 1.0 / (ls > 0.0 ? ls : 1.0), it = 1.0 / (lt > 0.0 ? lt : 1.0);
+      for (int j = 0; j < 3; ++j)
+      {
+        qs[j] *= is;
+        qt[j] *= it;
+      }
+      double mk[3];
+      Cross(qs, qt, mk);
+      for (int j = 0; j < 3; ++j)
+      {
+        m[j][k] = mk[j];
       }
     }
-    Cross(qs, qt, m);
   }
   else
   {
-    // m* = (n . (P_s x P_t)) n + d_s (n x P_t) - d_t (n x P_s), scaled by its largest
-    // coefficient so that huge slopes stay finite.
-    double nxPs[3], nxPt[3];
-    Cross(n, Ps, nxPs);
-    Cross(n, Pt, nxPt);
-    const double largest = std::max({ std::abs(area), std::abs(ds), std::abs(dt), 1e-300 });
-    const double a = area / largest, bs = ds / largest, bt = dt / largest;
-    for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < count; ++k)
     {
-      m[j] = a * n[j] + bs * nxPt[j] - bt * nxPs[j];
+      // (n . (P_s x P_t)) n + d_s (n x P_t) - d_t (n x P_s), divided by its largest
+      // coefficient so that huge slopes stay finite.
+      const double ps[3] = { b.Ps[0][k], b.Ps[1][k], b.Ps[2][k] };
+      const double pt[3] = { b.Pt[0][k], b.Pt[1][k], b.Pt[2][k] };
+      const double nk[3] = { n[0][k], n[1][k], n[2][k] };
+      double nxPs[3], nxPt[3];
+      Cross(nk, ps, nxPs);
+      Cross(nk, pt, nxPt);
+      const double largest = std::max(
+        std::max(std::max(std::abs(area[k]), std::abs(ds[k])), std::abs(dt[k])), 1e-300);
+      const double inv = 1.0 / largest;
+      for (int j = 0; j < 3; ++j)
+      {
+        m[j][k] = area[k] * inv * nk[j] + ds[k] * inv * nxPt[j] - dt[k] * inv * nxPs[j];
+      }
     }
   }
-  if (area < 0.0)
+  for (int j = 0; j < 3; ++j)
   {
-    for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < count; ++k)
     {
-      m[j] = -m[j];
+      m[j][k] = sign[k] == 0.0 ? n[j][k] : sign[k] * m[j][k];
     }
   }
 }
@@ -535,18 +642,24 @@ struct DisplacePoints
   const Context<R>& C;
   const HeightMap<T>& Map;
 
-  // The displacement d at point @a i and its derivatives in (s,t); @a n gets the unit input
-  // normal (zero where it has none). One function for pass 1 and the seams' mean.
-  double Displacement(vtkIdType i, double n[3], double& ds, double& dt) const
+  // The displacements d of the points @a ids and their derivatives in (s,t); @a n gets their
+  // unit input normals (zero where one has none). One function for pass 1 and the seams' mean.
+  void Displacements(
+    const vtkIdType* ids, int count, Lanes n[3], Lanes d, Lanes ds, Lanes dt) const
   {
     const Context<R>& c = this->C;
-    c.InputNormal(i, n);
-    double h, hs, ht;
-    this->Map.Sample(
-      c.TCoords[c.TCoordsNC * i], c.TCoords[c.TCoordsNC * i + 1], h, hs, ht);
-    ds = Finite(c.Scale * hs);
-    dt = Finite(c.Scale * ht);
-    return Finite(c.Scale * (h - c.Midlevel));
+    c.InputNormals(ids, count, n);
+    for (int k = 0; k < count; ++k)
+    {
+      const R* st = c.TCoords + c.TCoordsNC * ids[k];
+      this->Map.Sample(st[0], st[1], d[k], ds[k], dt[k]);
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      d[k] = Finite(c.Scale * (d[k] - c.Midlevel));
+      ds[k] = Finite(c.Scale * ds[k]);
+      dt[k] = Finite(c.Scale * dt[k]);
+    }
   }
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -554,18 +667,27 @@ struct DisplacePoints
     const Context<R>& c = this->C;
     const bool exact = c.NormalMode == vtkDisplacementMapFilter::Exact;
     const bool analytic = exact || c.NormalMode == vtkDisplacementMapFilter::Approximate;
-    for (vtkIdType i = begin; i < end; ++i)
+    vtkIdType ids[Block];
+    BlockDerivatives b;
+    Lanes d, ds, dt, m[3];
+    for (vtkIdType first = begin; first < end; first += Block)
     {
-      double n[3], ds, dt;
-      const double d = this->Displacement(i, n, ds, dt);
-      const double offset[3] = { d * n[0], d * n[1], d * n[2] };
-      c.WritePoint(i, offset);
+      const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
+      for (int k = 0; k < count; ++k)
+      {
+        ids[k] = first + k;
+      }
+      this->Displacements(ids, count, b.N, d, ds, dt);
+      for (int k = 0; k < count; ++k)
+      {
+        const double offset[3] = { d[k] * b.N[0][k], d[k] * b.N[1][k], d[k] * b.N[2][k] };
+        c.WritePoint(ids[k], offset);
+      }
       if (analytic)
       {
-        double ps[3], pt[3], ns[3] = {}, nt[3] = {}, m[3];
-        c.Derivatives(i, exact, ps, pt, ns, nt);
-        DisplacedDirection(exact, n, d, ds, dt, ps, pt, ns, nt, m);
-        c.WriteNormalAndTangent(i, m);
+        c.Derivatives(first, count, exact, b);
+        Directions(count, exact, b, d, ds, dt, m);
+        c.WriteNormalsAndTangents(ids, count, b.N, m);
       }
     }
   }
@@ -634,19 +756,31 @@ struct PointNormals
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    for (vtkIdType i = begin; i < end; ++i)
+    vtkIdType ids[Block];
+    Lanes n[3], m[3];
+    for (vtkIdType first = begin; first < end; first += Block)
     {
-      const vtkIdType* cells = this->C.PointLinks->GetCells(i);
-      const vtkIdType numCells = this->C.PointLinks->GetNcells(i);
-      double m[3] = { 0.0, 0.0, 0.0 };
-      for (vtkIdType k = 0; k < numCells; ++k)
+      const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
+      for (int k = 0; k < count; ++k)
       {
+        ids[k] = first + k;
+        const vtkIdType* cells = this->C.PointLinks->GetCells(ids[k]);
+        const vtkIdType numCells = this->C.PointLinks->GetNcells(ids[k]);
+        double sum[3] = { 0.0, 0.0, 0.0 };
+        for (vtkIdType c = 0; c < numCells; ++c)
+        {
+          for (int q = 0; q < 3; ++q)
+          {
+            sum[q] += this->CellNormals[3 * cells[c] + q];
+          }
+        }
         for (int q = 0; q < 3; ++q)
         {
-          m[q] += this->CellNormals[3 * cells[k] + q];
+          m[q][k] = sum[q];
         }
       }
-      this->C.WriteNormalAndTangent(i, m);
+      this->C.InputNormals(ids, count, n);
+      this->C.WriteNormalsAndTangents(ids, count, n, m);
     }
   }
 };
@@ -667,27 +801,28 @@ std::vector<vtkIdType> SeamCandidates(const Polygons& polys, vtkIdType numPts)
   // even, so the lowest bit is free to mark the points some polygon uses. A hash that mixes
   // well, not a near-additive one, is what keeps the sums of a point where several boundary
   // fans meet (a bowtie) from cancelling by chance.
-  std::vector<std::uint64_t> hash(numPts), sum(numPts, 0);
-  vtkSMPTools::For(0, numPts,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      constexpr std::uint64_t low63 = ~std::uint64_t(0) >> 1;
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        std::uint64_t z = (static_cast<std::uint64_t>(i) + 0x9E3779B97F4A7C15ULL) & low63;
-        z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL) & low63;
-        z = ((z ^ (z >> 27)) * 0x94D049BB133111EBULL) & low63;
-        hash[i] = (z ^ (z >> 31)) << 1;
-      }
-    });
+  auto hash = [](vtkIdType id)
+  {
+    constexpr std::uint64_t low63 = ~std::uint64_t(0) >> 1;
+    std::uint64_t z = (static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL) & low63;
+    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL) & low63;
+    z = ((z ^ (z >> 27)) * 0x94D049BB133111EBULL) & low63;
+    return (z ^ (z >> 31)) << 1;
+  };
+  std::vector<std::uint64_t> sum(numPts, 0), corners;
   for (vtkIdType cell = 0; cell < polys.Count; ++cell)
   {
     const vtkIdType* ids = polys.Conn + polys.Offsets[cell];
     const vtkIdType n = polys.Offsets[cell + 1] - polys.Offsets[cell];
+    corners.resize(std::max<size_t>(corners.size(), n));
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const vtkIdType next = ids[k + 1 < n ? k + 1 : 0], prev = ids[k > 0 ? k - 1 : n - 1];
-      sum[ids[k]] = (sum[ids[k]] + hash[next] - hash[prev]) | 1;
+      corners[k] = hash(ids[k]);
+    }
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const std::uint64_t next = corners[k + 1 < n ? k + 1 : 0], prev = corners[k > 0 ? k - 1 : n - 1];
+      sum[ids[k]] = (sum[ids[k]] + next - prev) | 1;
     }
   }
   std::vector<vtkIdType> candidates;
@@ -807,6 +942,22 @@ void ForEachGroup(const GroupList& groups, F&& body)
   }
 }
 
+// Calls @a body(ids, count) for the members of groups [b, e) in blocks.
+template <typename F>
+void ForEachBlock(const GroupList& groups, size_t b, size_t e, F&& body)
+{
+  vtkIdType ids[Block];
+  for (size_t first = b; first < e; first += Block)
+  {
+    const int count = static_cast<int>(std::min<size_t>(Block, e - first));
+    for (int k = 0; k < count; ++k)
+    {
+      ids[k] = groups[first + k].second;
+    }
+    body(ids, count, first - b);
+  }
+}
+
 // One displacement per group: the mean of the members' own.
 template <typename R, typename T>
 void MergeSeamPoints(const DisplacePoints<R, T>& pass, const GroupList& groups)
@@ -815,18 +966,22 @@ void MergeSeamPoints(const DisplacePoints<R, T>& pass, const GroupList& groups)
     [&](size_t b, size_t e)
     {
       double mean[3] = { 0.0, 0.0, 0.0 };
-      for (size_t g = b; g < e; ++g)
-      {
-        double n[3], ds, dt;
-        const double d = pass.Displacement(groups[g].second, n, ds, dt);
-        for (int k = 0; k < 3; ++k)
+      ForEachBlock(groups, b, e,
+        [&](const vtkIdType* ids, int count, size_t)
         {
-          mean[k] += d * n[k];
-        }
-      }
-      for (int k = 0; k < 3; ++k)
+          Lanes n[3], d, ds, dt;
+          pass.Displacements(ids, count, n, d, ds, dt);
+          for (int k = 0; k < count; ++k)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              mean[j] += d[k] * n[j][k];
+            }
+          }
+        });
+      for (int j = 0; j < 3; ++j)
       {
-        mean[k] /= static_cast<double>(e - b);
+        mean[j] /= static_cast<double>(e - b);
       }
       for (size_t g = b; g < e; ++g)
       {
@@ -843,25 +998,44 @@ void MergeSeamNormals(const Context<R>& c, const GroupList& groups)
   ForEachGroup(groups,
     [&](size_t b, size_t e)
     {
-      std::vector<double> sums(3 * (e - b), 0.0);
-      for (size_t g = b; g < e; ++g)
-      {
-        double ng[3];
-        c.InputNormal(groups[g].second, ng);
-        for (size_t h = b; h < e; ++h)
+      std::vector<double> unit(3 * (e - b)), sums(3 * (e - b), 0.0);
+      ForEachBlock(groups, b, e,
+        [&](const vtkIdType* ids, int count, size_t at)
         {
-          double nh[3];
-          c.InputNormal(groups[h].second, nh);
-          for (int k = 0; Dot(ng, nh) > 1.0 - 1e-9 && k < 3; ++k)
+          Lanes n[3];
+          c.InputNormals(ids, count, n);
+          for (int k = 0; k < count; ++k)
           {
-            sums[3 * (g - b) + k] += c.OutNormals[3 * groups[h].second + k];
+            for (int j = 0; j < 3; ++j)
+            {
+              unit[3 * (at + k) + j] = n[j][k];
+            }
+          }
+        });
+      for (size_t g = 0; g < e - b; ++g)
+      {
+        for (size_t h = 0; h < e - b; ++h)
+        {
+          for (int j = 0; Dot(&unit[3 * g], &unit[3 * h]) > 1.0 - 1e-9 && j < 3; ++j)
+          {
+            sums[3 * g + j] += c.OutNormals[3 * groups[b + h].second + j];
           }
         }
       }
-      for (size_t g = b; g < e; ++g)
-      {
-        c.WriteNormalAndTangent(groups[g].second, &sums[3 * (g - b)]);
-      }
+      ForEachBlock(groups, b, e,
+        [&](const vtkIdType* ids, int count, size_t at)
+        {
+          Lanes n[3], m[3];
+          for (int k = 0; k < count; ++k)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              n[j][k] = unit[3 * (at + k) + j];
+              m[j][k] = sums[3 * (at + k) + j];
+            }
+          }
+          c.WriteNormalsAndTangents(ids, count, n, m);
+        });
     });
 }
 
@@ -1009,6 +1183,7 @@ struct Execution
   std::vector<vtkSmartPointer<vtkDataArray>> Kept; // converted inputs, alive while read
   std::unique_ptr<Polygons> Polys;
   Links PointLinks;
+  std::unique_ptr<double[]> UnitNormals;
   GroupList Groups;
   vtkSmartPointer<vtkDataArray> OutPoints, OutNormals, OutTangents;
 
@@ -1041,23 +1216,21 @@ struct Execution
       [&](auto* data)
       {
         using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
-        if (std::is_floating_point<T>::value)
-        {
-          CountNonFinite<T> count{ data, nc, comp, {}, 0 };
-          vtkSMPTools::For(0, static_cast<vtkIdType>(dims[0]) * dims[1], count);
-          if (count.Total > 0)
-          {
-            vtkWarningWithObjectMacro(this->Filter,
-              << count.Total << " height value(s) in component " << comp
-              << " of the height map are NaN or infinite; they are treated as Midlevel ("
-              << this->C.Midlevel << ").");
-          }
-        }
+        std::atomic<bool> sawNonFinite(false);
         const HeightMap<T> map{ data, dims[0], dims[1], nc, comp, this->Filter->GetWrap(),
-          this->Filter->GetInterpolation(), norm, this->C.Midlevel };
+          this->Filter->GetInterpolation(), norm, this->C.Midlevel, &sawNonFinite };
         DisplacePoints<R, T> pass{ this->C, map };
         vtkSMPTools::For(0, this->C.NumPoints, pass);
         MergeSeamPoints(pass, this->Groups);
+        if (sawNonFinite)
+        {
+          CountNonFinite<T> count{ data, nc, comp, {}, 0 };
+          vtkSMPTools::For(0, static_cast<vtkIdType>(dims[0]) * dims[1], count);
+          vtkWarningWithObjectMacro(this->Filter,
+            << count.Total << " height value(s) in component " << comp
+            << " of the height map are NaN or infinite; they are treated as Midlevel ("
+            << this->C.Midlevel << ").");
+        }
       });
   }
 
@@ -1125,6 +1298,35 @@ struct Execution
       // on the threads.
       this->PointLinks.SerialBuildLinks(n, this->Polys->Count, this->Polys->Cells);
       c.PointLinks = &this->PointLinks;
+    }
+    if (mode == vtkDisplacementMapFilter::Exact && !c.DNdu)
+    {
+      this->UnitNormals.reset(new double[3 * static_cast<size_t>(n)]);
+      c.UnitNormals = this->UnitNormals.get();
+      vtkSMPTools::For(0, n,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType first = begin; first < end; first += Block)
+          {
+            const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
+            Lanes v[3], length;
+            for (int k = 0; k < count; ++k)
+            {
+              for (int j = 0; j < 3; ++j)
+              {
+                v[j][k] = c.Normals[3 * (first + k) + j];
+              }
+            }
+            UnitLanes(count, v, length);
+            for (int k = 0; k < count; ++k)
+            {
+              for (int j = 0; j < 3; ++j)
+              {
+                this->UnitNormals[3 * (first + k) + j] = v[j][k];
+              }
+            }
+          }
+        });
     }
     if (c.DPdu)
     {
