@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -42,33 +43,10 @@ using GroupList = std::vector<std::pair<vtkIdType, vtkIdType>>; // (representati
 //------------------------------------------------------------------------------
 // Arrays
 
-// @a a itself when it is already a plain array of R, else a copy converted to R, so that the
-// passes read raw memory.
-template <typename R>
-vtkSmartPointer<vtkDataArray> AsReal(vtkDataArray* a)
+// A new float or double array of @a n tuples.
+vtkSmartPointer<vtkDataArray> NewArray(int type, const char* name, int nc, vtkIdType n)
 {
-  const int type = std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE;
-  if (!a || (a->GetDataType() == type && a->HasStandardMemoryLayout()))
-  {
-    return a;
-  }
-  vtkSmartPointer<vtkDataArray> copy = vtkSmartPointer<vtkDataArray>::Take(
-    vtkDataArray::CreateDataArray(type));
-  copy->DeepCopy(a);
-  return copy;
-}
-
-template <typename R>
-const R* Values(vtkDataArray* a)
-{
-  return a ? static_cast<const R*>(a->GetVoidPointer(0)) : nullptr;
-}
-
-template <typename R>
-vtkSmartPointer<vtkDataArray> NewOutputArray(const char* name, int nc, vtkIdType n)
-{
-  vtkSmartPointer<vtkDataArray> a = vtkSmartPointer<vtkDataArray>::Take(
-    vtkDataArray::CreateDataArray(std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE));
+  auto a = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
   a->SetName(name);
   a->SetNumberOfComponents(nc);
   a->SetNumberOfTuples(n);
@@ -143,10 +121,12 @@ struct HeightMap
   double Texel(int i, int j) const
   {
     // The wrap's integer division only outside the map.
-    i = static_cast<unsigned>(i) < static_cast<unsigned>(this->W) ? i
-                                                                   : WrapIndex(i, this->W, this->Wrap);
-    j = static_cast<unsigned>(j) < static_cast<unsigned>(this->H) ? j
-                                                                   : WrapIndex(j, this->H, this->Wrap);
+    i = static_cast<unsigned>(i) < static_cast<unsigned>(this->W)
+      ? i
+      : WrapIndex(i, this->W, this->Wrap);
+    j = static_cast<unsigned>(j) < static_cast<unsigned>(this->H)
+      ? j
+      : WrapIndex(j, this->H, this->Wrap);
     const double v =
       this->Norm * this->Data[(static_cast<vtkIdType>(j) * this->W + i) * this->NC + this->Comp];
     if (std::isfinite(v))
@@ -165,8 +145,8 @@ struct HeightMap
     if (this->Interpolation == vtkDisplacementMapFilter::Nearest)
     {
       const double x = std::floor(s * this->W), y = std::floor(t * this->H);
-      h = this->Texel(std::isfinite(x) ? static_cast<int>(x) : 0,
-        std::isfinite(y) ? static_cast<int>(y) : 0);
+      h = this->Texel(
+        std::isfinite(x) ? static_cast<int>(x) : 0, std::isfinite(y) ? static_cast<int>(y) : 0);
       hs = ht = 0.0;
       return;
     }
@@ -207,33 +187,23 @@ struct HeightMap
   }
 };
 
-// The number of non-finite values in component @a comp of @a data (W*H texels of NC values).
+// The number of non-finite values in component @a comp of the @a n texels of @a data.
 template <typename T>
-struct CountNonFinite
+vtkIdType CountNonFinite(const T* data, vtkIdType n, int nc, int comp)
 {
-  const T* Data;
-  int NC, Comp;
-  vtkSMPThreadLocal<vtkIdType> Local;
-  vtkIdType Total = 0;
-
-  void Initialize() { this->Local.Local() = 0; }
-  void operator()(vtkIdType begin, vtkIdType end)
-  {
-    vtkIdType count = 0;
-    for (vtkIdType k = begin; k < end; ++k)
+  std::atomic<vtkIdType> total(0);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      count += !std::isfinite(static_cast<double>(this->Data[k * this->NC + this->Comp]));
-    }
-    this->Local.Local() += count;
-  }
-  void Reduce()
-  {
-    for (vtkIdType c : this->Local)
-    {
-      this->Total += c;
-    }
-  }
-};
+      vtkIdType count = 0;
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        count += !std::isfinite(static_cast<double>(data[k * nc + comp]));
+      }
+      total += count;
+    });
+  return total;
+}
 
 //------------------------------------------------------------------------------
 // Per-point helpers
@@ -312,8 +282,8 @@ struct Context
   double Midlevel = 0.0;
   const Polygons* Polys = nullptr;
   Links* PointLinks = nullptr; // where the fits or Mesh normals read a point's polygons
-  // Exact's fits: each point's input normal made unit (left as it is where its length is zero
-  // or not finite), 3 per point; each point is a neighbour in a dozen fits.
+  // Exact's fits: each point's unit input normal (zero where it has no direction), 3 per point;
+  // each point is a neighbour in a dozen fits.
   const double* UnitNormals = nullptr;
   R* OutPoints = nullptr;
   R* OutNormals = nullptr;  // null in None mode
@@ -353,16 +323,15 @@ struct Context
     {
       const double p = this->Points[3 * i + k];
       // Adding +0 would turn -0 into +0: no displacement leaves the bits alone.
-      this->OutPoints[3 * i + k] = offset[k] == 0.0 ? this->Points[3 * i + k]
-                                                    : ToPosition<R>(Finite(p + offset[k]));
+      this->OutPoints[3 * i + k] =
+        offset[k] == 0.0 ? this->Points[3 * i + k] : ToPosition<R>(Finite(p + offset[k]));
     }
   }
 
   // Normalises the directions @a m of the points @a ids and writes them as their normals (the
   // unit input normal @a n where a direction is degenerate, +z where that is zero too), then
   // their tangents re-orthogonalised to them with the handedness kept.
-  void WriteNormalsAndTangents(
-    const vtkIdType* ids, int count, const Lanes n[3], Lanes m[3]) const
+  void WriteNormalsAndTangents(const vtkIdType* ids, int count, const Lanes n[3], Lanes m[3]) const
   {
     Lanes length;
     UnitLanes(count, m, length);
@@ -614,8 +583,8 @@ void Directions(int count, bool exact, BlockDerivatives& b, const Lanes d, const
       double nxPs[3], nxPt[3];
       Cross(nk, ps, nxPs);
       Cross(nk, pt, nxPt);
-      const double largest = std::max(
-        std::max(std::max(std::abs(area[k]), std::abs(ds[k])), std::abs(dt[k])), 1e-300);
+      const double largest =
+        std::max(std::max(std::max(std::abs(area[k]), std::abs(ds[k])), std::abs(dt[k])), 1e-300);
       const double inv = 1.0 / largest;
       for (int j = 0; j < 3; ++j)
       {
@@ -644,8 +613,7 @@ struct DisplacePoints
 
   // The displacements d of the points @a ids and their derivatives in (s,t); @a n gets their
   // unit input normals (zero where one has none). One function for pass 1 and the seams' mean.
-  void Displacements(
-    const vtkIdType* ids, int count, Lanes n[3], Lanes d, Lanes ds, Lanes dt) const
+  void Displacements(const vtkIdType* ids, int count, Lanes n[3], Lanes d, Lanes ds, Lanes dt) const
   {
     const Context<R>& c = this->C;
     c.InputNormals(ids, count, n);
@@ -673,10 +641,7 @@ struct DisplacePoints
     for (vtkIdType first = begin; first < end; first += Block)
     {
       const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
-      for (int k = 0; k < count; ++k)
-      {
-        ids[k] = first + k;
-      }
+      std::iota(ids, ids + count, first);
       this->Displacements(ids, count, b.N, d, ds, dt);
       for (int k = 0; k < count; ++k)
       {
@@ -693,14 +658,16 @@ struct DisplacePoints
   }
 };
 
-// Mesh normals, first step: each displaced polygon's normal, area-weighted (a fan of cross
-// products from corner 0) and oriented as its input normals (the input polygon's normal
-// against the sum of its points' input normals).
+// Mesh normals: each point's normal is the sum of the normals of its displaced polygons,
+// area-weighted (a fan of cross products from corner 0) and each oriented as its input normals
+// (the input polygon's normal against the sum of its points' input normals). The polygons are
+// read through the links in their fixed order, so the bits never depend on the threads; a
+// polygon is computed for each of its points, which costs less than writing and reading back
+// an array of polygon normals.
 template <typename R>
-struct PolygonNormals
+struct MeshNormals
 {
   const Context<R>& C;
-  double* Out;
 
   static void FanSum(const R* pts, const vtkIdType* ids, vtkIdType n, double sum[3])
   {
@@ -720,39 +687,27 @@ struct PolygonNormals
     }
   }
 
-  void operator()(vtkIdType begin, vtkIdType end) const
+  void AddPolygon(vtkIdType cell, double sum[3]) const
   {
     const Context<R>& c = this->C;
-    for (vtkIdType cell = begin; cell < end; ++cell)
+    const vtkIdType* ids = c.Polys->Conn + c.Polys->Offsets[cell];
+    const vtkIdType n = c.Polys->Offsets[cell + 1] - c.Polys->Offsets[cell];
+    double moved[3] = {}, input[3] = {}, normals[3] = {};
+    FanSum(c.OutPoints, ids, n, moved);
+    FanSum(c.Points, ids, n, input);
+    for (vtkIdType k = 0; k < n; ++k)
     {
-      const vtkIdType* ids = c.Polys->Conn + c.Polys->Offsets[cell];
-      const vtkIdType n = c.Polys->Offsets[cell + 1] - c.Polys->Offsets[cell];
-      double moved[3] = {}, input[3] = {}, normals[3] = {};
-      FanSum(c.OutPoints, ids, n, moved);
-      FanSum(c.Points, ids, n, input);
-      for (vtkIdType k = 0; k < n; ++k)
-      {
-        for (int q = 0; q < 3; ++q)
-        {
-          normals[q] += c.Normals[3 * ids[k] + q];
-        }
-      }
-      const double sign = Dot(input, normals) < 0.0 ? -1.0 : 1.0;
       for (int q = 0; q < 3; ++q)
       {
-        this->Out[3 * cell + q] = sign * moved[q];
+        normals[q] += c.Normals[3 * ids[k] + q];
       }
     }
+    const double sign = Dot(input, normals) < 0.0 ? -1.0 : 1.0;
+    for (int q = 0; q < 3; ++q)
+    {
+      sum[q] += sign * moved[q];
+    }
   }
-};
-
-// Mesh normals, second step: each point's normal is the sum of its polygons' (gathered through
-// the links in their fixed order, so the bits never depend on the threads).
-template <typename R>
-struct PointNormals
-{
-  const Context<R>& C;
-  const double* CellNormals;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
@@ -765,14 +720,10 @@ struct PointNormals
       {
         ids[k] = first + k;
         const vtkIdType* cells = this->C.PointLinks->GetCells(ids[k]);
-        const vtkIdType numCells = this->C.PointLinks->GetNcells(ids[k]);
         double sum[3] = { 0.0, 0.0, 0.0 };
-        for (vtkIdType c = 0; c < numCells; ++c)
+        for (vtkIdType c = 0; c < this->C.PointLinks->GetNcells(ids[k]); ++c)
         {
-          for (int q = 0; q < 3; ++q)
-          {
-            sum[q] += this->CellNormals[3 * cells[c] + q];
-          }
+          this->AddPolygon(cells[c], sum);
         }
         for (int q = 0; q < 3; ++q)
         {
@@ -821,7 +772,8 @@ std::vector<vtkIdType> SeamCandidates(const Polygons& polys, vtkIdType numPts)
     }
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const std::uint64_t next = corners[k + 1 < n ? k + 1 : 0], prev = corners[k > 0 ? k - 1 : n - 1];
+      const std::uint64_t next = corners[k + 1 < n ? k + 1 : 0],
+                          prev = corners[k > 0 ? k - 1 : n - 1];
       sum[ids[k]] = (sum[ids[k]] + next - prev) | 1;
     }
   }
@@ -862,7 +814,7 @@ GroupList CoincidentGroups(const R* points, const std::vector<vtkIdType>& ids, d
     {
       // (+0 makes -0 and +0 one key.)
       entries.push_back({ { std::floor(p[0] / cell) + 0.0, std::floor(p[1] / cell) + 0.0,
-                          std::floor(p[2] / cell) + 0.0 },
+                            std::floor(p[2] / cell) + 0.0 },
         static_cast<vtkIdType>(k) });
     }
   }
@@ -1197,10 +1149,25 @@ struct Execution
   {
   }
 
+  static constexpr int Type = std::is_same<R, float>::value ? VTK_FLOAT : VTK_DOUBLE;
+
+  // The values of @a a (null: none) as raw memory of R: @a a's own when it is a plain array of
+  // R, else those of a converted copy.
   const R* Read(vtkDataArray* a)
   {
-    this->Kept.push_back(AsReal<R>(a));
-    return Values<R>(this->Kept.back());
+    if (a && !(a->GetDataType() == Type && a->HasStandardMemoryLayout()))
+    {
+      this->Kept.push_back(NewArray(Type, a->GetName(), a->GetNumberOfComponents(), 0));
+      this->Kept.back()->DeepCopy(a);
+      a = this->Kept.back();
+    }
+    return a ? static_cast<const R*>(a->GetVoidPointer(0)) : nullptr;
+  }
+
+  R* Write(vtkSmartPointer<vtkDataArray>& a, const char* name, int nc)
+  {
+    a = NewArray(Type, name, nc, this->C.NumPoints);
+    return static_cast<R*>(a->GetVoidPointer(0));
   }
 
   // Pass 1 and the seams' mean displacement, with the height map read as its own type.
@@ -1224,10 +1191,9 @@ struct Execution
         MergeSeamPoints(pass, this->Groups);
         if (sawNonFinite)
         {
-          CountNonFinite<T> count{ data, nc, comp, {}, 0 };
-          vtkSMPTools::For(0, static_cast<vtkIdType>(dims[0]) * dims[1], count);
           vtkWarningWithObjectMacro(this->Filter,
-            << count.Total << " height value(s) in component " << comp
+            << CountNonFinite(data, static_cast<vtkIdType>(dims[0]) * dims[1], nc, comp)
+            << " height value(s) in component " << comp
             << " of the height map are NaN or infinite; they are treated as Midlevel ("
             << this->C.Midlevel << ").");
         }
@@ -1246,15 +1212,6 @@ struct Execution
       const double tol = this->Filter->GetSeamTolerance() * diagonal;
       this->Groups = CoincidentGroups(this->C.Points, candidates, std::isfinite(tol) ? tol : 0.0);
     }
-  }
-
-  void MeshNormals()
-  {
-    std::vector<double> cellNormals(3 * static_cast<size_t>(this->Polys->Count));
-    PolygonNormals<R> polygons{ this->C, cellNormals.data() };
-    vtkSMPTools::For(0, this->Polys->Count, polygons);
-    PointNormals<R> points{ this->C, cellNormals.data() };
-    vtkSMPTools::For(0, this->C.NumPoints, points);
   }
 
   void SetUp(vtkDataArray* tcoords, vtkDataArray* dPdu, vtkDataArray* dPdv, vtkDataArray* dNdu,
@@ -1276,18 +1233,15 @@ struct Execution
     c.DNdu = this->Read(dNdu);
     c.DNdv = this->Read(dNdv);
     c.Tangents = this->Read(this->InTangents);
-    this->OutPoints = NewOutputArray<R>("Points", 3, n);
-    c.OutPoints = static_cast<R*>(this->OutPoints->GetVoidPointer(0));
+    c.OutPoints = this->Write(this->OutPoints, "Points", 3);
     if (mode != vtkDisplacementMapFilter::None)
     {
-      this->OutNormals = NewOutputArray<R>(this->InNormals->GetName(), 3, n);
-      c.OutNormals = static_cast<R*>(this->OutNormals->GetVoidPointer(0));
+      c.OutNormals = this->Write(this->OutNormals, this->InNormals->GetName(), 3);
     }
     if (this->InTangents)
     {
       c.TangentsNC = this->InTangents->GetNumberOfComponents();
-      this->OutTangents = NewOutputArray<R>(this->InTangents->GetName(), c.TangentsNC, n);
-      c.OutTangents = static_cast<R*>(this->OutTangents->GetVoidPointer(0));
+      c.OutTangents = this->Write(this->OutTangents, this->InTangents->GetName(), c.TangentsNC);
     }
     this->Polys.reset(new Polygons(this->Input->GetPolys()));
     c.Polys = this->Polys.get();
@@ -1306,24 +1260,16 @@ struct Execution
       vtkSMPTools::For(0, n,
         [&](vtkIdType begin, vtkIdType end)
         {
+          vtkIdType ids[Block];
+          Lanes v[3];
           for (vtkIdType first = begin; first < end; first += Block)
           {
             const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
-            Lanes v[3], length;
-            for (int k = 0; k < count; ++k)
+            std::iota(ids, ids + count, first);
+            c.InputNormals(ids, count, v);
+            for (int k = 0; k < 3 * count; ++k)
             {
-              for (int j = 0; j < 3; ++j)
-              {
-                v[j][k] = c.Normals[3 * (first + k) + j];
-              }
-            }
-            UnitLanes(count, v, length);
-            for (int k = 0; k < count; ++k)
-            {
-              for (int j = 0; j < 3; ++j)
-              {
-                this->UnitNormals[3 * (first + k) + j] = v[j][k];
-              }
+              this->UnitNormals[3 * first + k] = v[k % 3][k / 3];
             }
           }
         });
@@ -1556,8 +1502,8 @@ int vtkDisplacementMapFilter::RequestData(
   {
     used.insert(used.end(), { dNdu, dNdv });
   }
-  const bool allFloat = std::all_of(used.begin(), used.end(),
-    [](vtkDataArray* a) { return !a || a->GetDataType() == VTK_FLOAT; });
+  const bool allFloat = std::all_of(
+    used.begin(), used.end(), [](vtkDataArray* a) { return !a || a->GetDataType() == VTK_FLOAT; });
   auto run = [&](auto precision)
   {
     Execution<decltype(precision)> x(this, input, image, this->InputTangents(input));
@@ -1566,7 +1512,7 @@ int vtkDisplacementMapFilter::RequestData(
     x.Displace();
     if (this->NormalMode == Mesh)
     {
-      x.MeshNormals();
+      vtkSMPTools::For(0, input->GetNumberOfPoints(), MeshNormals<decltype(precision)>{ x.C });
     }
     if (this->NormalMode != None)
     {

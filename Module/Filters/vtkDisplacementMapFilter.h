@@ -30,7 +30,7 @@
  * A 1x1 height map is valid: it is a constant (a 1x1 texture samples to its only texel in
  * every mode), so all points move by the same distance; as that is seldom what was meant,
  * the filter says so in a warning. NaN and infinite heights are
- * treated as Midlevel, with one warning giving their count.
+ * treated as Midlevel; when the surface reads any, one warning gives the map's count of them.
  *
  * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt, n the unit input normal and
  * d = Scale (h - Midlevel). Differentiating p* = p + d n by the product rule gives

@@ -57,7 +57,7 @@ struct Surface
 {
   std::string Name;
   std::function<Vec(double, double)> P, N, Pu, Pv, Nu, Nv; // N unit
-  std::function<double(double, double)> Height; // h(u,v), smooth on the closed surface
+  std::function<double(double, double)> Height;            // h(u,v), smooth on the closed surface
   double Scale = 0.1;
   double Midlevel = 0.5;
   bool Poles = false;

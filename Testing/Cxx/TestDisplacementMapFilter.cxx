@@ -2660,8 +2660,8 @@ TEST(DisplacementMapFilter, NormalDerivativesOnlyWithSurfaceDerivativesInExact)
     SCOPED_TRACE(mode);
     auto all = Displace(withAll, image, mode);
     EXPECT_TRUE(AllFinite(all));
-    EXPECT_EQ(SameOutput(all, Displace(withoutN, image, mode)),
-      mode != vtkDisplacementMapFilter::Exact);
+    EXPECT_EQ(
+      SameOutput(all, Displace(withoutN, image, mode)), mode != vtkDisplacementMapFilter::Exact);
     EXPECT_TRUE(SameOutput(Displace(onlyN, image, mode), Displace(none, image, mode)));
   }
 }

@@ -325,8 +325,8 @@ TEST(DisplacementMapFilterAccuracy, ExactFromNormalDerivativesConverges)
         }
       }
       angles.push_back(worst);
-      std::printf("%-10s Exact dP,dN  U %3d  image %4d x %4d  angle(deg) %10.3e\n",
-        s.Name.c_str(), U, W, W / 2, worst);
+      std::printf("%-10s Exact dP,dN  U %3d  image %4d x %4d  angle(deg) %10.3e\n", s.Name.c_str(),
+        U, W, W / 2, worst);
     }
     for (size_t k = 1; k < angles.size(); ++k)
     {
@@ -357,8 +357,8 @@ TEST(DisplacementMapFilterAccuracy, ExactFromNormalDerivativesOfInwardNormals)
   for (int U : { 32, 64 })
   {
     const Errors e = Measure(s, U, vtkDisplacementMapFilter::Exact, DPAndDN, image);
-    std::printf("inward sphere, Exact dP,dN, U %d: vertex %.3e, angle(deg) %.3e\n", U, e.Vertex,
-      e.Angle);
+    std::printf(
+      "inward sphere, Exact dP,dN, U %d: vertex %.3e, angle(deg) %.3e\n", U, e.Vertex, e.Angle);
     EXPECT_LT(e.Vertex, 1e-6);
     EXPECT_LT(e.Angle, 1e-3);
   }
