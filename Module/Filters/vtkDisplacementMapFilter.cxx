@@ -3,8 +3,6 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -13,7 +11,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLinksTemplate.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -661,9 +658,8 @@ struct DisplacePoints
 // Mesh normals: each point's normal is the sum of the normals of its displaced polygons,
 // area-weighted (a fan of cross products from corner 0) and each oriented as its input normals
 // (the input polygon's normal against the sum of its points' input normals). The polygons are
-// read through the links in their fixed order, so the bits never depend on the threads; a
-// polygon is computed for each of its points, which costs less than writing and reading back
-// an array of polygon normals.
+// read through the links in their fixed order, so the bits never depend on the threads; each
+// polygon's normal is computed for each of its points (no array of polygon normals).
 template <typename R>
 struct MeshNormals
 {
