@@ -3,6 +3,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -13,12 +14,12 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLinksTemplate.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -786,40 +787,24 @@ std::vector<vtkIdType> SeamCandidates(const Polygons& polys, vtkIdType numPts)
 
 // Groups the points @a ids that lie within @a tol of one another (transitively), as
 // (representative, member) pairs sorted, so that every sum over a group has one order. The
-// candidates are sorted by the cell of size @a tol that holds them, and each looks for others
-// in the 27 cells around its own.
+// representative is the group's first point; points that are not finite join no group.
 template <typename R>
 GroupList CoincidentGroups(const R* points, const std::vector<vtkIdType>& ids, double tol)
 {
-  struct Entry
-  {
-    std::array<double, 3> Key;
-    vtkIdType Index;
-    bool operator<(const Entry& o) const
-    {
-      return this->Key < o.Key || (this->Key == o.Key && this->Index < o.Index);
-    }
-  };
-  const double cell = tol > 0.0 ? tol : 1.0;
-  std::vector<Entry> entries;
+  vtkNew<vtkPoints> candidates;
+  candidates->SetDataTypeToDouble();
+  std::vector<vtkIdType> finite; // index into ids of each candidate
   for (size_t k = 0; k < ids.size(); ++k)
   {
-    const R* p = points + 3 * ids[k];
-    // (In double: float's sum of three large coordinates could overflow.)
-    if (std::isfinite(static_cast<double>(p[0]) + p[1] + p[2]))
+    const double p[3] = { points[3 * ids[k]], points[3 * ids[k] + 1], points[3 * ids[k] + 2] };
+    if (std::isfinite(p[0] + p[1] + p[2]))
     {
-      // (+0 makes -0 and +0 one key.)
-      entries.push_back({ { std::floor(p[0] / cell) + 0.0, std::floor(p[1] / cell) + 0.0,
-                            std::floor(p[2] / cell) + 0.0 },
-        static_cast<vtkIdType>(k) });
+      candidates->InsertNextPoint(p);
+      finite.push_back(static_cast<vtkIdType>(k));
     }
   }
-  std::sort(entries.begin(), entries.end());
-  std::vector<vtkIdType> parent(ids.size());
-  for (size_t k = 0; k < ids.size(); ++k)
-  {
-    parent[k] = static_cast<vtkIdType>(k);
-  }
+  std::vector<vtkIdType> parent(finite.size());
+  std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](vtkIdType k)
   {
     while (parent[k] != k)
@@ -828,48 +813,40 @@ GroupList CoincidentGroups(const R* points, const std::vector<vtkIdType>& ids, d
     }
     return k;
   };
-  for (const Entry& e : entries)
+  if (finite.size() > 1)
   {
-    const R* p = points + 3 * ids[e.Index];
-    for (int dx = -1; dx <= 1; ++dx)
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(candidates);
+    vtkNew<vtkStaticPointLocator> locator;
+    locator->SetDataSet(cloud);
+    locator->BuildLocator();
+    vtkNew<vtkIdList> near;
+    for (vtkIdType k = 0; k < static_cast<vtkIdType>(finite.size()); ++k)
     {
-      for (int dy = -1; dy <= 1; ++dy)
+      locator->FindPointsWithinRadius(tol, candidates->GetPoint(k), near);
+      for (vtkIdType q = 0; q < near->GetNumberOfIds(); ++q)
       {
-        for (int dz = -1; dz <= 1; ++dz)
-        {
-          const Entry first{ { e.Key[0] + dx, e.Key[1] + dy, e.Key[2] + dz }, 0 };
-          for (auto it = std::lower_bound(entries.begin(), entries.end(), first);
-               it != entries.end() && it->Key == first.Key && it->Index < e.Index; ++it)
-          {
-            const R* q = points + 3 * ids[it->Index];
-            const double d[3] = { static_cast<double>(p[0]) - q[0],
-              static_cast<double>(p[1]) - q[1], static_cast<double>(p[2]) - q[2] };
-            if (Dot(d, d) <= tol * tol)
-            {
-              const vtkIdType a = find(e.Index), b = find(it->Index);
-              parent[std::max(a, b)] = std::min(a, b);
-            }
-          }
-        }
+        const vtkIdType a = find(k), b = find(near->GetId(q));
+        parent[std::max(a, b)] = std::min(a, b);
       }
     }
   }
   GroupList groups;
-  std::vector<char> inGroup(ids.size(), 0);
-  for (size_t k = 0; k < ids.size(); ++k)
+  std::vector<char> inGroup(finite.size(), 0);
+  for (size_t k = 0; k < finite.size(); ++k)
   {
     const vtkIdType r = find(static_cast<vtkIdType>(k));
     if (r != static_cast<vtkIdType>(k))
     {
-      groups.emplace_back(ids[r], ids[k]);
+      groups.emplace_back(ids[finite[r]], ids[finite[k]]);
       inGroup[r] = 1;
     }
   }
-  for (size_t k = 0; k < ids.size(); ++k)
+  for (size_t k = 0; k < finite.size(); ++k)
   {
     if (inGroup[k])
     {
-      groups.emplace_back(ids[k], ids[k]);
+      groups.emplace_back(ids[finite[k]], ids[finite[k]]);
     }
   }
   std::sort(groups.begin(), groups.end());
