@@ -35,7 +35,40 @@ vtkStandardNewMacro(vtkDisplacementMapFilter);
 namespace
 {
 using namespace vtkSurfaceDetail;
-using Links = vtkStaticCellLinksTemplate<vtkIdType>;
+
+// Each point's polygons: vtkStaticCellLinks with 32-bit ids where they fit (half the memory,
+// which the fits and Mesh normals read all of), else 64-bit ones.
+struct PointPolygons
+{
+  vtkStaticCellLinksTemplate<int> Small;
+  vtkStaticCellLinksTemplate<vtkIdType> Large;
+  bool UseSmall = true;
+
+  // Serial: each point's polygons in one fixed order, so that sums over them do not depend on
+  // the threads.
+  void Build(vtkIdType numPts, vtkIdType numCells, vtkCellArray* cells)
+  {
+    this->UseSmall = std::max(numCells, cells->GetNumberOfConnectivityIds()) < VTK_INT_MAX;
+    if (this->UseSmall)
+    {
+      this->Small.SerialBuildLinks(numPts, numCells, cells);
+    }
+    else
+    {
+      this->Large.SerialBuildLinks(numPts, numCells, cells);
+    }
+  }
+
+  vtkIdType Count(vtkIdType i)
+  {
+    return this->UseSmall ? this->Small.GetNcells(i) : this->Large.GetNcells(i);
+  }
+
+  vtkIdType Cell(vtkIdType i, vtkIdType k)
+  {
+    return this->UseSmall ? this->Small.GetCells(i)[k] : this->Large.GetCells(i)[k];
+  }
+};
 using GroupList = std::vector<std::pair<vtkIdType, vtkIdType>>; // (representative, member)
 
 //------------------------------------------------------------------------------
@@ -279,7 +312,7 @@ struct Context
   double Scale = 1.0;
   double Midlevel = 0.0;
   const Polygons* Polys = nullptr;
-  Links* PointLinks = nullptr; // where the fits or Mesh normals read a point's polygons
+  PointPolygons* PointLinks = nullptr; // where the fits or Mesh normals read them
   // Exact's fits: each point's unit input normal (zero where it has no direction), 3 per point;
   // each point is a neighbour in a dozen fits.
   const double* UnitNormals = nullptr;
@@ -412,11 +445,10 @@ struct Context
     const double* n = this->UnitNormals + 3 * i;
     double ss = 0.0, st = 0.0, tt = 0.0, bp[6] = {}, bn[6] = {};
     double nearest = std::numeric_limits<double>::max(), farthest = 0.0;
-    const vtkIdType* cells = this->PointLinks->GetCells(i);
-    const vtkIdType numCells = this->PointLinks->GetNcells(i);
+    const vtkIdType numCells = this->PointLinks->Count(i);
     for (vtkIdType c = 0; c < numCells; ++c)
     {
-      const vtkIdType cell = cells[c];
+      const vtkIdType cell = this->PointLinks->Cell(i, c);
       for (vtkIdType k = this->Polys->Offsets[cell]; k < this->Polys->Offsets[cell + 1]; ++k)
       {
         const vtkIdType j = this->Polys->Conn[k];
@@ -716,11 +748,10 @@ struct MeshNormals
       for (int k = 0; k < count; ++k)
       {
         ids[k] = first + k;
-        const vtkIdType* cells = this->C.PointLinks->GetCells(ids[k]);
         double sum[3] = { 0.0, 0.0, 0.0 };
-        for (vtkIdType c = 0; c < this->C.PointLinks->GetNcells(ids[k]); ++c)
+        for (vtkIdType c = 0; c < this->C.PointLinks->Count(ids[k]); ++c)
         {
-          this->AddPolygon(cells[c], sum);
+          this->AddPolygon(this->C.PointLinks->Cell(ids[k], c), sum);
         }
         for (int q = 0; q < 3; ++q)
         {
@@ -1107,7 +1138,7 @@ struct Execution
   Context<R> C;
   std::vector<vtkSmartPointer<vtkDataArray>> Kept; // converted inputs, alive while read
   std::unique_ptr<Polygons> Polys;
-  Links PointLinks;
+  PointPolygons PointLinks;
   std::unique_ptr<double[]> UnitNormals;
   GroupList Groups;
   vtkSmartPointer<vtkDataArray> OutPoints, OutNormals, OutTangents;
@@ -1221,9 +1252,7 @@ struct Execution
     if (mode == vtkDisplacementMapFilter::Mesh ||
       FitsDerivatives(mode, this->Input->GetPointData()))
     {
-      // Serial: each point's polygons in one fixed order, so that sums over them do not depend
-      // on the threads.
-      this->PointLinks.SerialBuildLinks(n, this->Polys->Count, this->Polys->Cells);
+      this->PointLinks.Build(n, this->Polys->Count, this->Polys->Cells);
       c.PointLinks = &this->PointLinks;
     }
     if (mode == vtkDisplacementMapFilter::Exact && !c.DNdu)
