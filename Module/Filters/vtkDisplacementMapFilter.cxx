@@ -690,13 +690,15 @@ struct DisplacePoints
 
 // Mesh normals: each point's normal is the sum of the normals of its displaced polygons,
 // area-weighted (a fan of cross products from corner 0) and each oriented as its input normals
-// (the input polygon's normal against the sum of its points' input normals). The polygons are
-// read through the links in their fixed order, so the bits never depend on the threads; each
-// polygon's normal is computed for each of its points (no array of polygon normals).
+// (the input polygon's normal against the sum of its points' input normals: @a Signs, found
+// first for each polygon). The polygons are read through the links in their fixed order, so the
+// bits never depend on the threads; a displaced polygon's normal is computed for each of its
+// points, which needs no array of polygon normals.
 template <typename R>
 struct MeshNormals
 {
   const Context<R>& C;
+  signed char* Signs;
 
   static void FanSum(const R* pts, const vtkIdType* ids, vtkIdType n, double sum[3])
   {
@@ -716,25 +718,35 @@ struct MeshNormals
     }
   }
 
+  void FindSigns(vtkIdType begin, vtkIdType end) const
+  {
+    const Context<R>& c = this->C;
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const vtkIdType* ids = c.Polys->Conn + c.Polys->Offsets[cell];
+      const vtkIdType n = c.Polys->Offsets[cell + 1] - c.Polys->Offsets[cell];
+      double input[3] = {}, normals[3] = {};
+      FanSum(c.Points, ids, n, input);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        for (int q = 0; q < 3; ++q)
+        {
+          normals[q] += c.Normals[3 * ids[k] + q];
+        }
+      }
+      this->Signs[cell] = Dot(input, normals) < 0.0 ? -1 : 1;
+    }
+  }
+
   void AddPolygon(vtkIdType cell, double sum[3]) const
   {
     const Context<R>& c = this->C;
-    const vtkIdType* ids = c.Polys->Conn + c.Polys->Offsets[cell];
-    const vtkIdType n = c.Polys->Offsets[cell + 1] - c.Polys->Offsets[cell];
-    double moved[3] = {}, input[3] = {}, normals[3] = {};
-    FanSum(c.OutPoints, ids, n, moved);
-    FanSum(c.Points, ids, n, input);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      for (int q = 0; q < 3; ++q)
-      {
-        normals[q] += c.Normals[3 * ids[k] + q];
-      }
-    }
-    const double sign = Dot(input, normals) < 0.0 ? -1.0 : 1.0;
+    double moved[3] = {};
+    FanSum(c.OutPoints, c.Polys->Conn + c.Polys->Offsets[cell],
+      c.Polys->Offsets[cell + 1] - c.Polys->Offsets[cell], moved);
     for (int q = 0; q < 3; ++q)
     {
-      sum[q] += sign * moved[q];
+      sum[q] += this->Signs[cell] * moved[q];
     }
   }
 
@@ -1514,7 +1526,11 @@ int vtkDisplacementMapFilter::RequestData(
     x.Displace();
     if (this->NormalMode == Mesh)
     {
-      vtkSMPTools::For(0, input->GetNumberOfPoints(), MeshNormals<decltype(precision)>{ x.C });
+      std::unique_ptr<signed char[]> signs(new signed char[x.Polys->Count]);
+      const MeshNormals<decltype(precision)> mesh{ x.C, signs.get() };
+      vtkSMPTools::For(
+        0, x.Polys->Count, [&](vtkIdType begin, vtkIdType end) { mesh.FindSigns(begin, end); });
+      vtkSMPTools::For(0, input->GetNumberOfPoints(), mesh);
     }
     if (this->NormalMode != None)
     {
