@@ -10,7 +10,8 @@
 #                                [MODULES <module>...] [ARGS <arg>...]
 #                                [BASELINE <name>] [EXPECT_MISMATCH])
 #     A rendering regression test. The program renders and calls
-#     vtkRegressionTestImageThreshold; ctest passes it
+#     SurfaceDetailImageComparison::RegressionTest (Testing/Cxx/SurfaceDetailImageComparison.h,
+#     strict per-pixel comparison); ctest passes it
 #       -V Testing/Baseline/<BASELINE or TestName>.png  -T <build>/Testing/Temporary
 #     A missing baseline fails the test and leaves the candidate image in
 #     <build>/Testing/Temporary. SOURCES builds <exe> (default <TestName>); EXECUTABLE reuses
@@ -79,7 +80,7 @@ function(surfacedetail_add_image_test name)
   endif()
   if(arg_SOURCES)
     _surfacedetail_add_program(${arg_EXECUTABLE} SOURCES ${arg_SOURCES}
-      MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle VTK::TestingRendering
+      MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle VTK::IOImage VTK::ImagingCore
       ${arg_MODULES})
   endif()
   add_test(NAME ${name}

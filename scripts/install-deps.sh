@@ -13,14 +13,14 @@ packages=(
   libjpeg-turbo-progs
   xplanet-images
 
-  # issue 5: the displacement benchmark's time-vs-error plot
+  # the displacement benchmark's time-vs-error plot
   python3-matplotlib
 
   # CI's second build (scripts/test-clang.sh): clang takes the portable fallbacks of the
   # GCC-only vector code
   clang
 )
-# issue 4: node runs the reference MikkTSpace (npm package "mikktspace") in the tests. Only
+# node runs the reference MikkTSpace (npm package "mikktspace") in the tests. Only
 # when the commands are missing: a node from elsewhere (e.g. NodeSource, which bundles npm
 # and conflicts with Debian's npm package) is fine.
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi

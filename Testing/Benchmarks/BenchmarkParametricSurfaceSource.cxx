@@ -3,11 +3,9 @@
 //   vtkPolyDataTangents, both on vtkParametricTorus;
 // - sphere: vtkTexturedSphereSource (points, normals, texture coordinates);
 // - the bound: allocating and writing the same number of output bytes with memset, which
-//   no generator can beat, in ordinary pages, in huge pages, and into memory written before.
+//   no generator can beat, into fresh memory and into memory written before.
 // Sizes are 1M and 4M points; the second argument is the number of threads given to
-// vtkSMPTools::Initialize; for our source the last argument says whether the cache of freed
-// output blocks (vtkSurfaceDetailMemory) is on. See BENCHMARKS.md for the command and the
-// figures.
+// vtkSMPTools::Initialize. See BENCHMARKS.md for the command and the figures.
 
 #include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
@@ -24,8 +22,6 @@
 #include <vtkPolyDataTangents.h>
 #include <vtkSMPTools.h>
 #include <vtkTexturedSphereSource.h>
-
-#include "vtkSurfaceDetailMemory.h"
 
 #include <benchmark/benchmark.h>
 
@@ -46,14 +42,6 @@ void SetThreads(benchmark::State& state)
   vtkSMPTools::Initialize(static_cast<int>(state.range(1)));
 }
 
-// The cache's default limit, or none. Our allocator's cache only ever serves our arrays;
-// VTK's filters allocate with malloc whatever this says.
-constexpr std::size_t DefaultCacheLimit = std::size_t(1) << 30;
-void SetCache(bool on)
-{
-  vtkSurfaceDetailMemory::SetCacheLimit(on ? DefaultCacheLimit : 0);
-}
-
 size_t OutputBytes(vtkPolyData* pd)
 {
   size_t bytes = pd->GetPoints()->GetData()->GetActualMemorySize();
@@ -72,14 +60,11 @@ void Report(benchmark::State& state, vtkPolyData* pd)
 }
 
 // Runs our source on @a function at side x side points with the given arrays (normals and
-// texture coordinates always), re-executing it at every iteration; range(3) = 1: with the
-// cache of freed blocks (the default; each execution reuses the memory of the output it
-// replaces), 0: without (every execution faults in fresh huge pages).
+// texture coordinates always), re-executing it at every iteration.
 void RunSource(
   benchmark::State& state, vtkParametricFunction* function, bool tangents, bool derivatives)
 {
   SetThreads(state);
-  SetCache(state.range(3) != 0);
   const int side = Side(state);
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(function);
@@ -195,7 +180,8 @@ void BM_VTKTexturedSphereSource(benchmark::State& state)
 
 // Bytes per point of each array our source writes: points 12, normals 12, tcoords 8, and
 // 2 triangles = 24 bytes of 32-bit connectivity + 8 of offsets; then tangents 16; then
-// dPdu and dPdv 12 each. range(2) = 0: sphere arrays, 1: + tangents, 2: + derivatives.
+// dPdu, dPdv, dNdu and dNdv 12 each. range(2) = 0: sphere arrays, 1: + tangents,
+// 2: + derivatives.
 std::vector<size_t> ArrayBytesPerPoint(int variant)
 {
   std::vector<size_t> bytes = { 12, 12, 8, 24, 8 };
@@ -205,7 +191,7 @@ std::vector<size_t> ArrayBytesPerPoint(int variant)
   }
   if (variant >= 2)
   {
-    bytes.insert(bytes.end(), { 12, 12 });
+    bytes.insert(bytes.end(), { 12, 12, 12, 12 });
   }
   return bytes;
 }
@@ -214,18 +200,13 @@ std::vector<size_t> ArrayBytesPerPoint(int variant)
 // arrays are), split among the threads. range(3) says where the bytes go:
 // 0 (fresh): new[] at every iteration, as a VTK source's execution makes (4 kB page faults
 //   and the kernel's zeroing included);
-// 1 (reused): the same buffers every time, the bare write bandwidth;
-// 2 (huge): vtkSurfaceDetailMemory::Allocate with the cache off, a fresh 2 MB-aligned
-//   huge-page mapping at every iteration: what our source without the cache must do;
-// 3 (cached): vtkSurfaceDetailMemory::Allocate with the cache on, what our source does by
-//   default (the blocks released at the end of one iteration serve the next).
+// 1 (reused): the same buffers every time, the bare write bandwidth.
 void BM_WriteBound(benchmark::State& state)
 {
   SetThreads(state);
   const int side = Side(state);
   const size_t points = static_cast<size_t>(side) * side;
   const int mode = static_cast<int>(state.range(3));
-  SetCache(mode == 3);
   std::vector<char*> buffers;
   std::vector<size_t> sizes;
   for (size_t perPoint : ArrayBytesPerPoint(static_cast<int>(state.range(2))))
@@ -241,10 +222,6 @@ void BM_WriteBound(benchmark::State& state)
       {
         buffers[a] = new char[sizes[a]];
       }
-      else if (mode >= 2)
-      {
-        buffers[a] = static_cast<char*>(vtkSurfaceDetailMemory::Allocate(sizes[a]));
-      }
       char* data = buffers[a];
       vtkSMPTools::For(0, static_cast<vtkIdType>(sizes[a]), 1 << 20,
         [data](vtkIdType begin, vtkIdType end)
@@ -257,10 +234,6 @@ void BM_WriteBound(benchmark::State& state)
       if (mode == 0)
       {
         delete[] buffer;
-      }
-      else if (mode >= 2)
-      {
-        vtkSurfaceDetailMemory::Release(buffer);
       }
     }
   }
@@ -279,8 +252,8 @@ void BM_WriteBound(benchmark::State& state)
   state.counters["MB"] = static_cast<double>(total) / 1e6;
 }
 
-// points x threads x variant, and for our source cache on/off as a fourth argument.
-void Sizes(benchmark::internal::Benchmark* b, int variants, bool ours)
+// points x threads x variant.
+void Sizes(benchmark::internal::Benchmark* b, int variants)
 {
   for (int points : { 1000000, 4000000 })
   {
@@ -288,15 +261,7 @@ void Sizes(benchmark::internal::Benchmark* b, int variants, bool ours)
     {
       for (int variant = 0; variant < variants; ++variant)
       {
-        if (ours)
-        {
-          b->Args({ points, threads, variant, 1 });
-          b->Args({ points, threads, variant, 0 });
-        }
-        else
-        {
-          b->Args({ points, threads, variant });
-        }
+        b->Args({ points, threads, variant });
       }
     }
   }
@@ -304,22 +269,18 @@ void Sizes(benchmark::internal::Benchmark* b, int variants, bool ours)
 }
 } // namespace
 
-BENCHMARK(BM_SurfaceSourceTorus)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
-BENCHMARK(BM_SurfaceSourceDonut)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
+BENCHMARK(BM_SurfaceSourceTorus)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_SurfaceSourceDonut)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
 BENCHMARK(BM_VTKFunctionSourceAndTangentsTorus)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1, false); });
-BENCHMARK(BM_SurfaceSourceSphere)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
-BENCHMARK(BM_SurfaceSourceVase)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2, true); });
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
+BENCHMARK(BM_SurfaceSourceSphere)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
+BENCHMARK(BM_SurfaceSourceVase)->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 2); });
 BENCHMARK(BM_BezierProfileEvaluate)
   ->Args({ 1000000, 1, 0 })
   ->Args({ 1000000, 1, 1 })
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VTKTexturedSphereSource)
-  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1, false); });
+  ->Apply([](benchmark::internal::Benchmark* b) { Sizes(b, 1); });
 BENCHMARK(BM_WriteBound)
   ->Apply(
     [](benchmark::internal::Benchmark* b)
@@ -330,7 +291,7 @@ BENCHMARK(BM_WriteBound)
         {
           for (int variant : { 0, 1, 2 })
           {
-            for (int mode : { 0, 1, 2, 3 })
+            for (int mode : { 0, 1 })
             {
               b->Args({ points, threads, variant, mode });
             }

@@ -148,6 +148,28 @@ vtkSmartPointer<vtkPolyData> Generate(vtkParametricFunction* f, int U, int V, co
   return source->GetOutput();
 }
 
+// The closed form's unit normal, oriented as the expectation says.
+Vec NormalAt(const Expectation& e, double u, double v)
+{
+  return Scale(Unit(CrossV(DerivU(e.Surface, u, v, e.UBreaks), DerivV(e.Surface, u, v, e.VBreaks))),
+    e.Orientation);
+}
+
+// The change of that normal along u (axis 0) or v (axis 1): differences of the normal
+// itself, not the Weingarten relation the source uses. A step finer than the default keeps
+// the truncation error small where the curvature changes fast (the love pillar's cusp).
+Vec NormalDerivative(const Expectation& e, int axis, double u, double v)
+{
+  Vec d;
+  for (int c = 0; c < 3; ++c)
+  {
+    d[c] = axis == 0
+      ? Derivative1D([&](double x) { return NormalAt(e, x, v)[c]; }, u, e.UBreaks, 2.5e-4)
+      : Derivative1D([&](double y) { return NormalAt(e, u, y)[c]; }, v, e.VBreaks, 2.5e-4);
+  }
+  return d;
+}
+
 // Checks every vertex away from degenerate points; returns how many were checked.
 int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expectation& e)
 {
@@ -160,8 +182,10 @@ int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expecta
   vtkDataArray* tangents = pd->GetArray("Tangents");
   vtkDataArray* dPdu = pd->GetArray("dPdu");
   vtkDataArray* dPdv = pd->GetArray("dPdv");
-  EXPECT_TRUE(normals && tcoords && tangents && dPdu && dPdv);
-  if (!(normals && tcoords && tangents && dPdu && dPdv))
+  vtkDataArray* dNdu = pd->GetArray("dNdu");
+  vtkDataArray* dNdv = pd->GetArray("dNdv");
+  EXPECT_TRUE(normals && tcoords && tangents && dPdu && dPdv && dNdu && dNdv);
+  if (!(normals && tcoords && tangents && dPdu && dPdv && dNdu && dNdv))
   {
     return 0;
   }
@@ -171,7 +195,7 @@ int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expecta
   EXPECT_EQ(tangents->GetNumberOfComponents(), 4);
   EXPECT_EQ(tangents->GetDataType(), VTK_FLOAT);
 
-  double worstPos = 0, worstN = 0, worstT = 0, worstD = 0;
+  double worstPos = 0, worstN = 0, worstT = 0, worstD = 0, worstDN = 0;
   int checked = 0, handednessWrong = 0, tcoordWrong = 0;
   for (int j = 0; j <= V; ++j)
   {
@@ -204,12 +228,28 @@ int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expecta
       worstT = std::max(worstT, Angle(Tuple(tangents, id), tan));
       const double w = DotV(CrossV(n, tan), dPdt) < 0 ? -1.0 : 1.0;
       handednessWrong += tangents->GetComponent(id, 3) != w;
+      // dN/du has the size of |Pu| times a curvature: relative to |Pu| / Length. On a join
+      // where the surface is only C1 the normal has two one-sided derivatives: not compared.
+      const double dnScale = (Norm(pu) + Norm(pv)) / e.Length;
+      auto onBreak = [](const std::vector<double>& breaks, double x)
+      {
+        return std::any_of(
+          breaks.begin(), breaks.end(), [x](double b) { return std::abs(x - b) < 1e-12; });
+      };
+      if (!onBreak(e.UBreaks, u) && !onBreak(e.VBreaks, v))
+      {
+        worstDN =
+          std::max(worstDN, Norm(Sub(Tuple(dNdu, id), NormalDerivative(e, 0, u, v))) / dnScale);
+        worstDN =
+          std::max(worstDN, Norm(Sub(Tuple(dNdv, id), NormalDerivative(e, 1, u, v))) / dnScale);
+      }
     }
   }
   EXPECT_LT(worstPos, e.PositionTolerance * e.Length);
   EXPECT_LT(worstN, 1e-6);
   EXPECT_LT(worstT, 1e-6);
   EXPECT_LT(worstD, 1e-9);
+  EXPECT_LT(worstDN, 1e-6);
   EXPECT_EQ(handednessWrong, 0);
   EXPECT_EQ(tcoordWrong, 0);
   return checked;
@@ -236,13 +276,24 @@ TEST(ParametricSurfaceAccuracy, SphereMatchesSeed004)
   EXPECT_GT(CheckAgainstClosedForm(sphere, 48, 24, e), 40 * 20);
   // The sphere's normal is also P/R exactly: a second, derivative-free truth.
   vtkSmartPointer<vtkPolyData> out = Generate(sphere, 48, 24, e);
-  double worst = 0;
+  // And so its change is dN = dP / R (zero along u at the poles, where dP/du vanishes).
+  double worst = 0, worstDN = 0;
+  vtkPointData* pd = out->GetPointData();
   for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
   {
     const Vec p = Tuple(out->GetPoints()->GetData(), id);
-    worst = std::max(worst, Angle(Tuple(out->GetPointData()->GetNormals(), id), p));
+    worst = std::max(worst, Angle(Tuple(pd->GetNormals(), id), p));
+    const bool pole = id <= 48 || id >= 24 * 49;
+    if (!pole)
+    {
+      worstDN = std::max(worstDN,
+        Norm(Sub(Tuple(pd->GetArray("dNdu"), id), Scale(Tuple(pd->GetArray("dPdu"), id), 0.4))));
+      worstDN = std::max(worstDN,
+        Norm(Sub(Tuple(pd->GetArray("dNdv"), id), Scale(Tuple(pd->GetArray("dPdv"), id), 0.4))));
+    }
   }
   EXPECT_LT(worst, 1e-6);
+  EXPECT_LT(worstDN, 1e-12);
 }
 
 TEST(ParametricSurfaceAccuracy, SpherePolesTakeTheLimit)
@@ -348,6 +399,26 @@ TEST(ParametricSurfaceAccuracy, DonutMatchesSeed000)
     // Seed 000's texture reads the right way round: w = +1 everywhere.
     EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetComponent(id, 3), 1.0);
   }
+  // The unit normal is (cos b cos a, cos b sin a, sin b) with a = 2 pi u, b = 2 pi v, so
+  // dN/du = 2 pi cos b (-sin a, cos a, 0) and dN/dv = 2 pi (-sin b cos a, -sin b sin a, cos b).
+  double worstDN = 0;
+  for (int j = 0; j <= 18; ++j)
+  {
+    for (int i = 0; i <= 36; ++i)
+    {
+      const double a = 2 * Pi * i / 36, b = 2 * Pi * j / 18;
+      const Vec dndu = { -2 * Pi * std::cos(b) * std::sin(a), 2 * Pi * std::cos(b) * std::cos(a),
+        0 };
+      const Vec dndv = { -2 * Pi * std::sin(b) * std::cos(a), -2 * Pi * std::sin(b) * std::sin(a),
+        2 * Pi * std::cos(b) };
+      const vtkIdType id = j * 37 + i;
+      worstDN =
+        std::max(worstDN, Norm(Sub(Tuple(out->GetPointData()->GetArray("dNdu"), id), dndu)));
+      worstDN =
+        std::max(worstDN, Norm(Sub(Tuple(out->GetPointData()->GetArray("dNdv"), id), dndv)));
+    }
+  }
+  EXPECT_LT(worstDN, 1e-12);
 }
 
 TEST(ParametricSurfaceAccuracy, VTKTorusIsOutwardAndMirrored)

@@ -709,83 +709,9 @@ TEST(ParametricSurfaceSource, SubclassOverridingEvaluateTermsIsHonoured)
 
 namespace
 {
-// EvaluateTermsBlock() against EvaluateTerms() point by point, bit for bit, for every run
-// length the source uses (1..64) and random terms of real parameters.
-int CountBlockDifferences(vtkParametricSeparableFunction* f, std::uint64_t seed)
-{
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  constexpr int N = vtkParametricSeparableFunction::MaximumNumberOfTerms;
-  int bad = 0;
-  for (int rep = 0; rep < 3; ++rep)
-  {
-    for (int count = 1; count <= 64; ++count)
-    {
-      double uTerms[N][64], vTerms[N];
-      f->EvaluateVTerms(unit(random), vTerms);
-      for (int k = 0; k < count; ++k)
-      {
-        double t[N];
-        f->EvaluateUTerms(unit(random), t);
-        for (int i = 0; i < f->GetNumberOfUTerms(); ++i)
-        {
-          uTerms[i][k] = t[i];
-        }
-      }
-      const double* u[N];
-      for (int i = 0; i < N; ++i)
-      {
-        u[i] = uTerms[i];
-      }
-      double P[3][64], Du[3][64], Dv[3][64];
-      double* p[3] = { P[0], P[1], P[2] };
-      double* du[3] = { Du[0], Du[1], Du[2] };
-      double* dv[3] = { Dv[0], Dv[1], Dv[2] };
-      f->EvaluateTermsBlock(u, vTerms, count, p, du, dv);
-      for (int k = 0; k < count; ++k)
-      {
-        double point[N], q[3], d[9];
-        for (int i = 0; i < f->GetNumberOfUTerms(); ++i)
-        {
-          point[i] = uTerms[i][k];
-        }
-        f->EvaluateTerms(point, vTerms, q, d);
-        for (int c = 0; c < 3; ++c)
-        {
-          bad += std::memcmp(&q[c], &P[c][k], sizeof(double)) != 0;
-          bad += std::memcmp(&d[c], &Du[c][k], sizeof(double)) != 0;
-          bad += std::memcmp(&d[3 + c], &Dv[c][k], sizeof(double)) != 0;
-        }
-      }
-    }
-  }
-  return bad;
-}
-} // namespace
-
-TEST(ParametricSurfaceSource, EvaluateTermsBlockIsEvaluateTermsBitForBit)
-{
-  vtkNew<vtkParametricSphere> sphere;
-  sphere->SetRadius(1.7);
-  vtkNew<vtkParametricDonut> donut;
-  donut->SetRingRadius(1.3);
-  donut->SetCrossSectionRadius(0.45);
-  vtkNew<vtkParametricRevolution> vase;
-  vtkNew<vtkParametricRevolution> vaseByArcLength;
-  vaseByArcLength->GetProfile()->ArcLengthParameterizationOn();
-  EXPECT_EQ(CountBlockDifferences(sphere, 1), 0);
-  EXPECT_EQ(CountBlockDifferences(donut, 2), 0);
-  EXPECT_EQ(CountBlockDifferences(vase, 3), 0);
-  EXPECT_EQ(CountBlockDifferences(vaseByArcLength, 4), 0);
-}
-
-namespace
-{
 vtkSmartPointer<vtkParametricSurfaceSource> BigFloatDonut(vtkParametricDonut* donut)
 {
-  // 1000 x 701 points of 48 bytes (float points, normals, texture coordinates, tangents)
-  // and 1.4M triangles: 34 MB of point arrays and 22 MB of connectivity, above the 8 MB
-  // from which the source writes with streaming stores, and many blocks of 64 points.
+  // 1000 x 701 points and 1.4M triangles: many grains of every thread.
   auto source = MakeSource(donut, 999, 700);
   source->GenerateDerivativesOff();
   return source;

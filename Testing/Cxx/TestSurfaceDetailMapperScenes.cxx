@@ -4,14 +4,21 @@
 //   --technique none|normal|bump|bump-tangent-free|parallax
 //   --surface rectangle|sphere|torus|vase
 //   --view head-on|oblique                  --light headlight|positional|spot|lightkit
+//   --mutation none|light-10|flipped-maps|half-scale|flipped-handedness
+// A mutation makes one kind of mistake on purpose (the light turned by 10 degrees about the
+// camera's up axis, the height and normal maps upside down, BumpScale and DepthScale halved,
+// the tangents' handedness w negated): the tests that use one expect the comparison with the
+// right picture to fail.
 // The bricks are a procedural height field (bricks at height 1, mortar joints at 0 with a
 // bevel), a colour texture of the same layout, and the normal map vtkHeightMapToNormalMap
 // makes from the heights, so all techniques show the same raised bricks.
 
+#include "SurfaceDetailImageComparison.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkDataArray.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
@@ -23,8 +30,8 @@
 #include <vtkParametricRevolution.h>
 #include <vtkParametricSphere.h>
 #include <vtkParametricSurfaceSource.h>
+#include <vtkPointData.h>
 #include <vtkProperty.h>
-#include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -114,6 +121,23 @@ vtkSmartPointer<vtkImageData> BrickColours()
   return image;
 }
 
+// The image with its rows in reverse order: a map loaded upside down.
+vtkSmartPointer<vtkImageData> FlippedRows(vtkImageData* image)
+{
+  auto flipped = vtkSmartPointer<vtkImageData>::New();
+  flipped->DeepCopy(image);
+  vtkDataArray* in = image->GetPointData()->GetScalars();
+  vtkDataArray* out = flipped->GetPointData()->GetScalars();
+  for (int j = 0; j < TextureSize; ++j)
+  {
+    for (int i = 0; i < TextureSize; ++i)
+    {
+      out->SetTuple(j * TextureSize + i, in->GetTuple((TextureSize - 1 - j) * TextureSize + i));
+    }
+  }
+  return flipped;
+}
+
 vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
 {
   auto texture = vtkSmartPointer<vtkTexture>::New();
@@ -142,6 +166,13 @@ int main(int argc, char* argv[])
   const std::string surface = Arg(argc, argv, "--surface", "rectangle");
   const std::string view = Arg(argc, argv, "--view", "head-on");
   const std::string lightName = Arg(argc, argv, "--light", "headlight");
+  const std::string mutation = Arg(argc, argv, "--mutation", "none");
+  if (mutation != "none" && mutation != "light-10" && mutation != "flipped-maps" &&
+    mutation != "half-scale" && mutation != "flipped-handedness")
+  {
+    std::cerr << "unknown mutation " << mutation << "\n";
+    return 1;
+  }
 
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetUResolution(64);
@@ -183,6 +214,19 @@ int main(int argc, char* argv[])
     return 1;
   }
   source->Update();
+  if (mutation == "flipped-handedness")
+  {
+    vtkDataArray* tangents = source->GetOutput()->GetPointData()->GetArray("Tangents");
+    for (vtkIdType id = 0; id < tangents->GetNumberOfTuples(); ++id)
+    {
+      tangents->SetComponent(id, 3, -tangents->GetComponent(id, 3));
+    }
+  }
+  if (mutation == "half-scale")
+  {
+    depth *= 0.5;
+    strength *= 0.5;
+  }
 
   auto heights = BrickHeights();
   vtkNew<vtkHeightMapToNormalMap> toNormals;
@@ -194,8 +238,10 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkSurfaceDetailMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
-  mapper->SetNormalMap(MakeTexture(toNormals->GetOutput()));
-  mapper->SetHeightMap(MakeTexture(heights));
+  const bool flip = mutation == "flipped-maps";
+  vtkSmartPointer<vtkImageData> normalMap = toNormals->GetOutput();
+  mapper->SetNormalMap(MakeTexture(flip ? FlippedRows(normalMap) : normalMap));
+  mapper->SetHeightMap(MakeTexture(flip ? FlippedRows(heights) : heights));
   mapper->SetBumpScale(strength);
   mapper->SetDifferencesToCentral();
   mapper->SetDepthScale(depth);
@@ -272,6 +318,24 @@ int main(int argc, char* argv[])
       centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
       position[k] = centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
     }
+    if (mutation == "light-10")
+    {
+      // The light turned by 10 degrees about the camera's up axis through the centre.
+      const double angle = vtkMath::RadiansFromDegrees(10.0);
+      double offset[3], rotated[3], across[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        offset[k] = position[k] - centre[k];
+      }
+      vtkMath::Cross(up, offset, across);
+      const double along = vtkMath::Dot(up, offset);
+      for (int k = 0; k < 3; ++k)
+      {
+        rotated[k] = std::cos(angle) * offset[k] + std::sin(angle) * across[k] +
+          (1 - std::cos(angle)) * along * up[k];
+        position[k] = centre[k] + rotated[k];
+      }
+    }
     light->SetPosition(position);
     light->SetFocalPoint(centre);
     renderer->AddLight(light);
@@ -286,8 +350,8 @@ int main(int argc, char* argv[])
   window->AddRenderer(renderer);
   window->Render();
 
-  const int result = vtkRegressionTestImageThreshold(window, 0.05);
-  if (result == vtkRegressionTester::DO_INTERACTOR)
+  const int result = SurfaceDetailImageComparison::RegressionTest(argc, argv, window);
+  if (result == SurfaceDetailImageComparison::Interact)
   {
     // Only on request (-I): an interactor opens one more X connection per test.
     vtkNew<vtkRenderWindowInteractor> interactor;

@@ -11,11 +11,12 @@
 #include <vtkPlaneSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
+
+#include "SurfaceDetailImageComparison.h"
 
 /// Renders @a texture (its input and interpolation set by the caller) and returns the
 /// exit code of main(): 0 when the picture matches the baseline.
@@ -53,8 +54,8 @@ inline int RenderTexturedSquareAndCompare(int argc, char* argv[], vtkTexture* te
   interactor->SetRenderWindow(window);
   window->Render();
 
-  const int result = vtkRegressionTestImageThreshold(window, 0.05);
-  if (result == vtkRegressionTester::DO_INTERACTOR)
+  const int result = SurfaceDetailImageComparison::RegressionTest(argc, argv, window);
+  if (result == SurfaceDetailImageComparison::Interact)
   {
     interactor->Start();
   }

@@ -17,21 +17,13 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
-#include "vtkSurfaceDetailMemory.h"
-#include "vtkSurfaceDetailVectorize.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <string>
-#include <type_traits>
 #include <vector>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 vtkStandardNewMacro(vtkParametricSurfaceSource);
 
@@ -135,61 +127,90 @@ struct Grid
     }
   }
 
-  /**
-   * The function at @a count consecutive columns from @a col of row @a j, in structure-of-
-   * arrays form: P[c][k] is component c of the point in column col + k, Du and Dv its
-   * unit-square derivatives. Separable functions work from the cached terms.
-   */
-  void EvaluateBlock(vtkIdType col, vtkIdType j, int count, double* const* P, double* const* Du,
-    double* const* Dv) const
+  // The function and its unit-square derivatives at column @a col of row @a j. Separable
+  // functions work from the terms of the column and the row.
+  void EvaluatePoint(vtkIdType col, vtkIdType j, double p[3], double du[3], double dv[3]) const
+  {
+    if (!this->Separable)
+    {
+      this->Evaluate(this->UDomain[col], this->VDomain[j], p, du, dv);
+      return;
+    }
+    double uTerms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
+    this->ColumnTerms(col, uTerms);
+    double d[9];
+    this->Separable->EvaluateTerms(uTerms, this->VTerms.data() + j * this->NumVTerms, p, d);
+    for (int c = 0; c < 3; ++c)
+    {
+      du[c] = d[c] * this->UExtent;
+      dv[c] = d[3 + c] * this->VExtent;
+    }
+  }
+
+  // The unit-square second derivatives d2P/du2, d2P/dudv, d2P/dv2 at column @a col of row
+  // @a j: in closed form where the function gives them, otherwise by differences of the
+  // first derivatives.
+  void SecondDerivatives(vtkIdType col, vtkIdType j, double d2[9]) const
   {
     if (this->Separable)
     {
-      const double* uTerms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
-      for (int t = 0; t < this->NumUTerms; ++t)
+      double uTerms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
+      this->ColumnTerms(col, uTerms);
+      if (this->Separable->EvaluateSecondDerivatives(
+            uTerms, this->VTerms.data() + j * this->NumVTerms, d2))
       {
-        uTerms[t] = this->UTerms.data() + t * (this->U + 1) + col;
-      }
-      this->Separable->EvaluateTermsBlock(
-        uTerms, this->VTerms.data() + j * this->NumVTerms, count, P, Du, Dv);
-      // Our own functions live on the unit square, where the factors are 1 (exact anyway).
-      if (this->UExtent != 1.0 || this->VExtent != 1.0)
-      {
-        for (int c = 0; c < 3; ++c)
+        const double scale[3] = { this->UExtent * this->UExtent, this->UExtent * this->VExtent,
+          this->VExtent * this->VExtent };
+        for (int k = 0; k < 9; ++k)
         {
-          for (int k = 0; k < count; ++k)
-          {
-            Du[c][k] *= this->UExtent;
-            Dv[c][k] *= this->VExtent;
-          }
+          d2[k] *= scale[k / 3];
         }
+        return;
+      }
+    }
+    double ignored[3];
+    this->DifferenceOfDerivatives(0, this->UUnit[col], this->VUnit[j], d2, d2 + 3);
+    this->DifferenceOfDerivatives(1, this->UUnit[col], this->VUnit[j], ignored, d2 + 6);
+  }
+
+  // The change of Du and Dv along @a axis at unit parameters (u, v): a second-order
+  // difference of the first derivatives, central inside the domain and one-sided at its
+  // edges. Truncation O(h^2) and rounding O(eps/h) both stay near 1e-8 relative.
+  void DifferenceOfDerivatives(int axis, double u, double v, double dDu[3], double dDv[3]) const
+  {
+    constexpr double h = 1e-4;
+    auto at = [&](double offset, double a[3], double b[3])
+    { this->Derivatives(axis == 0 ? u + offset : u, axis == 1 ? v + offset : v, a, b); };
+    const double x = axis == 0 ? u : v;
+    double a1[3], b1[3], a2[3], b2[3];
+    if (x - h >= 0.0 && x + h <= 1.0)
+    {
+      at(h, a1, b1);
+      at(-h, a2, b2);
+      for (int k = 0; k < 3; ++k)
+      {
+        dDu[k] = (a1[k] - a2[k]) / (2.0 * h);
+        dDv[k] = (b1[k] - b2[k]) / (2.0 * h);
       }
       return;
     }
-    for (int k = 0; k < count; ++k)
+    const double step = x + 2.0 * h <= 1.0 ? h : -h;
+    double a0[3], b0[3];
+    at(0.0, a0, b0);
+    at(step, a1, b1);
+    at(2.0 * step, a2, b2);
+    for (int k = 0; k < 3; ++k)
     {
-      double p[3], du[3], dv[3];
-      if (this->HasDerivatives)
-      {
-        double uvw[3] = { this->UDomain[col + k], this->VDomain[j], 0.0 };
-        double d[9];
-        this->Function->Evaluate(uvw, p, d);
-        for (int c = 0; c < 3; ++c)
-        {
-          du[c] = d[c] * this->UExtent;
-          dv[c] = d[3 + c] * this->VExtent;
-        }
-      }
-      else
-      {
-        this->Evaluate(this->UDomain[col + k], this->VDomain[j], p, du, dv);
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        P[c][k] = p[c];
-        Du[c][k] = du[c];
-        Dv[c][k] = dv[c];
-      }
+      dDu[k] = (4.0 * a1[k] - a2[k] - 3.0 * a0[k]) / (2.0 * step);
+      dDv[k] = (4.0 * b1[k] - b2[k] - 3.0 * b0[k]) / (2.0 * step);
+    }
+  }
+
+  void ColumnTerms(vtkIdType col, double* uTerms) const
+  {
+    for (int t = 0; t < this->NumUTerms; ++t)
+    {
+      uTerms[t] = this->UTerms[t * (this->U + 1) + col];
     }
   }
 
@@ -310,220 +331,46 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
   return found;
 }
 
-// Points handled together: a run of one row, in structure-of-arrays scratch on the stack.
-constexpr int BlockSize = 64;
-
-// Outputs bigger than this are written with streaming (non-temporal) stores: they do not fit
-// in the caches anyway, and ordinary stores would first read every line they write.
-constexpr std::size_t StreamingBytes = std::size_t(8) << 20;
-
-#if defined(__SSE2__)
-inline bool Aligned16(const void* p)
+// The change of the unit normal along u and v (Weingarten): with m = Du x Dv and
+// n = orientation m / |m|, dn = orientation (dm - (n . dm) n) / |m|, where
+// dm/du = Duu x Dv + Du x Duv and dm/dv = Duv x Dv + Du x Dvv.
+void NormalDerivatives(const double du[3], const double dv[3], const double d2[9],
+  const double n[3], double orientation, double dndu[3], double dndv[3])
 {
-  return (reinterpret_cast<std::uintptr_t>(p) & 15) == 0;
-}
-
-inline void Store(float* p, __m128 v, bool stream)
-{
-  if (stream)
+  double m[3];
+  Cross(du, dv, m);
+  const double scale = orientation / std::sqrt(Dot(m, m));
+  const double* duu = d2;
+  const double* duv = d2 + 3;
+  const double* dvv = d2 + 6;
+  double a[3], b[3], dmu[3], dmv[3];
+  Cross(duu, dv, a);
+  Cross(du, duv, b);
+  for (int k = 0; k < 3; ++k)
   {
-    _mm_stream_ps(p, v);
+    dmu[k] = a[k] + b[k];
   }
-  else
+  Cross(duv, dv, a);
+  Cross(du, dvv, b);
+  for (int k = 0; k < 3; ++k)
   {
-    _mm_storeu_ps(p, v);
+    dmv[k] = a[k] + b[k];
   }
-}
-#endif
-
-// out[C * k + c] = in[c][k] for a run of points: the structure-of-arrays scratch into the
-// interleaved VTK array; @a stream asks for streaming stores where the output allows.
-template <typename Out, int C>
-void Interleave(int count, const double (*in)[BlockSize], Out* __restrict out, bool stream)
-{
-  const double* __restrict x = in[0];
-  const double* __restrict y = in[1];
-  const double* __restrict z = in[2];
-  const double* __restrict w = in[C - 1];
-  auto one = [&](int k)
+  const double nu = Dot(n, dmu);
+  const double nv = Dot(n, dmv);
+  for (int k = 0; k < 3; ++k)
   {
-    out[C * k] = static_cast<Out>(x[k]);
-    out[C * k + 1] = static_cast<Out>(y[k]);
-    out[C * k + 2] = static_cast<Out>(z[k]);
-    if (C == 4)
-    {
-      out[C * k + 3] = static_cast<Out>(w[k]);
-    }
-  };
-  int k = 0;
-#if defined(__SSE2__)
-  // Float output, four points at a time: the compiler leaves this transpose scalar (eight
-  // or more narrow stores per four points). The conversion is the same cvtpd2ps.
-  if constexpr (std::is_same<Out, float>::value)
-  {
-    float* o = out;
-    for (; stream && k < count && k < 4 && !Aligned16(o + C * k); ++k)
-    {
-      one(k);
-    }
-    const bool streaming = stream && Aligned16(o + C * k);
-    auto four = [](const double* v)
-    { return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(v)), _mm_cvtpd_ps(_mm_loadu_pd(v + 2))); };
-    for (; k + 4 <= count; k += 4)
-    {
-      __m128 a = four(x + k), b = four(y + k), c = four(z + k);
-      if constexpr (C == 4)
-      {
-        __m128 d = four(w + k);
-        _MM_TRANSPOSE4_PS(a, b, c, d);
-        Store(o + 4 * k, a, streaming);
-        Store(o + 4 * k + 4, b, streaming);
-        Store(o + 4 * k + 8, c, streaming);
-        Store(o + 4 * k + 12, d, streaming);
-      }
-      else
-      {
-        const __m128 ab01 = _mm_unpacklo_ps(a, b); // a0 b0 a1 b1
-        const __m128 ab23 = _mm_unpackhi_ps(a, b); // a2 b2 a3 b3
-        const __m128 c0a1 = _mm_shuffle_ps(c, ab01, _MM_SHUFFLE(2, 2, 0, 0));
-        const __m128 b1c1 = _mm_shuffle_ps(ab01, c, _MM_SHUFFLE(1, 1, 3, 3));
-        const __m128 c2a3 = _mm_shuffle_ps(c, ab23, _MM_SHUFFLE(2, 2, 2, 2));
-        const __m128 b3c3 = _mm_shuffle_ps(ab23, c, _MM_SHUFFLE(3, 3, 3, 3));
-        Store(o + 3 * k, _mm_shuffle_ps(ab01, c0a1, _MM_SHUFFLE(2, 0, 1, 0)), streaming);
-        Store(o + 3 * k + 4, _mm_shuffle_ps(b1c1, ab23, _MM_SHUFFLE(1, 0, 2, 0)), streaming);
-        Store(o + 3 * k + 8, _mm_shuffle_ps(c2a3, b3c3, _MM_SHUFFLE(2, 0, 2, 0)), streaming);
-      }
-    }
-  }
-#else
-  (void)stream;
-#endif
-  for (; k < count; ++k)
-  {
-    one(k);
+    dndu[k] = scale * (dmu[k] - nu * n[k]);
+    dndv[k] = scale * (dmv[k] - nv * n[k]);
   }
 }
 
-// Texture coordinates (s[k], t) of a run of one row.
-void InterleaveTCoords(
-  int count, const float* __restrict s, float t, float* __restrict out, bool stream)
+template <typename Out>
+void Store3(const double v[3], Out* out)
 {
-  int k = 0;
-#if defined(__SSE2__)
-  for (; stream && k < count && k < 2 && !Aligned16(out + 2 * k); ++k)
-  {
-    out[2 * k] = s[k];
-    out[2 * k + 1] = t;
-  }
-  const bool streaming = stream && Aligned16(out + 2 * k);
-  const __m128 tt = _mm_set1_ps(t);
-  for (; k + 4 <= count; k += 4)
-  {
-    const __m128 ss = _mm_loadu_ps(s + k);
-    Store(out + 2 * k, _mm_unpacklo_ps(ss, tt), streaming);
-    Store(out + 2 * k + 4, _mm_unpackhi_ps(ss, tt), streaming);
-  }
-#else
-  (void)stream;
-#endif
-  for (; k < count; ++k)
-  {
-    out[2 * k] = s[k];
-    out[2 * k + 1] = t;
-  }
-}
-
-// nonFinite[k] becomes NaN when point k's sum of coordinates or of derivatives is not finite.
-void CheckFinite(int count, const double* __restrict px, const double* __restrict py,
-  const double* __restrict pz, const double* __restrict dux, const double* __restrict duy,
-  const double* __restrict duz, const double* __restrict dvx, const double* __restrict dvy,
-  const double* __restrict dvz, double* __restrict nonFinite)
-{
-  for (int k = 0; k < count; ++k)
-  {
-    const double sp = px[k] + py[k] + pz[k];
-    const double sd = dux[k] + duy[k] + duz[k] + dvx[k] + dvy[k] + dvz[k];
-    nonFinite[k] += (sp - sp) + (sd - sd);
-  }
-}
-
-/**
- * CheckFinite, and the unit normals (N = +-(Du x Dv)/|Du x Dv|) and tangents of a run of
- * points, in one pass over the derivatives. regular[k] is 1 where the derivatives of point
- * k span a plane (the tests and operations of RegularNormal, in its order, so the bits are
- * the same); there N is orthogonal to Du already and the shared frame
- * (vtkSurfaceDetail::MakeTangentFrame) reduces to T = Du/|Du| times the sign of the s
- * repeat, with w = cross(N,T).dP/dt of constant sign. Elsewhere regular[k] is 0 and the
- * values are meaningless: the caller replaces them. Restrict parameters rather than locals:
- * the compiler does not check that many pointers at run time and would stay scalar.
- * Always inlined, so that each target clone below vectorises it for its own instruction set.
- */
-template <bool WithTangents>
-VTK_ALWAYS_INLINE void CheckFiniteAndFramesRun(int count, const double* __restrict px,
-  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
-  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
-  const double* __restrict dvy, const double* __restrict dvz, double orientation,
-  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
-  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
-  double* __restrict t1, double* __restrict t2, double* __restrict t3)
-{
-  for (int k = 0; k < count; ++k)
-  {
-    const double ax = dux[k], ay = duy[k], az = duz[k];
-    const double bx = dvx[k], by = dvy[k], bz = dvz[k];
-    const double sp = px[k] + py[k] + pz[k];
-    const double sd = ax + ay + az + bx + by + bz;
-    nonFinite[k] += (sp - sp) + (sd - sd);
-    const double nx = ay * bz - az * by;
-    const double ny = az * bx - ax * bz;
-    const double nz = ax * by - ay * bx;
-    const double a2 = ax * ax + ay * ay + az * az;
-    const double b2 = bx * bx + by * by + bz * bz;
-    const double c2 = nx * nx + ny * ny + nz * nz;
-    // A double flag: a mask of another width would stop the vectorisation.
-    const bool ok = (c2 > DegenerateTolerance2 * a2 * b2) & (a2 > DegenerateTolerance2 * b2) &
-      (b2 > DegenerateTolerance2 * a2) & (c2 - c2 == 0.0);
-    regular[k] = ok ? 1.0 : 0.0;
-    const double normalScale = orientation / std::sqrt(c2);
-    n0[k] = nx * normalScale;
-    n1[k] = ny * normalScale;
-    n2[k] = nz * normalScale;
-    if (WithTangents)
-    {
-      const double tangentScale = tangentSign / std::sqrt(a2);
-      t0[k] = ax * tangentScale;
-      t1[k] = ay * tangentScale;
-      t2[k] = az * tangentScale;
-      t3[k] = handedness;
-    }
-  }
-}
-
-// The frame loop is bound by square roots and divisions, so it also has an AVX2 build
-// (vtkSurfaceDetailVectorize.h: the same bits either way). Two plain functions rather than
-// one template: clang rejects target_clones on templates.
-SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndNormals(int count, const double* __restrict px,
-  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
-  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
-  const double* __restrict dvy, const double* __restrict dvz, double orientation,
-  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
-  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
-  double* __restrict t1, double* __restrict t2, double* __restrict t3)
-{
-  CheckFiniteAndFramesRun<false>(count, px, py, pz, dux, duy, duz, dvx, dvy, dvz, orientation,
-    tangentSign, handedness, nonFinite, regular, n0, n1, n2, t0, t1, t2, t3);
-}
-
-SURFACEDETAIL_WIDE_VECTORS void CheckFiniteAndFrames(int count, const double* __restrict px,
-  const double* __restrict py, const double* __restrict pz, const double* __restrict dux,
-  const double* __restrict duy, const double* __restrict duz, const double* __restrict dvx,
-  const double* __restrict dvy, const double* __restrict dvz, double orientation,
-  double tangentSign, double handedness, double* __restrict nonFinite, double* __restrict regular,
-  double* __restrict n0, double* __restrict n1, double* __restrict n2, double* __restrict t0,
-  double* __restrict t1, double* __restrict t2, double* __restrict t3)
-{
-  CheckFiniteAndFramesRun<true>(count, px, py, pz, dux, duy, duz, dvx, dvy, dvz, orientation,
-    tangentSign, handedness, nonFinite, regular, n0, n1, n2, t0, t1, t2, t3);
+  out[0] = static_cast<Out>(v[0]);
+  out[1] = static_cast<Out>(v[1]);
+  out[2] = static_cast<Out>(v[2]);
 }
 
 // Points and point arrays of one piece; each point is computed from its own (i, j) alone,
@@ -532,13 +379,14 @@ template <typename Real>
 struct PointWorker
 {
   const Grid& G;
-  Real* Points;
-  float* Normals;
-  float* TCoords;
-  float* Tangents;
-  Real* DPdu;
-  Real* DPdv;
-  bool Stream = false;                    // output too big for the caches: streaming stores
+  Real* Points = nullptr;
+  float* Normals = nullptr;
+  float* TCoords = nullptr;
+  float* Tangents = nullptr;
+  Real* DPdu = nullptr;
+  Real* DPdv = nullptr;
+  Real* DNdu = nullptr;
+  Real* DNdv = nullptr;
   vtkSMPThreadLocal<vtkIdType> Arbitrary; // points with an arbitrary frame
   vtkSMPThreadLocal<unsigned char> NonFinite;
 
@@ -558,184 +406,88 @@ struct PointWorker
     const Grid& g = this->G;
     const vtkIdType rowLength = g.U + 1;
     vtkIdType& arbitrary = this->Arbitrary.Local();
-    const bool frame = this->Normals || this->Tangents;
-    // Every loop over a run below has unit stride and no branch, so the compiler
-    // vectorises it.
-    double blockP[3][BlockSize], blockDu[3][BlockSize], blockDv[3][BlockSize];
-    double blockN[3][BlockSize], blockT[4][BlockSize];
-    double regular[BlockSize]; // 1: regular point, 0: take the limit frame
-    double* P[3] = { blockP[0], blockP[1], blockP[2] };
-    double* Du[3] = { blockDu[0], blockDu[1], blockDu[2] };
-    double* Dv[3] = { blockDv[0], blockDv[1], blockDv[2] };
-    // Lane k becomes NaN once a sum below is not finite; kept per lane, because a running
-    // floating-point sum would not vectorise.
-    double nonFinite[BlockSize] = {};
-    for (vtkIdType id = begin; id < end;)
+    unsigned char& nonFinite = this->NonFinite.Local();
+    const bool frame = this->Normals || this->Tangents || this->DNdu;
+    for (vtkIdType id = begin; id < end; ++id)
     {
       const vtkIdType col = id % rowLength;
       const vtkIdType j = g.Row0 + id / rowLength;
-      const int count =
-        static_cast<int>(std::min<vtkIdType>({ BlockSize, rowLength - col, end - id }));
-      g.EvaluateBlock(col, j, count, P, Du, Dv);
-      if (frame)
+      double p[3], du[3], dv[3];
+      g.EvaluatePoint(col, j, p, du, dv);
+      const double sum = p[0] + p[1] + p[2] + du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2];
+      if (!std::isfinite(sum))
       {
-        (this->Tangents ? CheckFiniteAndFrames : CheckFiniteAndNormals)(count, blockP[0], blockP[1],
-          blockP[2], blockDu[0], blockDu[1], blockDu[2], blockDv[0], blockDv[1], blockDv[2],
-          g.Orientation, g.TangentSign, g.Handedness, nonFinite, regular, blockN[0], blockN[1],
-          blockN[2], blockT[0], blockT[1], blockT[2], blockT[3]);
-        for (int k = 0; k < count; ++k)
-        {
-          if (regular[k] != 0.0)
-          {
-            continue;
-          }
-          const double du[3] = { blockDu[0][k], blockDu[1][k], blockDu[2][k] };
-          const double dv[3] = { blockDv[0][k], blockDv[1][k], blockDv[2][k] };
-          double n[3], t[4];
-          if (!DegenerateFrame(
-                g, g.UUnit[col + k], g.VUnit[j], du, dv, n, this->Tangents ? t : nullptr))
-          {
-            ++arbitrary;
-          }
-          for (int c = 0; c < 3; ++c)
-          {
-            blockN[c][k] = n[c];
-          }
-          if (this->Tangents)
-          {
-            for (int c = 0; c < 4; ++c)
-            {
-              blockT[c][k] = t[c];
-            }
-          }
-        }
+        nonFinite = 1;
+        continue;
       }
-      else
-      {
-        CheckFinite(count, blockP[0], blockP[1], blockP[2], blockDu[0], blockDu[1], blockDu[2],
-          blockDv[0], blockDv[1], blockDv[2], nonFinite);
-      }
-      Interleave<Real, 3>(count, blockP, this->Points + 3 * id, this->Stream);
+      Store3(p, this->Points + 3 * id);
       if (this->DPdu)
       {
-        Interleave<Real, 3>(count, blockDu, this->DPdu + 3 * id, this->Stream);
-        Interleave<Real, 3>(count, blockDv, this->DPdv + 3 * id, this->Stream);
+        Store3(du, this->DPdu + 3 * id);
+        Store3(dv, this->DPdv + 3 * id);
       }
       if (this->TCoords)
       {
-        InterleaveTCoords(count, g.S.data() + col, g.T[j], this->TCoords + 2 * id, this->Stream);
+        this->TCoords[2 * id] = g.S[col];
+        this->TCoords[2 * id + 1] = g.T[j];
+      }
+      if (!frame)
+      {
+        continue;
+      }
+      double n[3], t[4], a2;
+      const bool regular = RegularNormal(du, dv, g.Orientation, n, a2);
+      if (regular)
+      {
+        // N is orthogonal to Du already, so the shared frame (MakeTangentFrame) reduces to
+        // T = Du/|Du| times the sign of the s repeat, with a handedness that is constant
+        // wherever the derivatives span a plane.
+        const double tangentScale = g.TangentSign / std::sqrt(a2);
+        t[0] = du[0] * tangentScale;
+        t[1] = du[1] * tangentScale;
+        t[2] = du[2] * tangentScale;
+        t[3] = g.Handedness;
+      }
+      else if (!DegenerateFrame(g, g.UUnit[col], g.VUnit[j], du, dv, n, t))
+      {
+        ++arbitrary;
       }
       if (this->Normals)
       {
-        Interleave<float, 3>(count, blockN, this->Normals + 3 * id, this->Stream);
+        Store3(n, this->Normals + 3 * id);
       }
       if (this->Tangents)
       {
-        Interleave<float, 4>(count, blockT, this->Tangents + 4 * id, this->Stream);
+        Store3(t, this->Tangents + 4 * id);
+        this->Tangents[4 * id + 3] = static_cast<float>(t[3]);
       }
-      id += count;
-    }
-#if defined(__SSE2__)
-    if (this->Stream)
-    {
-      // Streaming stores are weakly ordered: make them visible before the threads join.
-      _mm_sfence();
-    }
-#endif
-    double anyNonFinite = 0.0;
-    for (double lane : nonFinite)
-    {
-      anyNonFinite += lane;
-    }
-    if (anyNonFinite != 0.0)
-    {
-      this->NonFinite.Local() = 1;
+      if (this->DNdu)
+      {
+        // Where the derivatives do not span a plane (a pole), no derivative of the normal
+        // along u or v exists: zero.
+        double dndu[3] = { 0.0, 0.0, 0.0 }, dndv[3] = { 0.0, 0.0, 0.0 };
+        if (regular)
+        {
+          double d2[9];
+          g.SecondDerivatives(col, j, d2);
+          NormalDerivatives(du, dv, d2, n, g.Orientation, dndu, dndv);
+          if (!std::isfinite(Dot(dndu, dndu) + Dot(dndv, dndv)))
+          {
+            nonFinite = 1;
+          }
+        }
+        Store3(dndu, this->DNdu + 3 * id);
+        Store3(dndv, this->DNdv + 3 * id);
+      }
     }
   }
 
   void Reduce() {}
 };
 
-// Makes streaming stores visible to other threads (they are weakly ordered).
-inline void Fence(bool stream)
-{
-#if defined(__SSE2__)
-  if (stream)
-  {
-    _mm_sfence();
-  }
-#else
-  (void)stream;
-#endif
-}
-
-// out[k] = in[k] + shift for k < n; 32-bit ids can stream.
-template <typename Id>
-void ShiftedCopy(const Id* __restrict in, vtkIdType n, Id shift, Id* __restrict out, bool stream)
-{
-  vtkIdType k = 0;
-#if defined(__SSE2__)
-  if constexpr (sizeof(Id) == 4)
-  {
-    for (; stream && k < n && !Aligned16(out + k); ++k)
-    {
-      out[k] = in[k] + shift;
-    }
-    if (stream && Aligned16(out + k))
-    {
-      const __m128i add = _mm_set1_epi32(shift);
-      for (; k + 4 <= n; k += 4)
-      {
-        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + k));
-        _mm_stream_si128(reinterpret_cast<__m128i*>(out + k), _mm_add_epi32(v, add));
-      }
-    }
-  }
-#else
-  (void)stream;
-#endif
-  for (; k < n; ++k)
-  {
-    out[k] = in[k] + shift;
-  }
-}
-
-// offsets[t] = 3 t for begin <= t < end; 32-bit ids can stream.
-template <typename Id>
-void Ramp(vtkIdType begin, vtkIdType end, Id* __restrict offsets, bool stream)
-{
-  vtkIdType t = begin;
-#if defined(__SSE2__)
-  if constexpr (sizeof(Id) == 4)
-  {
-    for (; stream && t < end && !Aligned16(offsets + t); ++t)
-    {
-      offsets[t] = static_cast<Id>(3 * t);
-    }
-    if (stream && Aligned16(offsets + t))
-    {
-      const Id first = static_cast<Id>(3 * t);
-      __m128i v = _mm_setr_epi32(first, first + 3, first + 6, first + 9);
-      const __m128i step = _mm_set1_epi32(12);
-      for (; t + 4 <= end; t += 4)
-      {
-        _mm_stream_si128(reinterpret_cast<__m128i*>(offsets + t), v);
-        v = _mm_add_epi32(v, step);
-      }
-    }
-  }
-#else
-  (void)stream;
-#endif
-  for (; t < end; ++t)
-  {
-    offsets[t] = static_cast<Id>(3 * t);
-  }
-}
-
 // Two triangles per grid quad, counter-clockwise around the normal. Every row of quads has
 // the connectivity of the first shifted by a multiple of the row length, so each row is one
-// vectorisable add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
+// add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
 template <typename Id>
 void BuildTriangles(vtkIdType numRows, vtkIdType U, bool flip, Id* offsets, Id* connectivity)
 {
@@ -755,24 +507,38 @@ void BuildTriangles(vtkIdType numRows, vtkIdType U, bool flip, Id* offsets, Id* 
     c[4] = flip ? p01 : p11;
     c[5] = flip ? p11 : p01;
   }
-  const vtkIdType numTriangles = 2 * numRows * U;
-  const bool stream = static_cast<std::size_t>(numTriangles) * 4 * sizeof(Id) > StreamingBytes;
   vtkSMPTools::For(0, numRows,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType r = begin; r < end; ++r)
       {
-        ShiftedCopy(pattern.data(), rowValues, static_cast<Id>(r * (U + 1)),
-          connectivity + r * rowValues, stream);
+        const Id shift = static_cast<Id>(r * (U + 1));
+        Id* out = connectivity + r * rowValues;
+        for (vtkIdType k = 0; k < rowValues; ++k)
+        {
+          out[k] = pattern[k] + shift;
+        }
       }
-      Fence(stream);
     });
+  const vtkIdType numTriangles = 2 * numRows * U;
   vtkSMPTools::For(0, numTriangles + 1,
-    [offsets, stream](vtkIdType begin, vtkIdType end)
+    [offsets](vtkIdType begin, vtkIdType end)
     {
-      Ramp(begin, end, offsets, stream);
-      Fence(stream);
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        offsets[t] = static_cast<Id>(3 * t);
+      }
     });
+}
+
+// Sizes @a array to @a numTuples tuples of @a components; false when the memory is not
+// available.
+bool Allocate(vtkDataArray* array, const char* name, int components, vtkIdType numTuples)
+{
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(numTuples);
+  return array->GetNumberOfTuples() == numTuples;
 }
 
 // Null when the memory is not available.
@@ -783,8 +549,8 @@ vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, vtkIdType U, bool
   const vtkIdType numTriangles = 2 * numRows * U;
   vtkNew<IdArray> offsets;
   vtkNew<IdArray> connectivity;
-  if (!vtkSurfaceDetailMemory::AllocateTuples(offsets.Get(), numTriangles + 1) ||
-    !vtkSurfaceDetailMemory::AllocateTuples(connectivity.Get(), 3 * numTriangles))
+  if (!Allocate(offsets, "offsets", 1, numTriangles + 1) ||
+    !Allocate(connectivity, "connectivity", 1, 3 * numTriangles))
   {
     return nullptr;
   }
@@ -801,39 +567,40 @@ enum class Outcome
   OutOfMemory
 };
 
-template <typename Real, typename RealArray>
-Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tcoords,
-  bool tangents, bool derivatives, vtkPolyData* output, vtkIdType& arbitrary)
+struct Requested
 {
-  // Every value is written below, so the arrays are not initialised; their memory comes in
-  // huge pages, warm from the cache when an earlier output was released.
+  bool Normals, TCoords, Tangents, Derivatives;
+};
+
+template <typename Real, typename RealArray>
+Outcome GeneratePoints(
+  const Grid& g, vtkIdType numPoints, Requested want, vtkPolyData* output, vtkIdType& arbitrary)
+{
   bool allocated = true;
-  auto newArray = [numPoints, &allocated](auto array, const char* name, int components)
+  auto newArray = [numPoints, &allocated](auto* array, const char* name, int components)
   {
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-    allocated = allocated && vtkSurfaceDetailMemory::AllocateTuples(array, numPoints);
+    allocated = allocated && Allocate(array, name, components, numPoints);
     return allocated ? array->GetPointer(0) : nullptr;
   };
   vtkNew<RealArray> points;
   PointWorker<Real> worker(g);
   worker.Points = newArray(points.Get(), "Points", 3);
   vtkNew<vtkFloatArray> normalArray, tcoordArray, tangentArray;
-  vtkNew<RealArray> dPdu, dPdv;
-  worker.Normals = normals ? newArray(normalArray.Get(), "Normals", 3) : nullptr;
-  worker.TCoords = tcoords ? newArray(tcoordArray.Get(), "TCoords", 2) : nullptr;
-  worker.Tangents = tangents ? newArray(tangentArray.Get(), "Tangents", 4) : nullptr;
-  worker.DPdu = derivatives ? newArray(dPdu.Get(), "dPdu", 3) : nullptr;
-  worker.DPdv = derivatives ? newArray(dPdv.Get(), "dPdv", 3) : nullptr;
+  vtkNew<RealArray> dPdu, dPdv, dNdu, dNdv;
+  worker.Normals = want.Normals ? newArray(normalArray.Get(), "Normals", 3) : nullptr;
+  worker.TCoords = want.TCoords ? newArray(tcoordArray.Get(), "TCoords", 2) : nullptr;
+  worker.Tangents = want.Tangents ? newArray(tangentArray.Get(), "Tangents", 4) : nullptr;
+  if (want.Derivatives)
+  {
+    worker.DPdu = newArray(dPdu.Get(), "dPdu", 3);
+    worker.DPdv = newArray(dPdv.Get(), "dPdv", 3);
+    worker.DNdu = newArray(dNdu.Get(), "dNdu", 3);
+    worker.DNdv = newArray(dNdv.Get(), "dNdv", 3);
+  }
   if (!allocated)
   {
     return Outcome::OutOfMemory;
   }
-  // The bytes the workers write per point: the arrays asked for.
-  const std::size_t bytesPerPoint = 3 * sizeof(Real) + (normals ? 3 * sizeof(float) : 0) +
-    (tcoords ? 2 * sizeof(float) : 0) + (tangents ? 4 * sizeof(float) : 0) +
-    (derivatives ? 6 * sizeof(Real) : 0);
-  worker.Stream = static_cast<std::size_t>(numPoints) * bytesPerPoint > StreamingBytes;
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   vtkSMPTools::For(0, numPoints, 4096, worker);
@@ -855,24 +622,26 @@ Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, bool normals, bool tc
   pts->SetData(points);
   output->SetPoints(pts);
   vtkPointData* pd = output->GetPointData();
-  if (normals)
+  if (want.Normals)
   {
     pd->SetNormals(normalArray);
   }
-  if (tcoords)
+  if (want.TCoords)
   {
     pd->SetTCoords(tcoordArray);
   }
-  if (tangents)
+  if (want.Tangents)
   {
     // VTK 9.1 accepts only 3-component tangent attributes (vtkDataSetAttributes), so the
     // 4-component frame is an ordinary array found by its name.
     pd->AddArray(tangentArray);
   }
-  if (derivatives)
+  if (want.Derivatives)
   {
     pd->AddArray(dPdu);
     pd->AddArray(dPdv);
+    pd->AddArray(dNdu);
+    pd->AddArray(dNdv);
   }
   return Outcome::Done;
 }
@@ -1122,13 +891,11 @@ int vtkParametricSurfaceSource::RequestData(
 
   const vtkIdType numPoints = g.NumRows * rowLength;
   vtkIdType arbitrary = 0;
+  const Requested want{ this->GenerateNormals, this->GenerateTextureCoordinates,
+    this->GenerateTangents, this->GenerateDerivatives };
   const Outcome outcome = this->OutputPointsPrecision == DOUBLE_PRECISION
-    ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, this->GenerateNormals,
-        this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
-        arbitrary)
-    : GeneratePoints<float, vtkFloatArray>(g, numPoints, this->GenerateNormals,
-        this->GenerateTextureCoordinates, this->GenerateTangents, this->GenerateDerivatives, output,
-        arbitrary);
+    ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, want, output, arbitrary)
+    : GeneratePoints<float, vtkFloatArray>(g, numPoints, want, output, arbitrary);
   if (outcome == Outcome::OutOfMemory)
   {
     output->Initialize();

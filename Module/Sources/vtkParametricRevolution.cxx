@@ -5,7 +5,6 @@
 #include "vtkObjectFactory.h"
 
 #include <cmath>
-#include <typeinfo>
 
 vtkStandardNewMacro(vtkParametricRevolution);
 
@@ -25,7 +24,7 @@ void vtkParametricRevolution::EvaluateUTerms(double u, double* terms)
 
 void vtkParametricRevolution::EvaluateVTerms(double v, double* terms)
 {
-  // (r, y, dr/dv, dy/dv)
+  // (r, y, dr/dv, dy/dv, d2r/dv2, d2y/dv2)
   this->EvaluateProfile(v, terms, "surface of revolution");
 }
 
@@ -47,23 +46,23 @@ void vtkParametricRevolution::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
-void vtkParametricRevolution::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
-  int count, double* const* P, double* const* Du, double* const* Dv)
+bool vtkParametricRevolution::EvaluateSecondDerivatives(
+  const double* uTerms, const double* vTerms, double D2[9])
 {
-  // The loop below repeats this class's EvaluateTerms(); a subclass that overrides
-  // EvaluateTerms() alone gets its own shape from the per-point block instead.
-  if (typeid(*this) != typeid(vtkParametricRevolution))
-  {
-    this->vtkParametricSeparableFunction::EvaluateTermsBlock(uTerms, vTerms, count, P, Du, Dv);
-    return;
-  }
-  // EvaluateTerms()' products of the row, in its order, so the results are the same bits.
   const double twoPi = 2.0 * vtkMath::Pi();
-  const double r = vTerms[0], y = vTerms[1], dr = vTerms[2], dy = vTerms[3];
-  const double row[7] = { r, y, -r, -twoPi * r, dr, dy, -dr };
-  this->EvaluateTurnBlock(uTerms, row, count, P, Du, Dv);
+  const double c = uTerms[0], s = uTerms[1];
+  const double r = vTerms[0], dr = vTerms[2], ddr = vTerms[4], ddy = vTerms[5];
+  D2[0] = -twoPi * twoPi * r * c;
+  D2[1] = 0.0;
+  D2[2] = twoPi * twoPi * r * s;
+  D2[3] = -twoPi * dr * s;
+  D2[4] = 0.0;
+  D2[5] = -twoPi * dr * c;
+  D2[6] = ddr * c;
+  D2[7] = ddy;
+  D2[8] = -ddr * s;
+  return true;
 }
-
 //------------------------------------------------------------------------------
 void vtkParametricRevolution::PrintSelf(ostream& os, vtkIndent indent)
 {

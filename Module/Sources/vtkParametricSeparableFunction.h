@@ -9,15 +9,12 @@
  * Subclasses split Evaluate() into:
  * - EvaluateUTerms(u, terms): the GetNumberOfUTerms() numbers that depend on u only;
  * - EvaluateVTerms(v, terms): the same for v;
- * - EvaluateTerms(uTerms, vTerms, P, D): the point and its derivatives from both, cheaply.
- * Evaluate() is exactly these three calls, so the split and the plain evaluation give
- * identical results. EvaluateTermsBlock() is EvaluateTerms() for a run of points of one
- * row, which subclasses may override with a loop the compiler vectorises: the fast path.
- * EvaluateTerms() stays the customisation point: a class whose EvaluateTermsBlock() copies
- * its EvaluateTerms() uses that copy only for objects of exactly its own type, so that a
- * subclass overriding EvaluateTerms() alone gets its own shape from Evaluate() and from
- * vtkParametricSurfaceSource alike.
- * vtkParametricSurfaceSource uses the split for any such function.
+ * - EvaluateTerms(uTerms, vTerms, P, D): the point and its derivatives from both, cheaply;
+ * - EvaluateSecondDerivatives(uTerms, vTerms, D2): optionally, the second derivatives in
+ *   closed form, from which vtkParametricSurfaceSource gives the change of the unit normal
+ *   ("dNdu", "dNdv"); without them the source differences the first derivatives.
+ * Evaluate() is exactly the first three calls, so the split and the plain evaluation give
+ * identical results. vtkParametricSurfaceSource uses the split for any such function.
  *
  * @sa vtkParametricSurfaceSource vtkParametricSphere vtkParametricRevolution
  */
@@ -25,10 +22,10 @@
 #ifndef vtkParametricSeparableFunction_h
 #define vtkParametricSeparableFunction_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricSeparableFunction : public vtkParametricFunction
+class SURFACEDETAILSOURCES_EXPORT vtkParametricSeparableFunction : public vtkParametricFunction
 {
 public:
   vtkTypeMacro(vtkParametricSeparableFunction, vtkParametricFunction);
@@ -56,18 +53,16 @@ public:
   virtual void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) = 0;
 
+  /**
+   * The second derivatives d2P/du2 (D2[0..2]), d2P/dudv (D2[3..5]) and d2P/dv2 (D2[6..8])
+   * from the same terms, if the subclass knows them in closed form: returns true then. The
+   * default returns false, and vtkParametricSurfaceSource differences the first derivatives
+   * instead. Thread-safe.
+   */
+  virtual bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]);
+
   /** A surface: 2. */
   int GetDimension() override { return 2; }
-
-  /**
-   * EvaluateTerms() for @a count points that share the v terms @a vTerms (a run of one row
-   * of a grid), in structure-of-arrays form: uTerms[t][k] is u term t of point k, and
-   * component c of point k's position, dP/du and dP/dv goes to P[c][k], Du[c][k] and
-   * Dv[c][k]. The results are EvaluateTerms()' bit for bit. The default calls
-   * EvaluateTerms() per point. Thread-safe.
-   */
-  virtual void EvaluateTermsBlock(const double* const* uTerms, const double* vTerms, int count,
-    double* const* P, double* const* Du, double* const* Dv);
 
   /** EvaluateUTerms, EvaluateVTerms, then EvaluateTerms. */
   void Evaluate(double uvw[3], double Pt[3], double Duvw[9]) final;
@@ -81,17 +76,6 @@ protected:
 
   /** terms[0] = cos(2 pi x), terms[1] = sin(2 pi x): the turn of the round surfaces. */
   static void EvaluateTurn(double x, double* terms);
-
-  /**
-   * EvaluateTermsBlock() of a surface turned about the y axis, from the turn's terms
-   * (c, s) = (uTerms[0][k], uTerms[1][k]) and seven numbers of the row:
-   * P = (row[0] c, row[1], row[2] s), dP/du = (row[3] s, 0, row[3] c),
-   * dP/dv = (row[4] c, row[5], row[6] s). A subclass gets EvaluateTerms()' bits when it
-   * computes the row numbers as the products EvaluateTerms() forms before multiplying by
-   * c or s.
-   */
-  static void EvaluateTurnBlock(const double* const* uTerms, const double row[7], int count,
-    double* const* P, double* const* Du, double* const* Dv);
 
 private:
   vtkParametricSeparableFunction(const vtkParametricSeparableFunction&) = delete;

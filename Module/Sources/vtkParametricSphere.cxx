@@ -4,7 +4,6 @@
 #include "vtkObjectFactory.h"
 
 #include <cmath>
-#include <typeinfo>
 
 vtkStandardNewMacro(vtkParametricSphere);
 
@@ -47,26 +46,28 @@ void vtkParametricSphere::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
-void vtkParametricSphere::EvaluateTermsBlock(const double* const* uTerms, const double* vTerms,
-  int count, double* const* P, double* const* Du, double* const* Dv)
+bool vtkParametricSphere::EvaluateSecondDerivatives(
+  const double* uTerms, const double* vTerms, double D2[9])
 {
-  // The loop below repeats this class's EvaluateTerms(); a subclass that overrides
-  // EvaluateTerms() alone gets its own shape from the per-point block instead.
-  if (typeid(*this) != typeid(vtkParametricSphere))
-  {
-    this->vtkParametricSeparableFunction::EvaluateTermsBlock(uTerms, vTerms, count, P, Du, Dv);
-    return;
-  }
-  // EvaluateTerms() with its products that depend on v only taken out of the loop, in the
-  // same order of operations, so the results are the same bits.
-  const double twoPi = 2.0 * vtkMath::Pi();
+  const double pi = vtkMath::Pi();
+  const double ct = uTerms[0], st = uTerms[1];
   const double ca = vTerms[0], sa = vTerms[1];
   const double r = this->Radius;
-  const double row[7] = { r * sa, r * ca, -r * sa, -twoPi * r * sa, -vtkMath::Pi() * r * ca,
-    vtkMath::Pi() * r * sa, vtkMath::Pi() * r * ca };
-  this->EvaluateTurnBlock(uTerms, row, count, P, Du, Dv);
+  // theta = 2 pi u and alpha = pi (1 - v): each u derivative brings 2 pi, each v one -pi.
+  const double uu = -4.0 * pi * pi * r * sa;
+  D2[0] = uu * ct;
+  D2[1] = 0.0;
+  D2[2] = -uu * st;
+  const double uv = 2.0 * pi * pi * r * ca;
+  D2[3] = uv * st;
+  D2[4] = 0.0;
+  D2[5] = uv * ct;
+  const double vv = pi * pi * r;
+  D2[6] = -vv * sa * ct;
+  D2[7] = -vv * ca;
+  D2[8] = vv * sa * st;
+  return true;
 }
-
 //------------------------------------------------------------------------------
 void vtkParametricSphere::PrintSelf(ostream& os, vtkIndent indent)
 {

@@ -15,10 +15,10 @@
 #ifndef vtkParametricSphere_h
 #define vtkParametricSphere_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricSeparableFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricSphere : public vtkParametricSeparableFunction
+class SURFACEDETAILSOURCES_EXPORT vtkParametricSphere : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricSphere* New();
@@ -33,11 +33,7 @@ public:
 
   ///@{
   /**
-   * The split evaluation (see vtkParametricSeparableFunction). EvaluateTermsBlock() is the
-   * fast path: a vectorised copy of EvaluateTerms() used only when the object is exactly a
-   * vtkParametricSphere. A subclass that overrides EvaluateTerms() alone is honoured (the
-   * source then calls its EvaluateTerms() per point); one that wants the speed back
-   * overrides EvaluateTermsBlock() too.
+   * The split evaluation (see vtkParametricSeparableFunction).
    */
   int GetNumberOfUTerms() override { return 2; }
   int GetNumberOfVTerms() override { return 2; }
@@ -45,8 +41,7 @@ public:
   void EvaluateVTerms(double v, double* terms) override;
   void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
-  void EvaluateTermsBlock(const double* const* uTerms, const double* vTerms, int count,
-    double* const* P, double* const* Du, double* const* Dv) override;
+  bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]) override;
   ///@}
 
 protected:

@@ -40,14 +40,14 @@ vtkMTimeType vtkParametricProfileFunction::GetMTime()
 }
 
 //------------------------------------------------------------------------------
-void vtkParametricProfileFunction::EvaluateProfile(double t, double terms[4], const char* surface)
+void vtkParametricProfileFunction::EvaluateProfile(double t, double terms[6], const char* surface)
 {
-  if (this->Profile && this->Profile->Evaluate(t, terms, terms + 2, nullptr))
+  if (this->Profile && this->Profile->Evaluate(t, terms, terms + 2, terms + 4))
   {
     return;
   }
   // The failure path only: the profile's validity is cached, the message is not.
-  std::fill(terms, terms + 4, 0.0);
+  std::fill(terms, terms + 6, 0.0);
   std::string reason = "there is no profile";
   if (this->Profile && this->Profile->IsValid(&reason))
   {

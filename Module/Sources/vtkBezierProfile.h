@@ -25,7 +25,7 @@
 #ifndef vtkBezierProfile_h
 #define vtkBezierProfile_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <array>  // For the control points
@@ -34,7 +34,7 @@
 #include <string> // For IsValid
 #include <vector> // For the control points
 
-class SURFACEDETAILFILTERS_EXPORT vtkBezierProfile : public vtkObject
+class SURFACEDETAILSOURCES_EXPORT vtkBezierProfile : public vtkObject
 {
 public:
   static vtkBezierProfile* New();

@@ -13,10 +13,10 @@
 #ifndef vtkParametricCylinder_h
 #define vtkParametricCylinder_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricSeparableFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricCylinder : public vtkParametricSeparableFunction
+class SURFACEDETAILSOURCES_EXPORT vtkParametricCylinder : public vtkParametricSeparableFunction
 {
 public:
   static vtkParametricCylinder* New();
@@ -43,6 +43,7 @@ public:
   void EvaluateVTerms(double v, double* terms) override;
   void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]) override;
   ///@}
 
 protected:

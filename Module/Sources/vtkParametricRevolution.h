@@ -15,10 +15,10 @@
 #ifndef vtkParametricRevolution_h
 #define vtkParametricRevolution_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricProfileFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricRevolution : public vtkParametricProfileFunction
+class SURFACEDETAILSOURCES_EXPORT vtkParametricRevolution : public vtkParametricProfileFunction
 {
 public:
   static vtkParametricRevolution* New();
@@ -28,20 +28,15 @@ public:
   ///@{
   /**
    * The split evaluation (see vtkParametricSeparableFunction). An invalid or missing
-   * profile is reported as an error and gives zeros. EvaluateTermsBlock() is the fast
-   * path: a vectorised copy of EvaluateTerms() used only when the object is exactly a
-   * vtkParametricRevolution. A subclass that overrides EvaluateTerms() alone is honoured
-   * (the source then calls its EvaluateTerms() per point); one that wants the speed back
-   * overrides EvaluateTermsBlock() too.
+   * profile is reported as an error and gives zeros.
    */
   int GetNumberOfUTerms() override { return 2; }
-  int GetNumberOfVTerms() override { return 4; }
+  int GetNumberOfVTerms() override { return 6; }
   void EvaluateUTerms(double u, double* terms) override;
   void EvaluateVTerms(double v, double* terms) override;
   void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
-  void EvaluateTermsBlock(const double* const* uTerms, const double* vTerms, int count,
-    double* const* P, double* const* Du, double* const* Dv) override;
+  bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]) override;
   ///@}
 
 protected:

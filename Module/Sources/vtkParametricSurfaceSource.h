@@ -26,6 +26,14 @@
  *   the point data's tangent attribute.
  * - "dPdu", "dPdv" (GenerateDerivatives): the raw derivatives with respect to the
  *   unit-square parameters (the function's own derivatives times the extent of its domain).
+ * - "dNdu", "dNdv" (GenerateDerivatives): the change of the unit normal "Normals" with
+ *   respect to the same parameters, from the second derivatives by Weingarten's relation
+ *   (dN/du = (dm/du minus its part along N) / |m| with m = Du x Dv, oriented as N).
+ *   vtkDisplacementMapFilter's Exact normals use them instead of fitting them from
+ *   neighbouring points. SurfaceDetail's functions give the second derivatives in closed
+ *   form (vtkParametricSeparableFunction::EvaluateSecondDerivatives); for other functions
+ *   they are second-order differences of the first derivatives (about 1e-8 relative).
+ *   Zero where the derivatives do not span a plane (a pole), where no such change exists.
  *
  * Functions whose DerivativesAvailable is off (vtkParametricSuperEllipsoid,
  * vtkParametricSuperToroid, vtkParametricRandomHills) get fourth-order finite differences of
@@ -48,13 +56,8 @@
  * depend on the number of threads.
  *
  * Speed: a vtkParametricSeparableFunction (all of SurfaceDetail's functions) is evaluated
- * from per-row and per-column terms, a run of a row at a time; big output arrays are 2 MB
- * huge pages kept for reuse when the previous output is released, so a re-executing source
- * writes into warm memory. The environment variable SURFACEDETAIL_ARRAY_CACHE_MB bounds
- * that cache in MiB (default 1024, 0 turns it off); it is read once, when the process first
- * allocates or frees such an array (the first call of any cache function). A cached block
- * unused for 5 s does not go back to the system by itself: it goes back at the first
- * allocation or release of such an array after that time, so an idle process keeps it.
+ * from per-row and per-column terms, so trigonometry and profile evaluation are done once per
+ * row and column, not per point.
  *
  * The function is evaluated from several threads at once. VTK's functions and SurfaceDetail's
  * allow that; a function that builds state lazily is evaluated once before the threads start.
@@ -68,13 +71,13 @@
 #ifndef vtkParametricSurfaceSource_h
 #define vtkParametricSurfaceSource_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // For the function member
 
 class vtkParametricFunction;
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricSurfaceSource : public vtkPolyDataAlgorithm
+class SURFACEDETAILSOURCES_EXPORT vtkParametricSurfaceSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkParametricSurfaceSource* New();
@@ -122,7 +125,10 @@ public:
   ///@}
 
   ///@{
-  /** Produce the "dPdu" and "dPdv" point arrays (unit-square derivatives). Default off. */
+  /**
+   * Produce the "dPdu", "dPdv", "dNdu" and "dNdv" point arrays (unit-square derivatives of
+   * the point and of the unit normal). Default off.
+   */
   vtkSetMacro(GenerateDerivatives, bool);
   vtkGetMacro(GenerateDerivatives, bool);
   vtkBooleanMacro(GenerateDerivatives, bool);

@@ -32,6 +32,15 @@ void vtkParametricRectangle::EvaluateTerms(
   }
 }
 
+bool vtkParametricRectangle::EvaluateSecondDerivatives(const double*, const double*, double D2[9])
+{
+  for (int k = 0; k < 9; ++k)
+  {
+    D2[k] = 0.0;
+  }
+  return true;
+}
+
 //------------------------------------------------------------------------------
 void vtkParametricRectangle::PrintSelf(ostream& os, vtkIndent indent)
 {

@@ -14,10 +14,10 @@
 #ifndef vtkParametricExtrusion_h
 #define vtkParametricExtrusion_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricProfileFunction.h"
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricExtrusion : public vtkParametricProfileFunction
+class SURFACEDETAILSOURCES_EXPORT vtkParametricExtrusion : public vtkParametricProfileFunction
 {
 public:
   static vtkParametricExtrusion* New();
@@ -35,12 +35,13 @@ public:
    * The split evaluation (see vtkParametricSeparableFunction). An invalid or missing
    * profile is reported as an error and gives zeros.
    */
-  int GetNumberOfUTerms() override { return 4; }
+  int GetNumberOfUTerms() override { return 6; }
   int GetNumberOfVTerms() override { return 1; }
   void EvaluateUTerms(double u, double* terms) override;
   void EvaluateVTerms(double v, double* terms) override;
   void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
+  bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]) override;
   ///@}
 
 protected:

@@ -42,6 +42,20 @@ void vtkParametricCylinder::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
+bool vtkParametricCylinder::EvaluateSecondDerivatives(
+  const double* uTerms, const double*, double D2[9])
+{
+  const double fourPi2 = 4.0 * vtkMath::Pi() * vtkMath::Pi();
+  D2[0] = -fourPi2 * this->Radius * uTerms[0];
+  D2[1] = 0.0;
+  D2[2] = fourPi2 * this->Radius * uTerms[1];
+  for (int k = 3; k < 9; ++k)
+  {
+    D2[k] = 0.0;
+  }
+  return true;
+}
+
 //------------------------------------------------------------------------------
 void vtkParametricCylinder::PrintSelf(ostream& os, vtkIndent indent)
 {

@@ -13,13 +13,13 @@
 #ifndef vtkParametricProfileFunction_h
 #define vtkParametricProfileFunction_h
 
-#include "SurfaceDetailFiltersModule.h" // For export macro
+#include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricSeparableFunction.h"
 #include "vtkSmartPointer.h" // For the profile member
 
 class vtkBezierProfile;
 
-class SURFACEDETAILFILTERS_EXPORT vtkParametricProfileFunction
+class SURFACEDETAILSOURCES_EXPORT vtkParametricProfileFunction
   : public vtkParametricSeparableFunction
 {
 public:
@@ -40,10 +40,11 @@ protected:
   ~vtkParametricProfileFunction() override;
 
   /**
-   * The profile's point and first derivative at @a t in terms[0..1] and terms[2..3]. A
+   * The profile's point, first and second derivative at @a t in terms[0..1], terms[2..3]
+   * and terms[4..5]. A
    * missing or invalid profile is reported as an error (naming @a surface) and gives zeros.
    */
-  void EvaluateProfile(double t, double terms[4], const char* surface);
+  void EvaluateProfile(double t, double terms[6], const char* surface);
 
   vtkSmartPointer<vtkBezierProfile> Profile;
 

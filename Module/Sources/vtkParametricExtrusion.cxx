@@ -16,7 +16,7 @@ vtkParametricExtrusion::~vtkParametricExtrusion() = default;
 //------------------------------------------------------------------------------
 void vtkParametricExtrusion::EvaluateUTerms(double u, double* terms)
 {
-  // (x, z, dx/du, dz/du)
+  // (x, z, dx/du, dz/du, d2x/du2, d2z/du2)
   this->EvaluateProfile(u, terms, "extrusion");
 }
 
@@ -38,6 +38,19 @@ void vtkParametricExtrusion::EvaluateTerms(
   Duvw[4] = this->Height;
   Duvw[5] = 0.0;
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
+}
+
+bool vtkParametricExtrusion::EvaluateSecondDerivatives(
+  const double* uTerms, const double*, double D2[9])
+{
+  D2[0] = uTerms[4];
+  D2[1] = 0.0;
+  D2[2] = uTerms[5];
+  for (int k = 3; k < 9; ++k)
+  {
+    D2[k] = 0.0;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
