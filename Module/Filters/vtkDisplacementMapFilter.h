@@ -89,8 +89,8 @@
  * normals (a hard edge) keep their own normals but still move together. A seam cuts the
  * mesh, so its duplicated points are boundary points: only points on an edge that is not
  * shared by two consistently oriented polygons (or in no polygon) are compared. They are
- * found by one sweep over the polygons' edges (no point links), and grouped by sorting them
- * into cells of the tolerance's size.
+ * found by one sweep over the polygons' edges (no point links), and grouped with a
+ * vtkStaticPointLocator over them.
  *
  * Precision: when the points and every array the filter reads are float (as VTK's sources
  * make them), the output points, normals and tangents are float; otherwise the inputs are
