@@ -185,25 +185,30 @@ struct HeightMap
     double fx, fy;
     LinearTexels(s, this->W, i0, fx);
     LinearTexels(t, this->H, j0, fy);
-    if (this->Interpolation == vtkDisplacementMapFilter::Linear)
-    {
-      const double h00 = this->Texel(i0, j0), h10 = this->Texel(i0 + 1, j0);
-      const double h01 = this->Texel(i0, j0 + 1), h11 = this->Texel(i0 + 1, j0 + 1);
-      const double b0 = (1.0 - fx) * h00 + fx * h10;
-      const double b1 = (1.0 - fx) * h01 + fx * h11;
-      h = (1.0 - fy) * b0 + fy * b1;
-      hs = this->W * ((1.0 - fy) * (h10 - h00) + fy * (h11 - h01));
-      ht = this->H * (b1 - b0);
-      return;
-    }
+    // Both are separable: weights (and their derivatives) over texels i0 - 1 .. i0 + 2, of
+    // which Linear uses the middle two.
     double wx[4], dwx[4], wy[4], dwy[4];
-    CatmullRom(fx, wx, dwx);
-    CatmullRom(fy, wy, dwy);
+    const bool linear = this->Interpolation == vtkDisplacementMapFilter::Linear;
+    if (linear)
+    {
+      const double lx[4] = { 0.0, 1.0 - fx, fx, 0.0 }, ly[4] = { 0.0, 1.0 - fy, fy, 0.0 };
+      const double slope[4] = { 0.0, -1.0, 1.0, 0.0 };
+      std::copy_n(lx, 4, wx);
+      std::copy_n(ly, 4, wy);
+      std::copy_n(slope, 4, dwx);
+      std::copy_n(slope, 4, dwy);
+    }
+    else
+    {
+      CatmullRom(fx, wx, dwx);
+      CatmullRom(fy, wy, dwy);
+    }
+    const int first = linear ? 1 : 0, last = linear ? 3 : 4;
     h = hs = ht = 0.0;
-    for (int l = 0; l < 4; ++l)
+    for (int l = first; l < last; ++l)
     {
       double row = 0.0, drow = 0.0;
-      for (int k = 0; k < 4; ++k)
+      for (int k = first; k < last; ++k)
       {
         const double v = this->Texel(i0 - 1 + k, j0 - 1 + l);
         row += wx[k] * v;
