@@ -256,7 +256,7 @@ double Finite(double x)
 }
 
 // The passes work on blocks of points held as arrays per coordinate ("lanes"): each step is a
-// short loop over the block without branches, which the compiler vectorises and the processor
+// short loop over the block without branches, which the compiler can vectorise and the processor
 // overlaps from point to point (one point's square roots and divisions are a long chain).
 constexpr int Block = 64;
 using Lanes = double[Block];
