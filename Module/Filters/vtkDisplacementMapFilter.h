@@ -30,17 +30,24 @@
  * A 1x1 height map is valid: it is a constant (a 1x1 texture samples to its only texel in
  * every mode), so all points move by the same distance; as that is seldom what was meant,
  * the filter says so in a warning. NaN and infinite heights are
- * treated as Midlevel, with one warning giving their count.
+ * treated as Midlevel; when the surface reads any, one warning gives the map's count of them.
  *
  * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt, n the unit input normal and
  * d = Scale (h - Midlevel). Differentiating p* = p + d n by the product rule gives
  *     p*_s = P_s + d_s n + d n_s,   p*_t = P_t + d_t n + d n_t,   n* ~ p*_s x p*_t.
  * - Exact: exactly that, m* = (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t). The
- *   derivatives of the unit normal, n_s and n_t, are fitted per point by least squares to
- *   the input normals of the point's neighbours (n_j - n_i ~ n_s ds + n_t dt over the
- *   polygons around it, each neighbour weighted by the polygons it shares with the point);
- *   on a regular grid this is a central difference, so the normal converges at second
- *   order in the mesh spacing (TestDisplacementMapFilterAccuracy measures it).
+ *   derivatives of the unit normal, n_s and n_t, come from the surface itself where the point
+ *   data has 3-component arrays "dNdu" and "dNdv" next to "dPdu" and "dPdv"
+ *   (vtkParametricSurfaceSource's GenerateDerivatives): the derivatives of the unit normal,
+ *   the "Normals" array as stored whatever its orientation, with respect to the same
+ *   parameters (u,v) as dPdu/dPdv, so that n_s = dNdu / r_s and n_t = dNdv / r_t (r_s, r_t
+ *   below). The normal is then exact up to the height map's reconstruction, at any mesh
+ *   resolution. Without them (or without dPdu/dPdv, whose parameters they are taken in),
+ *   n_s and n_t are fitted per point by least squares to the input normals of the point's
+ *   neighbours (n_j - n_i ~ n_s ds + n_t dt over the polygons around it, each neighbour
+ *   weighted by the polygons it shares with the point); on a regular grid this is a central
+ *   difference, so the normal converges at second order in the mesh spacing
+ *   (TestDisplacementMapFilterAccuracy measures both).
  * - Approximate: the seed's formula, which drops the d n_s and d n_t terms:
  *   m* = P_s x P_t + d_s (n x P_t) - d_t (n x P_s), where P_s x P_t is taken as its part
  *   along n, (n . (P_s x P_t)) n, so that a map without slope gives back n itself. d_s and
@@ -57,6 +64,8 @@
  * such as a sphere's pole (a neighbour at the same place with other texture coordinates,
  * or zero dPdu/dPdv), no (s,t) derivative describes the surface and the input normal is
  * kept. Normals are always finite: where m* has no direction, the input normal is used.
+ * The fits and Mesh normals read each point's polygons through vtkStaticCellLinks, built
+ * for the execution that needs them.
  *
  * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
  * (vtkParametricSurfaceSource's GenerateDerivatives), they give P_s and P_t. They may be
@@ -65,8 +74,8 @@
  * fits s = o_s + r_s u, t = o_t + r_t v by least squares over a sample of edges and uses
  * P_s = dPdu / r_s, P_t = dPdv / r_t. Otherwise P_s and P_t are fitted
  * per point by least squares to the position differences over the point's polygons against
- * their texture-coordinate differences. "dPdu" and "dPdv" pass through unchanged: they
- * describe the input surface (nobody asked for them to be recomputed).
+ * their texture-coordinate differences. "dPdu", "dPdv", "dNdu" and "dNdv" pass through
+ * unchanged: they describe the input surface (nobody asked for them to be recomputed).
  *
  * Tangents. When the point data has tangents (3 or 4 components, DESIGN.md's frame), the
  * output tangents are re-orthogonalised to the new normals; the handedness w is kept.
@@ -80,33 +89,26 @@
  * normals (a hard edge) keep their own normals but still move together. A seam cuts the
  * mesh, so its duplicated points are boundary points: only points on an edge that is not
  * shared by two consistently oriented polygons (or in no polygon) are compared. They are
- * found by one sweep over the polygons' edges (no point links), which keeps the cost of
- * the search to about that of reading the connectivity once, and to nothing more when
- * the surface is closed.
+ * found by one sweep over the polygons' edges (no point links), and grouped with a
+ * vtkStaticPointLocator over them.
  *
  * Precision: when the points and every array the filter reads are float (as VTK's sources
- * make them), the work reads them in place and the output points, normals and tangents are
- * float; otherwise the inputs are converted and the outputs are double. With float outputs,
- * a point moved beyond float's range gets the largest float of that sign (never infinity),
- * and normals and tangents stay finite and unit; points whose derivatives float cannot hold
- * are computed in double.
+ * make them), the output points, normals and tangents are float; otherwise the inputs are
+ * converted and the outputs are double. The computation is in double either way. With float
+ * outputs, a point moved beyond float's range gets the largest float of that sign (never
+ * infinity), and normals and tangents stay finite and unit.
  *
  * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
  * recomputes the normals from the faces).
  *
  * Pieces: the filter works on whatever piece it gets, with as many points out as in; the
  * height map is always requested whole. Positions and Approximate normals from dPdu/dPdv
- * are those of the whole surface, except at seam points whose partners are in another
- * piece (they are only merged within a piece); Exact, Mesh and fitted normals at a piece's
- * border see only that piece's polygons (as vtkPolyDataNormals does), unless ghost levels
- * are requested downstream. Threads: vtkSMPTools, with results independent of the number of
- * threads.
- *
- * Memory: what depends on the input surface alone (seam groups, point-to-polygon links, Exact's
- * unit normals with their texture coordinate s and fitted derivatives, Mesh's polygon
- * orientations; about 185 bytes a point for Exact on triangles) is kept between executions, so
- * that a new Scale or height map does not rebuild it; PrintSelf gives its size. With
- * ReleaseDataFlag on, nothing is kept.
+ * (and Exact normals from dNdu/dNdv too) are those of the whole surface, except at seam
+ * points whose partners are in another piece (they are only merged within a piece); fitted
+ * and Mesh normals at a piece's border see only that piece's polygons (as
+ * vtkPolyDataNormals does), unless ghost levels are requested downstream. Threads:
+ * vtkSMPTools, with results independent of the number of threads. Nothing is kept between
+ * executions.
  *
  * @sa vtkParametricSurfaceSource vtkHeightMapToNormalMap vtkWarpScalar vtkPolyDataNormals
  */
@@ -117,9 +119,8 @@
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // For std::unique_ptr
-
 class vtkDataArray;
+class vtkImageData;
 
 class SURFACEDETAILFILTERS_EXPORT vtkDisplacementMapFilter : public vtkPolyDataAlgorithm
 {
@@ -235,11 +236,18 @@ public:
 
 protected:
   vtkDisplacementMapFilter();
-  ~vtkDisplacementMapFilter() override;
+  ~vtkDisplacementMapFilter() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  // Each reports what is wrong with an error and returns false.
+  bool CheckSurface(vtkPolyData* input);
+  bool CheckHeightMap(vtkImageData* image);
+
+  // The input tangents that the output re-orthogonalises, or null (None mode, or none).
+  vtkDataArray* InputTangents(vtkPolyData* input);
 
   double Scale = 1.0;
   double Midlevel = 0.0;
@@ -249,20 +257,6 @@ protected:
   int NormalMode = Exact;
   bool MergeSeams = true;
   double SeamTolerance = 1e-6;
-
-  // The count of non-finite heights, kept while the height map's scalars do not change, so
-  // that re-executing for a new surface does not scan a large map again.
-  vtkMTimeType NonFiniteScanTime = 0;
-  vtkDataArray* NonFiniteScanArray = nullptr; // compared, never dereferenced
-  int NonFiniteScanComponent = -1;
-  vtkIdType NonFiniteCount = 0;
-
-  // What depends on the input alone (seam groups, point-to-polygon links, Exact's unit
-  // normals, Mesh's polygon orientations, the fitted derivatives), kept while the input's points,
-  // polygons, normals and texture coordinates do not change: moving a Scale slider or swapping the
-  // height map does not rebuild it. Dropped at each execution when ReleaseDataFlag is on.
-  struct MeshCache;
-  std::unique_ptr<MeshCache> Cache;
 
 private:
   vtkDisplacementMapFilter(const vtkDisplacementMapFilter&) = delete;

@@ -2,7 +2,8 @@
 // here from their formulas and nothing else: the filter's own code is never used to make
 // the truth it is checked against.
 //
-// Each surface is p(u,v) on the unit square with its unit normal n(u,v) and derivatives;
+// Each surface is p(u,v) on the unit square with its unit normal n(u,v) and the derivatives
+// of both;
 // the displaced truth is p*(u,v) = p + Scale (h(u,v) - Midlevel) n, and its exact normal
 // n* is computed from sixth-order central differences of p* itself.
 
@@ -55,8 +56,8 @@ inline double AngleDeg(const Vec& a, const Vec& b)
 struct Surface
 {
   std::string Name;
-  std::function<Vec(double, double)> P, N, Pu, Pv;
-  std::function<double(double, double)> Height; // h(u,v), smooth on the closed surface
+  std::function<Vec(double, double)> P, N, Pu, Pv, Nu, Nv; // N unit
+  std::function<double(double, double)> Height;            // h(u,v), smooth on the closed surface
   double Scale = 0.1;
   double Midlevel = 0.5;
   bool Poles = false;
@@ -117,6 +118,8 @@ inline Surface Sphere(double scale = 0.15)
     return Vec{ -Pi * std::cos(a) * std::cos(th), Pi * std::sin(a),
       Pi * std::cos(a) * std::sin(th) };
   };
+  s.Nu = s.Pu; // the unit sphere's normal is its point
+  s.Nv = s.Pv;
   s.Height = [](double u, double v)
   {
     const double sv = std::sin(Pi * v);
@@ -155,6 +158,17 @@ inline Surface Torus(double scale = 0.1)
     return Vec{ -2 * Pi * r * std::sin(b) * std::cos(a), -2 * Pi * r * std::sin(b) * std::sin(a),
       2 * Pi * r * std::cos(b) };
   };
+  s.Nu = [](double u, double v)
+  {
+    const double a = 2 * Pi * u, b = 2 * Pi * v;
+    return Vec{ -2 * Pi * std::cos(b) * std::sin(a), 2 * Pi * std::cos(b) * std::cos(a), 0.0 };
+  };
+  s.Nv = [](double u, double v)
+  {
+    const double a = 2 * Pi * u, b = 2 * Pi * v;
+    return Vec{ -2 * Pi * std::sin(b) * std::cos(a), -2 * Pi * std::sin(b) * std::sin(a),
+      2 * Pi * std::cos(b) };
+  };
   s.Height = [](double u, double v)
   {
     return 0.5 + 0.25 * std::sin(2 * Pi * 3 * u) * std::sin(2 * Pi * 2 * v) +
@@ -173,6 +187,8 @@ inline Surface Rectangle(double scale = 0.1)
   s.N = [](double, double) { return Vec{ 0.0, 0.0, 1.0 }; };
   s.Pu = [](double, double) { return Vec{ 2.0, 0.0, 0.0 }; };
   s.Pv = [](double, double) { return Vec{ 0.0, 2.0, 0.0 }; };
+  s.Nu = [](double, double) { return Vec{ 0.0, 0.0, 0.0 }; };
+  s.Nv = s.Nu;
   s.Height = [](double u, double v)
   {
     return 0.5 + 0.25 * std::sin(2 * Pi * 2 * u) * std::cos(2 * Pi * 3 * v) +
@@ -183,9 +199,10 @@ inline Surface Rectangle(double scale = 0.1)
 
 // A (U+1) x (V+1) grid of points with the seam and pole points duplicated (as a
 // parametric source makes them), two triangles per quad, tcoords (u,v), unit normals,
-// DESIGN.md tangents (4 components), optionally dPdu/dPdv; all in double, or all in float.
-inline vtkSmartPointer<vtkPolyData> MakeMesh(
-  const Surface& s, int U, int V, bool derivatives, bool floatPoints = false)
+// DESIGN.md tangents (4 components), optionally dPdu/dPdv and (with them) dNdu/dNdv; all in
+// double, or all in float.
+inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, bool derivatives,
+  bool floatPoints = false, bool normalDerivatives = false)
 {
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
@@ -202,6 +219,7 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(
     return vtkSmartPointer<vtkDoubleArray>::New();
   };
   auto normals = array(), tcoords = array(), du = array(), dv = array(), tangents = array();
+  auto ndu = array(), ndv = array();
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(n);
@@ -217,6 +235,12 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(
   dv->SetName("dPdv");
   dv->SetNumberOfComponents(3);
   dv->SetNumberOfTuples(n);
+  ndu->SetName("dNdu");
+  ndu->SetNumberOfComponents(3);
+  ndu->SetNumberOfTuples(n);
+  ndv->SetName("dNdv");
+  ndv->SetNumberOfComponents(3);
+  ndv->SetNumberOfTuples(n);
   for (int j = 0; j <= V; ++j)
   {
     for (int i = 0; i <= U; ++i)
@@ -229,6 +253,8 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(
       tcoords->SetTuple2(id, u, v);
       du->SetTuple(id, pu.data());
       dv->SetTuple(id, pv.data());
+      ndu->SetTuple(id, s.Nu(u, v).data());
+      ndv->SetTuple(id, s.Nv(u, v).data());
       // At a pole dP/du vanishes; dP/dv's direction rotated about n is then the tangent.
       Vec t = Add(pu, nn, -DotV(pu, nn));
       if (DotV(t, t) < 1e-20)
@@ -261,6 +287,11 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(
   {
     poly->GetPointData()->AddArray(du);
     poly->GetPointData()->AddArray(dv);
+  }
+  if (derivatives && normalDerivatives)
+  {
+    poly->GetPointData()->AddArray(ndu);
+    poly->GetPointData()->AddArray(ndv);
   }
   return poly;
 }

@@ -7,7 +7,8 @@
 // - positions between vertices (triangle centroids): the piecewise-linear chord error,
 //   second order in the mesh spacing;
 // - Exact normals: second order (central least-squares fits of n_s, n_t and, without
-//   dPdu/dPdv, of p_s, p_t);
+//   dPdu/dPdv, of p_s, p_t); with dNdu/dNdv, no mesh error at all, and the image's
+//   reconstruction error, second order in the texel size;
 // - Mesh normals: at least first order;
 // - Approximate normals: no convergence on curved surfaces (the dropped d dn/du terms
 //   are a fixed bias), equal to Exact on the flat rectangle; and equal to the seed's formula
@@ -62,10 +63,23 @@ Vec SeedNormal(const Surface& s, double u, double v)
   return Unit(m);
 }
 
-Errors Measure(const Surface& s, int U, int mode, bool derivatives, vtkImageData* image)
+// Which derivatives the input mesh carries.
+enum Derivatives
+{
+  None,   // P_s, P_t (and Exact's n_s, n_t) fitted
+  DP,     // dPdu/dPdv, n_s and n_t fitted
+  DPAndDN // dPdu/dPdv and dNdu/dNdv
+};
+
+const char* DerivativesName(int d)
+{
+  return d == DPAndDN ? "dP,dN" : (d == DP ? "dP" : "no");
+}
+
+Errors Measure(const Surface& s, int U, int mode, int derivatives, vtkImageData* image)
 {
   const int V = s.Name == "torus" ? U / 2 : U;
-  auto mesh = MakeMesh(s, U, V, derivatives);
+  auto mesh = MakeMesh(s, U, V, derivatives != None, false, derivatives == DPAndDN);
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, mesh);
   filter->SetInputData(1, image);
@@ -153,23 +167,25 @@ void RunSurface(const Surface& s)
   const std::vector<int> resolutions = { 32, 64, 128, 256 };
   const int modes[3] = { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
     vtkDisplacementMapFilter::Mesh };
-  std::map<std::pair<int, bool>, std::vector<Errors>> table;
-  std::printf("%-10s %-12s %-6s %5s %12s %12s %12s %12s %12s\n", "surface", "mode", "dPdu", "U",
+  std::map<std::pair<int, int>, std::vector<Errors>> table;
+  std::printf("%-10s %-12s %-6s %5s %12s %12s %12s %12s %12s\n", "surface", "mode", "derivs", "U",
     "vertex", "centroid", "angle(deg)", "interior", "to seed");
   for (int mode : modes)
   {
-    for (bool derivs : { true, false })
+    for (int derivs : { DPAndDN, DP, None })
     {
-      if (mode == vtkDisplacementMapFilter::Mesh && derivs)
+      // Mesh normals use no derivatives, Approximate no dNdu/dNdv.
+      if ((mode == vtkDisplacementMapFilter::Mesh && derivs != None) ||
+        (mode == vtkDisplacementMapFilter::Approximate && derivs == DPAndDN))
       {
-        continue; // Mesh normals do not use the derivatives
+        continue;
       }
       for (int U : resolutions)
       {
         const Errors e = Measure(s, U, mode, derivs, image);
         table[{ mode, derivs }].push_back(e);
         std::printf("%-10s %-12s %-6s %5d %12.3e %12.3e %12.3e %12.3e %12.3e\n", s.Name.c_str(),
-          ModeName(mode), derivs ? "yes" : "no", U, e.Vertex, e.Centroid, e.Angle, e.Interior,
+          ModeName(mode), DerivativesName(derivs), U, e.Vertex, e.Centroid, e.Angle, e.Interior,
           e.Seed);
       }
     }
@@ -178,8 +194,8 @@ void RunSurface(const Surface& s)
   for (const auto& entry : table)
   {
     const std::vector<Errors>& e = entry.second;
-    SCOPED_TRACE(std::string(s.Name) + " " + ModeName(entry.first.first) +
-      (entry.first.second ? " with dPdu" : " fitted"));
+    SCOPED_TRACE(std::string(s.Name) + " " + ModeName(entry.first.first) + " derivatives " +
+      DerivativesName(entry.first.second));
     for (const Errors& x : e)
     {
       // Vertices sit on the displaced surface up to the image reconstruction error.
@@ -199,19 +215,34 @@ void RunSurface(const Surface& s)
         EXPECT_LT(e[k].Angle, 2e-3);
       }
     }
-    else if (mode == vtkDisplacementMapFilter::Exact)
+    else if (mode == vtkDisplacementMapFilter::Exact && entry.first.second != DPAndDN)
     {
       // Second order. Next to a pole |p_s| = O(h) while a fitted p_s is off by O(h^2),
       // so there the fitted mode drops to first order (the analytic dPdu does not).
       EXPECT_GT(Order(e[last - 1].Interior, e[last].Interior), 1.8);
-      EXPECT_GT(Order(e[last - 1].Angle, e[last].Angle), entry.first.second ? 1.8 : 0.9);
+      EXPECT_GT(Order(e[last - 1].Angle, e[last].Angle), entry.first.second == DP ? 1.8 : 0.9);
       EXPECT_LT(e[last].Angle, 0.01);
+    }
+    if (mode == vtkDisplacementMapFilter::Exact && entry.first.second == DPAndDN)
+    {
+      // The surface's own n_s, n_t: no mesh error is left, at any resolution and at the poles
+      // too, only the slope error of the Cubic reconstruction of the image (which converges
+      // at second order in the texel size: ExactFromNormalDerivativesConverges).
+      const auto& fitted = table[{ vtkDisplacementMapFilter::Exact, None }];
+      const auto& fittedN = table[{ vtkDisplacementMapFilter::Exact, DP }];
+      for (size_t k = 0; k < e.size(); ++k)
+      {
+        EXPECT_LE(e[k].Angle, fitted[k].Angle * (1.0 + 1e-9)) << "U = " << resolutions[k];
+        EXPECT_LE(e[k].Angle, fittedN[k].Angle * (1.0 + 1e-9)) << "U = " << resolutions[k];
+        EXPECT_LT(e[k].Angle, 1e-4) << "U = " << resolutions[k];
+      }
+      EXPECT_LT(e[last].Angle, 1.1 * e[0].Angle);
     }
     if (mode == vtkDisplacementMapFilter::Mesh)
     {
       EXPECT_GT(Order(e[last - 1].Angle, e[last].Angle), 0.9);
     }
-    if (mode == vtkDisplacementMapFilter::Approximate && entry.first.second)
+    if (mode == vtkDisplacementMapFilter::Approximate && entry.first.second == DP)
     {
       // The seed's formula itself, evaluated from dPdu/dPdv as given: what is left is the
       // slope error of the Cubic reconstruction of the image, at any mesh resolution.
@@ -235,7 +266,7 @@ void RunSurface(const Surface& s)
   {
     // Curved and strongly displaced: Exact must beat the seed's approximation, and by far
     // at fine resolution where the approximation's bias dominates.
-    for (bool derivs : { true, false })
+    for (int derivs : { DP, None })
     {
       const auto& ex = table[{ vtkDisplacementMapFilter::Exact, derivs }];
       const auto& ap = table[{ vtkDisplacementMapFilter::Approximate, derivs }];
@@ -246,7 +277,7 @@ void RunSurface(const Surface& s)
       EXPECT_LT(10.0 * ex[last].Angle, ap[last].Angle);
       // Approximate is the seed's formula, whose bias from the exact normal is a hundred times
       // what separates the filter's Approximate normals (from dPdu/dPdv) from the formula.
-      if (derivs)
+      if (derivs == DP)
       {
         EXPECT_LT(100.0 * ap[last].Seed, ap[last].Angle);
       }
@@ -256,6 +287,82 @@ void RunSurface(const Surface& s)
   }
 }
 } // namespace
+
+// Exact with dNdu/dNdv has no mesh error left (RunSurface): its error is the slope error of the
+// Cubic reconstruction of the height map, which falls at second order in the texel size. A
+// coarse mesh (U = 64) and ever finer images show it.
+TEST(DisplacementMapFilterAccuracy, ExactFromNormalDerivativesConverges)
+{
+  for (const Surface& s : { Sphere(), Torus() })
+  {
+    const int U = 64, V = s.Name == "torus" ? U / 2 : U;
+    auto mesh = MakeMesh(s, U, V, true, false, true);
+    std::vector<double> angles;
+    const std::vector<int> widths = { 128, 256, 512, 1024 };
+    for (int W : widths)
+    {
+      vtkNew<vtkDisplacementMapFilter> filter;
+      filter->SetInputData(0, mesh);
+      filter->SetInputData(1, MakeHeightImage(s.Height, W, W / 2));
+      filter->SetScale(s.Scale);
+      filter->SetMidlevel(s.Midlevel);
+      filter->SetInterpolationToCubic();
+      filter->Update();
+      double worst = 0.0;
+      vtkDataArray* normals = filter->GetOutput()->GetPointData()->GetNormals();
+      for (int j = 0; j <= V; ++j)
+      {
+        for (int i = 0; i <= U; ++i)
+        {
+          if (s.Poles && (j == 0 || j == V))
+          {
+            continue;
+          }
+          Vec n;
+          normals->GetTuple(static_cast<vtkIdType>(j) * (U + 1) + i, n.data());
+          const double u = static_cast<double>(i) / U, v = static_cast<double>(j) / V;
+          worst = std::max(worst, AngleDeg(n, s.DisplacedNormal(u, v)));
+        }
+      }
+      angles.push_back(worst);
+      std::printf("%-10s Exact dP,dN  U %3d  image %4d x %4d  angle(deg) %10.3e\n", s.Name.c_str(),
+        U, W, W / 2, worst);
+    }
+    for (size_t k = 1; k < angles.size(); ++k)
+    {
+      EXPECT_GT(Order(angles[k - 1], angles[k]), 1.8) << s.Name << " image width " << widths[k];
+    }
+  }
+}
+
+// dNdu/dNdv are the derivatives of the normals as stored, whatever their orientation: a sphere
+// whose normals point inwards (and their derivatives with them) moves inwards by the heights,
+// and Exact's normals are that surface's, oriented as its normals, with no mesh error left.
+TEST(DisplacementMapFilterAccuracy, ExactFromNormalDerivativesOfInwardNormals)
+{
+  Surface s = Sphere();
+  const Surface out = Sphere();
+  auto negated = [](const std::function<Vec(double, double)>& f)
+  {
+    return [f](double u, double v)
+    {
+      const Vec x = f(u, v);
+      return Vec{ -x[0], -x[1], -x[2] };
+    };
+  };
+  s.N = negated(out.N);
+  s.Nu = negated(out.Nu);
+  s.Nv = negated(out.Nv);
+  auto image = MakeHeightImage(s.Height, 1024, 512);
+  for (int U : { 32, 64 })
+  {
+    const Errors e = Measure(s, U, vtkDisplacementMapFilter::Exact, DPAndDN, image);
+    std::printf(
+      "inward sphere, Exact dP,dN, U %d: vertex %.3e, angle(deg) %.3e\n", U, e.Vertex, e.Angle);
+    EXPECT_LT(e.Vertex, 1e-6);
+    EXPECT_LT(e.Angle, 1e-3);
+  }
+}
 
 TEST(DisplacementMapFilterAccuracy, Sphere)
 {
