@@ -66,6 +66,8 @@
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkPointData;
+
 class SURFACEDETAILFILTERS_EXPORT vtkMikkTSpaceTangents : public vtkPolyDataAlgorithm
 {
 public:
@@ -89,6 +91,10 @@ protected:
   ~vtkMikkTSpaceTangents() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The checks of the input that make the filter stop with an error.
+  bool CheckInput(vtkPolyData* input, vtkPolyData* output);
+  /// The input's point data in @a inPD, with normals from vtkPolyDataNormals if it has none.
+  bool PrepareNormals(vtkPolyData* input, vtkPointData* inPD);
 
   double AngularThreshold = 180.0;
 
