@@ -687,6 +687,9 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
     ProjectNormalize(this->Tris[t].Os, n, fan.Os[a].data());
     ProjectNormalize(this->Tris[t].Ot, n, fan.Ot[a].data());
     // The corner's weight: its angle, between the edges projected onto the tangent plane.
+    // As atan2 it keeps the tiny angles of slivers (acos of a cosine rounded to 1 gives 0,
+    // and a group of slivers would have no direction at all); an edge along the normal
+    // leaves no direction, and the reference then takes the angle as a right angle.
     const int i = fan.Corner[a];
     const double* p0 = &this->P[3 * this->CornerVertex(t, (i + 2) % 3)];
     const double* p2 = &this->P[3 * this->CornerVertex(t, (i + 1) % 3)];
@@ -694,7 +697,12 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
     double e2[3] = { p2[0] - pv[0], p2[1] - pv[1], p2[2] - pv[2] };
     ProjectNormalize(e1, n, e1);
     ProjectNormalize(e2, n, e2);
-    const double angle = std::acos(std::min(1.0, std::max(-1.0, vtkSurfaceDetail::Dot(e1, e2))));
+    double cross[3];
+    vtkSurfaceDetail::Cross(e1, e2, cross);
+    const bool zero = vtkSurfaceDetail::Dot(e1, e1) == 0.0 || vtkSurfaceDetail::Dot(e2, e2) == 0.0;
+    const double angle = zero
+      ? 0.5 * vtkMath::Pi()
+      : std::atan2(std::sqrt(vtkSurfaceDetail::Dot(cross, cross)), vtkSurfaceDetail::Dot(e1, e2));
     fan.Angle[a] = (this->Tris[t].Flag & GroupWithAny) || !std::isfinite(angle) ? 0.0 : angle;
   }
   // Groups, seeded in triangle order, each the linked triangles of its seed's orientation.
