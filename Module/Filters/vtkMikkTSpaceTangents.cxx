@@ -23,6 +23,7 @@
 #include "vtkPolygon.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLinksTemplate.h"
+#include "vtkTypeInt64Array.h"
 
 #include <algorithm>
 #include <array>
@@ -31,6 +32,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iterator>
+#include <memory>
 #include <numeric>
 #include <unordered_map>
 #include <utility>
@@ -64,9 +66,10 @@ inline void NormalizeIfNotZero(double v[3])
   const double len = std::sqrt(vtkSurfaceDetail::Dot(v, v));
   if (len > 0.0 && std::isfinite(len))
   {
-    v[0] /= len;
-    v[1] /= len;
-    v[2] /= len;
+    const double inv = 1.0 / len;
+    v[0] *= inv;
+    v[1] *= inv;
+    v[2] *= inv;
   }
 }
 
@@ -172,6 +175,8 @@ public:
   void EvaluateVertices();
   void FixQuadsWithOneDegenerateTriangle();
   void SplitPoints();
+  void DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vector<vtkIdType>& rank,
+    std::vector<vtkIdType>& firsts) const;
   void Assemble(vtkPointData* inPD, vtkPolyData* output) const;
   vtkIdType CountNonFinitePoints() const;
 
@@ -180,7 +185,11 @@ private:
   void BuildFan(vtkIdType v, Fan& fan);
   void EvaluateVertex(vtkIdType v, Fan& fan);
   void EvaluateGroup(Fan& fan) const;
-  vtkIdType CornerVertex(vtkIdType tri, int k) const { return this->TriVertex->GetValue(3 * tri + k); }
+  vtkIdType CornerVertex(vtkIdType tri, int k) const
+  {
+    return this->TriVertex->GetValue(3 * tri + k);
+  }
+  void SetVertexFrame(vtkIdType v, const Frame& frame);
   bool Orient(vtkIdType tri) const { return (this->Tris[tri].Flag & OrientPreserving) != 0; }
   const double* Normal(vtkIdType pt) const { return &this->N[3 * pt]; }
 
@@ -190,21 +199,34 @@ private:
   const double ThresholdCos;
   std::vector<vtkIdType> WeldOf; // point -> vertex: the smallest point id with its values
 
-  // Output polygons ("faces"): the input's triangles and quads, larger polygons and strips
-  // triangulated. FaceCell: the input cell each came from.
-  vtkNew<vtkIdTypeArray> Offsets, Connectivity;
+  // Output polygons ("faces"): the input's triangles and quads (its own arrays when it has
+  // nothing else), larger polygons and strips triangulated. FaceCell: the input cell each
+  // came from, when they are not the input's polygons.
+  vtkSmartPointer<vtkTypeInt64Array> Offsets, Connectivity;
   std::vector<vtkIdType> FaceCell;
   bool FacesAreInputPolys = true;
+  bool Renumbered = false;
 
   // Triangles of the faces with 3 or 4 corners, in face order (MikkTSpace's triangles).
+  // The big per-triangle and per-corner arrays are written entirely before they are read:
+  // not zero-filled first.
   std::vector<vtkIdType> FaceFirstTri;
-  std::vector<vtkIdType> TriCorner; // 3 per triangle: face corner (connectivity index)
-  vtkNew<vtkIdTypeArray> TriVertex; // 3 per triangle: welded vertex
-  std::vector<Triangle> Tris;
+  std::unique_ptr<vtkIdType[]> TriCorner; // 3 per triangle: face corner (connectivity index)
+  vtkNew<vtkIdTypeArray> TriVertex;       // 3 per triangle: welded vertex
+  std::unique_ptr<Triangle[]> Tris;
+  vtkIdType NumberOfTriangles = 0;
   vtkStaticCellLinksTemplate<vtkIdType> VertexLinks; // vertex -> triangles, decreasing
 
-  std::vector<Frame> CornerFrame; // per face corner
-  std::vector<char> CornerHasFrame;
+  std::unique_ptr<Frame[]> CornerFrame; // per corner of a face with 3 or 4 corners
+  // Per vertex: NoFrame, OneFrame (VertexFrame, for all its corners) or Mixed.
+  enum VertexState : char
+  {
+    NoFrame,
+    OneFrame,
+    Mixed
+  };
+  std::vector<VertexState> State;
+  std::unique_ptr<Frame[]> VertexFrame;
 
   // Output points: the input's, then one per extra frame of a split point.
   std::vector<Frame> PointFrame;
@@ -212,25 +234,30 @@ private:
 };
 
 // MikkTSpace identifies corners by value: points with identical position, normal and
-// texture coordinates are one vertex even if the cells do not share them. Points are
-// sorted by a hash of their values, which only brings candidates together: runs of equal
-// hashes are compared value by value. Points with a NaN equal nothing, as in the reference.
+// texture coordinates are one vertex even if the cells do not share them. A hash of the
+// values (computed in parallel) places each point in an open-addressing table, inserted in
+// point order, so that a vertex is its smallest point id; equal hashes are compared value
+// by value. Points with a NaN equal nothing, as in the reference.
 void MikkTSpace::Weld()
 {
   const vtkIdType n = this->NumberOfPoints;
-  auto values = [this](vtkIdType i)
+  auto same = [this](vtkIdType a, vtkIdType b)
   {
-    return std::array<double, 8>{ this->P[3 * i], this->P[3 * i + 1], this->P[3 * i + 2],
-      this->N[3 * i], this->N[3 * i + 1], this->N[3 * i + 2], this->T[2 * i], this->T[2 * i + 1] };
+    return std::equal(&this->P[3 * a], &this->P[3 * a + 3], &this->P[3 * b]) &&
+      std::equal(&this->N[3 * a], &this->N[3 * a + 3], &this->N[3 * b]) &&
+      std::equal(&this->T[2 * a], &this->T[2 * a + 2], &this->T[2 * b]);
   };
-  std::vector<std::pair<std::uint64_t, vtkIdType>> keys(n);
+  std::unique_ptr<std::uint64_t[]> hashes(new std::uint64_t[n]);
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
+        const double values[8] = { this->P[3 * i], this->P[3 * i + 1], this->P[3 * i + 2],
+          this->N[3 * i], this->N[3 * i + 1], this->N[3 * i + 2], this->T[2 * i],
+          this->T[2 * i + 1] };
         std::uint64_t h = 1469598103934665603ULL;
-        for (double x : values(i))
+        for (double x : values)
         {
           x = x == 0.0 ? 0.0 : x; // -0 equals 0: same hash
           std::uint64_t bits;
@@ -238,41 +265,32 @@ void MikkTSpace::Weld()
           h = (h ^ bits) * 0x100000001b3ULL;
           h ^= h >> 29;
         }
-        keys[i] = { h, i };
+        hashes[i] = h;
       }
     });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
-  this->WeldOf.resize(n);
-  std::vector<vtkIdType> representatives;
-  for (vtkIdType r = 0; r < n;)
+  std::uint64_t capacity = 16;
+  while (capacity < 2 * static_cast<std::uint64_t>(n))
   {
-    vtkIdType e = r + 1;
-    while (e < n && keys[e].first == keys[r].first)
+    capacity *= 2;
+  }
+  std::vector<vtkIdType> table(capacity, -1);
+  this->WeldOf.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    this->WeldOf[i] = i;
+    if (!same(i, i))
     {
-      ++e;
+      continue;
     }
-    representatives.clear();
-    for (vtkIdType k = r; k < e; ++k)
+    for (std::uint64_t slot = hashes[i] & (capacity - 1);; slot = (slot + 1) & (capacity - 1))
     {
-      const vtkIdType i = keys[k].second;
-      const auto vi = values(i);
-      this->WeldOf[i] = i;
-      if (vi != vi)
+      const vtkIdType o = table[slot];
+      if (o < 0 || (hashes[o] == hashes[i] && same(i, o)))
       {
-        continue;
-      }
-      auto same = std::find_if(representatives.begin(), representatives.end(),
-        [&](vtkIdType o) { return values(o) == vi; });
-      if (same != representatives.end())
-      {
-        this->WeldOf[i] = *same;
-      }
-      else
-      {
-        representatives.push_back(i);
+        (o < 0 ? table[slot] : this->WeldOf[i]) = o < 0 ? i : o;
+        break;
       }
     }
-    r = e;
   }
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
@@ -291,9 +309,20 @@ void MikkTSpace::Weld()
 void MikkTSpace::BuildFaces()
 {
   vtkPolyData* input = this->Input;
+  vtkCellArray* inPolys = input->GetPolys();
+  if (input->GetNumberOfStrips() == 0 && inPolys->IsStorage64Bit() &&
+    inPolys->GetMaxCellSize() <= 4)
+  {
+    // The input's own arrays, shared (SplitPoints copies the connectivity it renumbers).
+    this->Offsets = inPolys->GetOffsetsArray64();
+    this->Connectivity = inPolys->GetConnectivityArray64();
+    return;
+  }
+  this->Offsets = vtkSmartPointer<vtkTypeInt64Array>::New();
+  this->Connectivity = vtkSmartPointer<vtkTypeInt64Array>::New();
   const vtkIdType nLead = input->GetNumberOfVerts() + input->GetNumberOfLines();
   std::vector<vtkIdType> offsets{ 0 }, conn;
-  conn.reserve(input->GetPolys()->GetNumberOfConnectivityIds());
+  conn.reserve(inPolys->GetNumberOfConnectivityIds());
   offsets.reserve(input->GetNumberOfPolys() + 1);
   this->FaceCell.reserve(input->GetNumberOfPolys());
   auto addFace = [&](const vtkIdType* ids, vtkIdType npts, vtkIdType cell)
@@ -305,7 +334,7 @@ void MikkTSpace::BuildFaces()
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> triIds;
   vtkIdType cell = nLead;
-  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  auto polys = vtk::TakeSmartPointer(inPolys->NewIterator());
   for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cell)
   {
     vtkIdType npts;
@@ -374,9 +403,10 @@ void MikkTSpace::BuildTriangles()
     this->FaceFirstTri[f + 1] = this->FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
   }
   const vtkIdType nTris = this->FaceFirstTri[nFaces];
-  this->TriCorner.resize(3 * nTris);
+  this->NumberOfTriangles = nTris;
+  this->TriCorner.reset(new vtkIdType[3 * nTris]);
   this->TriVertex->SetNumberOfValues(3 * nTris);
-  this->Tris.resize(nTris);
+  this->Tris.reset(new Triangle[nTris]);
   vtkIdType* triVertex = this->TriVertex->GetPointer(0);
   auto pf = [this](vtkIdType pt, int c) { return static_cast<float>(this->P[3 * pt + c]); };
   auto tf = [this](vtkIdType pt, int c) { return static_cast<float>(this->T[2 * pt + c]); };
@@ -396,8 +426,8 @@ void MikkTSpace::BuildTriangles()
       ot2 += ot * ot;
     }
     const float absArea = std::abs(area);
-    const bool usable = NotZeroF(area) && NotZeroF(std::sqrt(os2) / absArea) &&
-      NotZeroF(std::sqrt(ot2) / absArea);
+    const bool usable =
+      NotZeroF(area) && NotZeroF(std::sqrt(os2) / absArea) && NotZeroF(std::sqrt(ot2) / absArea);
     tri.Flag = (area > 0.0f ? OrientPreserving : 0) | (usable ? 0 : GroupWithAny);
     const double* P = this->P.data();
     const double* T = this->T.data();
@@ -576,7 +606,7 @@ void MikkTSpace::BuildFan(vtkIdType v, Fan& fan)
 // cannot matter. Afterwards every vertex's groups depend on its own triangles only.
 void MikkTSpace::ResolveGroupWithAnyOrientation()
 {
-  const vtkIdType nTris = static_cast<vtkIdType>(this->Tris.size());
+  const vtkIdType nTris = this->NumberOfTriangles;
   std::vector<char> anyVertex(this->NumberOfPoints, 0);
   bool any = false;
   for (vtkIdType t = 0; t < nTris; ++t)
@@ -602,7 +632,8 @@ void MikkTSpace::ResolveGroupWithAnyOrientation()
     for (int i = 0; i < 3; ++i)
     {
       const vtkIdType v = this->CornerVertex(t, i);
-      if (!anyVertex[v] || (this->Tris[t].Flag & (GroupWithAny | Degenerate)) || assigned[3 * t + i])
+      if (!anyVertex[v] || (this->Tris[t].Flag & (GroupWithAny | Degenerate)) ||
+        assigned[3 * t + i])
       {
         continue;
       }
@@ -614,8 +645,8 @@ void MikkTSpace::ResolveGroupWithAnyOrientation()
       }
       const Fan& fan = found->second;
       const bool orient = this->Orient(t);
-      stack.assign(1,
-        static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), t) - fan.Tri.begin()));
+      stack.assign(
+        1, static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), t) - fan.Tri.begin()));
       while (!stack.empty())
       {
         const int a = stack.back();
@@ -655,8 +686,9 @@ void MikkTSpace::ResolveGroupWithAnyOrientation()
 // and the corners of degenerate triangles at the vertex.
 void MikkTSpace::EvaluateVertices()
 {
-  this->CornerFrame.resize(this->Connectivity->GetNumberOfValues());
-  this->CornerHasFrame.assign(this->Connectivity->GetNumberOfValues(), 0);
+  this->CornerFrame.reset(new Frame[this->Connectivity->GetNumberOfValues()]);
+  this->State.assign(this->NumberOfPoints, NoFrame);
+  this->VertexFrame.reset(new Frame[this->NumberOfPoints]);
   vtkSMPTools::For(0, this->NumberOfPoints,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -669,6 +701,24 @@ void MikkTSpace::EvaluateVertices()
         }
       }
     });
+}
+
+// The angle between two vectors whose cross product has length s and whose dot product is
+// c: atan2(s, c) to within 1.2e-8 radians, from a polynomial for atan on [0, 1] (a
+// Chebyshev fit of atan(q)/q in q^2), without the library call's cost per corner.
+inline double CornerAngle(double s, double c)
+{
+  const double ac = std::abs(c);
+  const bool steep = s > ac;
+  const double q = (steep ? ac : s) / (steep ? s : ac);
+  const double u = q * q, u2 = u * u, u4 = u2 * u2;
+  const double p01 = 0.9999999842426364 - 0.3333306678069164 * u;
+  const double p23 = 0.1999248357850966 - 0.1420257051178519 * u;
+  const double p45 = 0.1063675409849997 - 0.07495445444194075 * u;
+  const double p67 = 0.04258760747628684 - 0.016005030510568757 * u;
+  const double p = (p01 + p23 * u2) + (p45 + p67 * u2) * u4 + 0.002834064300823229 * (u4 * u4);
+  const double r = steep ? 0.5 * vtkMath::Pi() - q * p : q * p;
+  return c < 0.0 ? vtkMath::Pi() - r : r;
 }
 
 void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
@@ -687,22 +737,24 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
     ProjectNormalize(this->Tris[t].Os, n, fan.Os[a].data());
     ProjectNormalize(this->Tris[t].Ot, n, fan.Ot[a].data());
     // The corner's weight: its angle, between the edges projected onto the tangent plane.
-    // As atan2 it keeps the tiny angles of slivers (acos of a cosine rounded to 1 gives 0,
-    // and a group of slivers would have no direction at all); an edge along the normal
-    // leaves no direction, and the reference then takes the angle as a right angle.
+    // From the cross and dot products it keeps the tiny angles of slivers (acos of a
+    // cosine rounded to 1 gives 0, and a group of slivers would have no direction at all);
+    // an edge along the normal leaves no direction, and the reference then takes the
+    // angle as a right angle.
     const int i = fan.Corner[a];
     const double* p0 = &this->P[3 * this->CornerVertex(t, (i + 2) % 3)];
     const double* p2 = &this->P[3 * this->CornerVertex(t, (i + 1) % 3)];
-    double e1[3] = { p0[0] - pv[0], p0[1] - pv[1], p0[2] - pv[2] };
-    double e2[3] = { p2[0] - pv[0], p2[1] - pv[1], p2[2] - pv[2] };
-    ProjectNormalize(e1, n, e1);
-    ProjectNormalize(e2, n, e2);
+    const double d1[3] = { p0[0] - pv[0], p0[1] - pv[1], p0[2] - pv[2] };
+    const double d2[3] = { p2[0] - pv[0], p2[1] - pv[1], p2[2] - pv[2] };
+    const double n1 = vtkSurfaceDetail::Dot(n, d1), n2 = vtkSurfaceDetail::Dot(n, d2);
+    const double e1[3] = { d1[0] - n1 * n[0], d1[1] - n1 * n[1], d1[2] - n1 * n[2] };
+    const double e2[3] = { d2[0] - n2 * n[0], d2[1] - n2 * n[1], d2[2] - n2 * n[2] };
     double cross[3];
     vtkSurfaceDetail::Cross(e1, e2, cross);
     const bool zero = vtkSurfaceDetail::Dot(e1, e1) == 0.0 || vtkSurfaceDetail::Dot(e2, e2) == 0.0;
     const double angle = zero
       ? 0.5 * vtkMath::Pi()
-      : std::atan2(std::sqrt(vtkSurfaceDetail::Dot(cross, cross)), vtkSurfaceDetail::Dot(e1, e2));
+      : CornerAngle(std::sqrt(vtkSurfaceDetail::Dot(cross, cross)), vtkSurfaceDetail::Dot(e1, e2));
     fan.Angle[a] = (this->Tris[t].Flag & GroupWithAny) || !std::isfinite(angle) ? 0.0 : angle;
   }
   // Groups, seeded in triangle order, each the linked triangles of its seed's orientation.
@@ -739,7 +791,11 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
   }
   // Per face corner: a quad's corner on its diagonal has a space from each triangle, which
   // the reference averages unless they are equal; the later group's orientation wins.
+  // Most corners of a vertex share one space: its frame is made once.
   const double placeholder[3] = { 1.0, 0.0, 0.0 };
+  double lastOs[3] = { 0.0, 0.0, 0.0 };
+  int lastOrient = -1;
+  Frame frame{};
   for (size_t a = 0; a < k; ++a)
   {
     const vtkIdType c = this->TriCorner[3 * fan.Tri[a] + fan.Corner[a]];
@@ -747,8 +803,8 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
     const size_t b = pair ? a + 1 : a;
     const int ga = fan.Group[a], gb = fan.Group[b];
     double os[3];
-    std::copy_n(ga >= 0 ? fan.Result[a].data() : (gb >= 0 ? fan.Result[b].data() : placeholder),
-      3, os);
+    std::copy_n(
+      ga >= 0 ? fan.Result[a].data() : (gb >= 0 ? fan.Result[b].data() : placeholder), 3, os);
     if (ga >= 0 && gb >= 0 && fan.Result[a] != fan.Result[b])
     {
       for (int i = 0; i < 3; ++i)
@@ -758,8 +814,15 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
       NormalizeIfNotZero(os);
     }
     const int g = std::max(ga, gb);
-    this->CornerFrame[c] = FinalFrame(n, os, g >= 0 && this->Orient(fan.Tri[g]));
-    this->CornerHasFrame[c] = 1;
+    const int orient = g >= 0 && this->Orient(fan.Tri[g]) ? 1 : 0;
+    if (orient != lastOrient || !std::equal(os, os + 3, lastOs))
+    {
+      frame = FinalFrame(n, os, orient != 0);
+      lastOrient = orient;
+      std::copy_n(os, 3, lastOs);
+    }
+    this->CornerFrame[c] = frame;
+    this->SetVertexFrame(v, frame);
     a = b;
   }
   // Degenerate triangles take the space of the vertex's first good triangle.
@@ -777,9 +840,24 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
         this->CornerFrame[c] = k > 0
           ? this->CornerFrame[this->TriCorner[3 * fan.Tri[0] + fan.Corner[0]]]
           : FinalFrame(n, placeholder, false);
-        this->CornerHasFrame[c] = 1;
+        this->SetVertexFrame(v, this->CornerFrame[c]);
       }
     }
+  }
+}
+
+// Whether all the corners of vertex v have one frame: only the points of vertices with
+// several frames need their corners looked at again, to be split.
+void MikkTSpace::SetVertexFrame(vtkIdType v, const Frame& frame)
+{
+  if (this->State[v] == NoFrame)
+  {
+    this->State[v] = OneFrame;
+    this->VertexFrame[v] = frame;
+  }
+  else if (this->State[v] == OneFrame && !SameFrame(this->VertexFrame[v], frame))
+  {
+    this->State[v] = Mixed;
   }
 }
 
@@ -791,14 +869,17 @@ void MikkTSpace::EvaluateGroup(Fan& fan) const
 {
   auto joins = [&](int f, int a)
   {
+    if (vtkSurfaceDetail::Dot(fan.Os[f].data(), fan.Os[a].data()) > this->ThresholdCos &&
+      vtkSurfaceDetail::Dot(fan.Ot[f].data(), fan.Ot[a].data()) > this->ThresholdCos)
+    {
+      return true;
+    }
+    // Triangles of one quad (which share a corner) and those without usable derivatives.
     const vtkIdType tf = fan.Tri[f], ta = fan.Tri[a];
     const vtkIdType* cf = &this->TriCorner[3 * std::min(tf, ta)];
     const vtkIdType first = this->TriCorner[3 * std::max(tf, ta)];
-    const bool sameFace =
-      tf == ta || (std::abs(tf - ta) == 1 && (cf[0] == first || cf[1] == first || cf[2] == first));
-    return sameFace || ((this->Tris[tf].Flag | this->Tris[ta].Flag) & GroupWithAny) ||
-      (vtkSurfaceDetail::Dot(fan.Os[f].data(), fan.Os[a].data()) > this->ThresholdCos &&
-        vtkSurfaceDetail::Dot(fan.Ot[f].data(), fan.Ot[a].data()) > this->ThresholdCos);
+    return tf == ta || (std::abs(tf - ta) == 1 && std::find(cf, cf + 3, first) != cf + 3) ||
+      ((this->Tris[tf].Flag | this->Tris[ta].Flag) & GroupWithAny);
   };
   auto average = [&](const std::vector<int>& subset)
   {
@@ -842,191 +923,192 @@ void MikkTSpace::EvaluateGroup(Fan& fan) const
 
 // A quad with one degenerate triangle: its corner that only the degenerate triangle has
 // takes the space of the good triangle's corner at the same position (made orthogonal to
-// its own normal), or the placeholder if there is none.
+// its own normal), or the placeholder if there is none. Rare: one serial pass.
 void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
 {
   const vtkIdType nFaces = this->Offsets->GetNumberOfValues() - 1;
-  vtkSMPTools::For(0, nFaces,
-    [&](vtkIdType begin, vtkIdType end)
+  const vtkIdType* conn = this->Connectivity->GetPointer(0);
+  const double placeholder[3] = { 1.0, 0.0, 0.0 };
+  for (vtkIdType f = 0; f < nFaces; ++f)
+  {
+    const vtkIdType t = this->FaceFirstTri[f];
+    if (this->FaceFirstTri[f + 1] - t != 2 || !(this->Tris[t].Flag & QuadOneDegenerate))
     {
-      const vtkIdType* conn = this->Connectivity->GetPointer(0);
-      const double placeholder[3] = { 1.0, 0.0, 0.0 };
-      for (vtkIdType f = begin; f < end; ++f)
-      {
-        const vtkIdType t = this->FaceFirstTri[f];
-        if (this->FaceFirstTri[f + 1] - t != 2 || !(this->Tris[t].Flag & QuadOneDegenerate))
-        {
-          continue;
-        }
-        const vtkIdType good = (this->Tris[t].Flag & Degenerate) ? t + 1 : t;
-        const vtkIdType* c = &this->TriCorner[3 * good];
-        const vtkIdType base = this->Offsets->GetValue(f);
-        vtkIdType missing = base;
-        while (missing == c[0] || missing == c[1] || missing == c[2])
-        {
-          ++missing;
-        }
-        const double* target = &this->P[3 * conn[missing]];
-        const vtkIdType* src = std::find_if(c, c + 3,
-          [&](vtkIdType s)
-          {
-            const double* p = &this->P[3 * conn[s]];
-            return p[0] == target[0] && p[1] == target[1] && p[2] == target[2];
-          });
-        const double* n = this->Normal(conn[missing]);
-        if (src == c + 3)
-        {
-          this->CornerFrame[missing] = FinalFrame(n, placeholder, false);
-          continue;
-        }
-        const Frame& s = this->CornerFrame[*src];
-        const double os[3] = { s[0], s[1], s[2] };
-        this->CornerFrame[missing] = FinalFrame(n, os, s[3] > 0.0f);
-      }
-    });
+      continue;
+    }
+    const vtkIdType good = (this->Tris[t].Flag & Degenerate) ? t + 1 : t;
+    const vtkIdType* c = &this->TriCorner[3 * good];
+    vtkIdType missing = this->Offsets->GetValue(f);
+    while (missing == c[0] || missing == c[1] || missing == c[2])
+    {
+      ++missing;
+    }
+    const double* target = &this->P[3 * conn[missing]];
+    const vtkIdType* src = std::find_if(
+      c, c + 3, [&](vtkIdType j) { return std::equal(target, target + 3, &this->P[3 * conn[j]]); });
+    const double* n = this->Normal(conn[missing]);
+    if (src == c + 3)
+    {
+      this->CornerFrame[missing] = FinalFrame(n, placeholder, false);
+    }
+    else
+    {
+      const Frame& from = this->CornerFrame[*src];
+      const double os[3] = { from[0], from[1], from[2] };
+      this->CornerFrame[missing] = FinalFrame(n, os, from[3] > 0.0f);
+    }
+    this->SetVertexFrame(this->WeldOf[conn[missing]], this->CornerFrame[missing]);
+  }
 }
 
 // A point keeps the frame of its first corner; every other distinct frame among its
 // corners becomes a new point after the input's, numbered in point order and then in
-// order of first appearance, and its corners are renumbered.
+// order of first appearance, and its corners are renumbered. Only the points of vertices
+// with several frames are looked at corner by corner.
 void MikkTSpace::SplitPoints()
 {
   const vtkIdType nPts = this->NumberOfPoints;
-  vtkNew<vtkCellArray> faces;
-  faces->SetData(this->Offsets, this->Connectivity);
-  vtkStaticCellLinksTemplate<vtkIdType> links;
-  links.SerialBuildLinks(nPts, faces->GetNumberOfCells(), faces);
-  vtkIdType* conn = this->Connectivity->GetPointer(0);
-  const vtkIdType* off = this->Offsets->GetPointer(0);
-  // The point's corners that have a frame, in corner order.
-  auto cornersOf = [&](vtkIdType p, std::vector<vtkIdType>& corners)
-  {
-    corners.clear();
-    const vtkIdType* cells = links.GetCells(p);
-    for (vtkIdType l = links.GetNumberOfCells(p) - 1; l >= 0; --l)
-    {
-      if (l + 1 < links.GetNumberOfCells(p) && cells[l] == cells[l + 1])
-      {
-        continue;
-      }
-      for (vtkIdType j = off[cells[l]]; j < off[cells[l] + 1]; ++j)
-      {
-        if (conn[j] == p && this->CornerHasFrame[j])
-        {
-          corners.push_back(j);
-        }
-      }
-    }
-  };
-  // The distinct frames of the corners in order of first appearance: firsts[d] is the
-  // first corner with frame d, rank[i] the frame number of corners[i].
-  auto distinct = [&](const std::vector<vtkIdType>& corners, std::vector<size_t>& order,
-                    std::vector<size_t>& rank, std::vector<vtkIdType>& firsts)
-  {
-    order.resize(corners.size());
-    for (size_t i = 0; i < order.size(); ++i)
-    {
-      order[i] = i;
-    }
-    auto frame = [&](size_t i) { return this->CornerFrame[corners[i]].data(); };
-    std::sort(order.begin(), order.end(),
-      [&](size_t x, size_t y)
-      {
-        const int c = std::memcmp(frame(x), frame(y), sizeof(Frame));
-        return c < 0 || (c == 0 && x < y);
-      });
-    firsts.clear();
-    rank.resize(corners.size());
-    for (size_t i = 0; i < order.size(); ++i)
-    {
-      if (i == 0 || std::memcmp(frame(order[i - 1]), frame(order[i]), sizeof(Frame)) != 0)
-      {
-        firsts.push_back(static_cast<vtkIdType>(order[i]));
-      }
-      rank[order[i]] = firsts.size() - 1;
-    }
-    std::vector<size_t> byFirst(firsts.size()), renumber(firsts.size());
-    for (size_t d = 0; d < firsts.size(); ++d)
-    {
-      byFirst[d] = d;
-    }
-    std::sort(byFirst.begin(), byFirst.end(),
-      [&](size_t x, size_t y) { return firsts[x] < firsts[y]; });
-    std::vector<vtkIdType> sorted(firsts.size());
-    for (size_t d = 0; d < byFirst.size(); ++d)
-    {
-      renumber[byFirst[d]] = d;
-      sorted[d] = corners[firsts[byFirst[d]]];
-    }
-    firsts.swap(sorted);
-    for (size_t& r : rank)
-    {
-      r = renumber[r];
-    }
-  };
-  std::vector<vtkIdType> extra(nPts + 1, 0);
   this->PointFrame.resize(nPts);
   vtkSMPTools::For(0, nPts,
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<vtkIdType> corners, firsts;
-      std::vector<size_t> order, rank;
       const double zero[3] = { 0.0, 0.0, 0.0 };
       for (vtkIdType p = begin; p < end; ++p)
       {
-        cornersOf(p, corners);
-        if (corners.empty())
+        const vtkIdType v = this->WeldOf[p];
+        this->PointFrame[p] = this->State[v] == NoFrame ? FinalFrame(this->Normal(p), zero, true)
+                                                        : this->VertexFrame[v];
+      }
+    });
+  // Point -> its corners in corner order, for the points of mixed vertices only.
+  std::vector<vtkIdType> slot(nPts, -1), mixed;
+  for (vtkIdType p = 0; p < nPts; ++p)
+  {
+    if (this->State[this->WeldOf[p]] == Mixed)
+    {
+      slot[p] = static_cast<vtkIdType>(mixed.size());
+      mixed.push_back(p);
+    }
+  }
+  if (mixed.empty())
+  {
+    return;
+  }
+  const vtkIdType nFaces = this->Offsets->GetNumberOfValues() - 1;
+  const vtkIdType* off = this->Offsets->GetPointer(0);
+  auto forEachCorner = [&](const vtkIdType* conn, auto&& visit)
+  {
+    for (vtkIdType f = 0; f < nFaces; ++f)
+    {
+      for (vtkIdType j = off[f];
+           j < off[f + 1] && this->FaceFirstTri[f + 1] > this->FaceFirstTri[f]; ++j)
+      {
+        if (slot[conn[j]] >= 0)
         {
-          this->PointFrame[p] = FinalFrame(this->Normal(p), zero, true); // on no polygon
-          continue;
+          visit(slot[conn[j]], j);
         }
-        const Frame& first = this->CornerFrame[corners[0]];
-        this->PointFrame[p] = first;
-        if (!std::all_of(corners.begin(), corners.end(),
-              [&](vtkIdType c) { return SameFrame(this->CornerFrame[c], first); }))
+      }
+    }
+  };
+  const vtkIdType nMixed = static_cast<vtkIdType>(mixed.size());
+  std::vector<vtkIdType> start(nMixed + 1, 0);
+  forEachCorner(this->Connectivity->GetPointer(0), [&](vtkIdType s, vtkIdType) { ++start[s + 1]; });
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<vtkIdType> corners(start.back()), fill(start.begin(), start.end() - 1);
+  forEachCorner(
+    this->Connectivity->GetPointer(0), [&](vtkIdType s, vtkIdType j) { corners[fill[s]++] = j; });
+
+  std::vector<vtkIdType> extra(nMixed + 1, 0);
+  vtkSMPTools::For(0, nMixed,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkIdType> rank, firsts;
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        this->DistinctFrames(&corners[start[i]], start[i + 1] - start[i], rank, firsts);
+        if (!firsts.empty())
         {
-          distinct(corners, order, rank, firsts);
-          extra[p + 1] = static_cast<vtkIdType>(firsts.size()) - 1;
+          this->PointFrame[mixed[i]] = this->CornerFrame[firsts[0]];
+          extra[i + 1] = static_cast<vtkIdType>(firsts.size()) - 1;
         }
       }
     });
-  for (vtkIdType p = 0; p < nPts; ++p)
-  {
-    extra[p + 1] += extra[p];
-  }
-  const vtkIdType nExtra = extra[nPts];
+  std::partial_sum(extra.begin(), extra.end(), extra.begin());
+  const vtkIdType nExtra = extra.back();
   if (nExtra == 0)
   {
     return;
   }
+  // A copy to renumber: the connectivity may be the input's own array.
+  auto renumbered = vtkSmartPointer<vtkTypeInt64Array>::New();
+  renumbered->DeepCopy(this->Connectivity);
+  this->Connectivity = renumbered;
+  this->Renumbered = true;
+  vtkIdType* conn = renumbered->GetPointer(0);
   this->PointFrame.resize(nPts + nExtra);
   this->ExtraSource.resize(nExtra);
-  vtkSMPTools::For(0, nPts,
+  vtkSMPTools::For(0, nMixed,
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<vtkIdType> corners, firsts;
-      std::vector<size_t> order, rank;
-      for (vtkIdType p = begin; p < end; ++p)
+      std::vector<vtkIdType> rank, firsts;
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        if (extra[p + 1] == extra[p])
-        {
-          continue;
-        }
-        cornersOf(p, corners);
-        distinct(corners, order, rank, firsts);
-        auto idOf = [&](size_t d) { return d == 0 ? p : nPts + extra[p] + vtkIdType(d) - 1; };
-        for (size_t d = 1; d < firsts.size(); ++d)
+        const vtkIdType* pc = &corners[start[i]];
+        this->DistinctFrames(pc, start[i + 1] - start[i], rank, firsts);
+        auto idOf = [&](vtkIdType d) { return d == 0 ? mixed[i] : nPts + extra[i] + d - 1; };
+        for (vtkIdType d = 1; d < static_cast<vtkIdType>(firsts.size()); ++d)
         {
           this->PointFrame[idOf(d)] = this->CornerFrame[firsts[d]];
-          this->ExtraSource[idOf(d) - nPts] = p;
+          this->ExtraSource[idOf(d) - nPts] = mixed[i];
         }
-        for (size_t i = 0; i < corners.size(); ++i)
+        for (size_t c = 0; c < rank.size(); ++c)
         {
-          conn[corners[i]] = idOf(rank[i]);
+          conn[pc[c]] = idOf(rank[c]);
         }
       }
     });
-  this->FacesAreInputPolys = false;
+}
+
+// The distinct frames of @a m corners in order of first appearance: firsts[d] is the
+// first corner with frame d, rank[i] the frame number of corners[i]. A sort, not a scan
+// of the frames found so far: a point may have thousands.
+void MikkTSpace::DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vector<vtkIdType>& rank,
+  std::vector<vtkIdType>& firsts) const
+{
+  std::vector<vtkIdType> order(m);
+  std::iota(order.begin(), order.end(), 0);
+  auto frame = [&](vtkIdType i) { return this->CornerFrame[corners[i]].data(); };
+  std::sort(order.begin(), order.end(),
+    [&](vtkIdType x, vtkIdType y)
+    {
+      const int c = std::memcmp(frame(x), frame(y), sizeof(Frame));
+      return c < 0 || (c == 0 && x < y);
+    });
+  // Runs of one frame, each led by its first corner; then the runs by their first corner.
+  std::vector<vtkIdType> runOf(m), leaders;
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    if (i == 0 || std::memcmp(frame(order[i - 1]), frame(order[i]), sizeof(Frame)) != 0)
+    {
+      leaders.push_back(order[i]);
+    }
+    runOf[order[i]] = static_cast<vtkIdType>(leaders.size()) - 1;
+  }
+  std::vector<vtkIdType> byFirst(leaders.size()), number(leaders.size());
+  std::iota(byFirst.begin(), byFirst.end(), 0);
+  std::sort(byFirst.begin(), byFirst.end(),
+    [&](vtkIdType x, vtkIdType y) { return leaders[x] < leaders[y]; });
+  firsts.resize(leaders.size());
+  for (size_t d = 0; d < byFirst.size(); ++d)
+  {
+    number[byFirst[d]] = static_cast<vtkIdType>(d);
+    firsts[d] = corners[leaders[byFirst[d]]];
+  }
+  rank.resize(m);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    rank[i] = number[runOf[i]];
+  }
 }
 
 // The output: the input's points and point data (copied to the split points), the
@@ -1072,18 +1154,24 @@ void MikkTSpace::Assemble(vtkPointData* inPD, vtkPolyData* output) const
 
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
-  if (this->FacesAreInputPolys)
+  if (this->FacesAreInputPolys && !this->Renumbered)
   {
     output->SetPolys(input->GetPolys());
-    output->GetCellData()->PassData(input->GetCellData());
   }
   else
   {
     vtkNew<vtkCellArray> polys;
     polys->SetData(this->Offsets, this->Connectivity);
     output->SetPolys(polys);
+  }
+  if (this->FacesAreInputPolys)
+  {
+    output->GetCellData()->PassData(input->GetCellData());
+  }
+  else
+  {
     const vtkIdType nLead = input->GetNumberOfVerts() + input->GetNumberOfLines();
-    const vtkIdType nCells = nLead + polys->GetNumberOfCells();
+    const vtkIdType nCells = nLead + static_cast<vtkIdType>(this->FaceCell.size());
     vtkNew<vtkIdList> src = identity(nCells);
     std::copy(this->FaceCell.begin(), this->FaceCell.end(), src->begin() + nLead);
     output->GetCellData()->CopyAllocate(input->GetCellData(), nCells);
@@ -1136,8 +1224,9 @@ int vtkMikkTSpaceTangents::RequestData(
   mikk.Assemble(inPD, output);
   if (const vtkIdType nonFinite = mikk.CountNonFinitePoints())
   {
-    vtkWarningMacro(<< nonFinite << " points have non-finite coordinates; the tangents around "
-                                    "them are arbitrary unit vectors orthogonal to the normal.");
+    vtkWarningMacro(<< nonFinite
+                    << " points have non-finite coordinates; the tangents around "
+                       "them are arbitrary unit vectors orthogonal to the normal.");
   }
   return 1;
 }
