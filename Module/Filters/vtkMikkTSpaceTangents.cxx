@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <unordered_map>
@@ -89,13 +90,8 @@ inline void ProjectNormalize(const double v[3], const double n[3], double out[3]
 // placeholder along the normal, non-finite input) becomes any unit vector orthogonal to it.
 Frame FinalFrame(const double n[3], const double os[3], bool orient)
 {
-  double nn[3] = { n[0], n[1], n[2] };
-  if (!(std::abs(vtkSurfaceDetail::Dot(nn, nn) - 1.0) < 1e-6))
-  {
-    nn[0] = 0.0;
-    nn[1] = 0.0;
-    nn[2] = 1.0;
-  }
+  const double up[3] = { 0.0, 0.0, 1.0 };
+  const double* nn = std::abs(vtkSurfaceDetail::Dot(n, n) - 1.0) < 1e-6 ? n : up;
   const double d = vtkSurfaceDetail::Dot(nn, os);
   double t[4] = { os[0] - d * nn[0], os[1] - d * nn[1], os[2] - d * nn[2], 0.0 };
   const double len = vtkSurfaceDetail::Normalize(t);
@@ -113,36 +109,26 @@ inline bool SameFrame(const Frame& a, const Frame& b)
   return std::memcmp(a.data(), b.data(), sizeof(Frame)) == 0;
 }
 
-// Copies the first nc components of every tuple into doubles (typed access for float and
-// double arrays, the generic one for the rest).
-struct ReadComponents
+// The first nc components of every tuple, as doubles (typed access for float and double
+// arrays, the generic one for the rest).
+std::vector<double> Read(vtkDataArray* array, int nc)
 {
-  template <typename ArrayT>
-  void operator()(ArrayT* array, int nc, double* out) const
+  std::vector<double> out(static_cast<size_t>(nc) * array->GetNumberOfTuples());
+  auto copy = [&](auto* typed)
   {
-    const auto tuples = vtk::DataArrayTupleRange(array);
+    const auto tuples = vtk::DataArrayTupleRange(typed);
     vtkSMPTools::For(0, tuples.size(),
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          for (int c = 0; c < nc; ++c)
-          {
-            out[nc * i + c] = static_cast<double>(tuples[i][c]);
-          }
+          std::copy_n(tuples[i].begin(), nc, &out[nc * i]);
         }
       });
-  }
-};
-
-std::vector<double> Read(vtkDataArray* array, int nc)
-{
-  std::vector<double> out(static_cast<size_t>(nc) * array->GetNumberOfTuples());
-  ReadComponents worker;
-  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
-        array, worker, nc, out.data()))
+  };
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(array, copy))
   {
-    worker(array, nc, out.data());
+    copy(array);
   }
   return out;
 }
@@ -178,10 +164,12 @@ public:
   void DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vector<vtkIdType>& rank,
     std::vector<vtkIdType>& firsts) const;
   void Assemble(vtkPointData* inPD, vtkPolyData* output) const;
-  vtkIdType CountNonFinitePoints() const;
+  vtkIdType NonFinitePoints = 0; // points with a non-finite coordinate
+
+  struct Fan;
 
 private:
-  struct Fan;
+  float EvaluateTriangle(const vtkIdType c[3], Triangle& tri) const;
   void BuildFan(vtkIdType v, Fan& fan);
   void EvaluateVertex(vtkIdType v, Fan& fan);
   void EvaluateGroup(Fan& fan) const;
@@ -278,6 +266,8 @@ void MikkTSpace::Weld()
   for (vtkIdType i = 0; i < n; ++i)
   {
     this->WeldOf[i] = i;
+    const double* p = &this->P[3 * i];
+    this->NonFinitePoints += !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
     if (!same(i, i))
     {
       continue;
@@ -402,104 +392,45 @@ void MikkTSpace::BuildTriangles()
     const vtkIdType n = off[f + 1] - off[f];
     this->FaceFirstTri[f + 1] = this->FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
   }
-  const vtkIdType nTris = this->FaceFirstTri[nFaces];
-  this->NumberOfTriangles = nTris;
+  const vtkIdType nTris = this->NumberOfTriangles = this->FaceFirstTri[nFaces];
   this->TriCorner.reset(new vtkIdType[3 * nTris]);
   this->TriVertex->SetNumberOfValues(3 * nTris);
   this->Tris.reset(new Triangle[nTris]);
   vtkIdType* triVertex = this->TriVertex->GetPointer(0);
-  auto pf = [this](vtkIdType pt, int c) { return static_cast<float>(this->P[3 * pt + c]); };
-  auto tf = [this](vtkIdType pt, int c) { return static_cast<float>(this->T[2 * pt + c]); };
-  // The reference's CalcTexArea and tangent directions of one triangle of corners c.
-  auto evaluate = [&](const vtkIdType c[3], Triangle& tri, float& area)
+  // Squared distance between the points of face corners i and j, as floats, in texture
+  // space (2 components) or in space (3).
+  auto dist2 = [&](const double* x, int nc, vtkIdType i, vtkIdType j)
   {
-    const vtkIdType p[3] = { conn[c[0]], conn[c[1]], conn[c[2]] };
-    const float t21x = tf(p[1], 0) - tf(p[0], 0), t21y = tf(p[1], 1) - tf(p[0], 1);
-    const float t31x = tf(p[2], 0) - tf(p[0], 0), t31y = tf(p[2], 1) - tf(p[0], 1);
-    area = t21x * t31y - t21y * t31x;
-    float os2 = 0.0f, ot2 = 0.0f;
-    for (int k = 0; k < 3; ++k)
+    float d2 = 0.0f;
+    for (int k = 0; k < nc; ++k)
     {
-      const float d1 = pf(p[1], k) - pf(p[0], k), d2 = pf(p[2], k) - pf(p[0], k);
-      const float os = t31y * d1 - t21y * d2, ot = -t31x * d1 + t21x * d2;
-      os2 += os * os;
-      ot2 += ot * ot;
+      const float d =
+        static_cast<float>(x[nc * conn[j] + k]) - static_cast<float>(x[nc * conn[i] + k]);
+      d2 += d * d;
     }
-    const float absArea = std::abs(area);
-    const bool usable =
-      NotZeroF(area) && NotZeroF(std::sqrt(os2) / absArea) && NotZeroF(std::sqrt(ot2) / absArea);
-    tri.Flag = (area > 0.0f ? OrientPreserving : 0) | (usable ? 0 : GroupWithAny);
-    const double* P = this->P.data();
-    const double* T = this->T.data();
-    const double s21 = T[2 * p[1] + 1] - T[2 * p[0] + 1], s31 = T[2 * p[2] + 1] - T[2 * p[0] + 1];
-    const double r21 = T[2 * p[1]] - T[2 * p[0]], r31 = T[2 * p[2]] - T[2 * p[0]];
-    const double sign = area > 0.0f ? 1.0 : -1.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double d1 = P[3 * p[1] + k] - P[3 * p[0] + k], d2 = P[3 * p[2] + k] - P[3 * p[0] + k];
-      tri.Os[k] = usable ? sign * (s31 * d1 - s21 * d2) : 0.0;
-      tri.Ot[k] = usable ? sign * (r21 * d2 - r31 * d1) : 0.0;
-    }
-    NormalizeIfNotZero(tri.Os);
-    NormalizeIfNotZero(tri.Ot);
-    const double* p0 = &P[3 * p[0]];
-    const double* p1 = &P[3 * p[1]];
-    const double* p2 = &P[3 * p[2]];
-    auto same = [](const double* a, const double* b)
-    { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; };
-    if (same(p0, p1) || same(p0, p2) || same(p1, p2))
-    {
-      tri.Flag |= Degenerate;
-    }
+    return d2;
   };
   vtkSMPTools::For(0, nFaces,
     [&](vtkIdType begin, vtkIdType end)
     {
+      const int split[2][6] = { { 0, 1, 3, 1, 2, 3 }, { 0, 1, 2, 0, 2, 3 } };
       for (vtkIdType f = begin; f < end; ++f)
       {
-        const vtkIdType t = this->FaceFirstTri[f], nt = this->FaceFirstTri[f + 1] - t;
-        if (nt == 0)
-        {
-          continue;
-        }
-        const vtkIdType b = off[f];
-        vtkIdType* c = &this->TriCorner[3 * t];
-        if (nt == 1)
-        {
-          c[0] = b;
-          c[1] = b + 1;
-          c[2] = b + 2;
-        }
-        else
-        {
-          auto dist2 = [&](bool position, int i, int j)
-          {
-            float s = 0.0f;
-            for (int k = 0; k < (position ? 3 : 2); ++k)
-            {
-              const float d = position ? pf(conn[b + j], k) - pf(conn[b + i], k)
-                                       : tf(conn[b + j], k) - tf(conn[b + i], k);
-              s += d * d;
-            }
-            return s;
-          };
-          const float t02 = dist2(false, 0, 2), t13 = dist2(false, 1, 3);
-          const bool diag02 =
-            t02 < t13 || (!(t13 < t02) && !(dist2(true, 1, 3) < dist2(true, 0, 2)));
-          const int split[2][6] = { { 0, 1, 3, 1, 2, 3 }, { 0, 1, 2, 0, 2, 3 } };
-          for (int k = 0; k < 6; ++k)
-          {
-            c[k] = b + split[diag02][k];
-          }
-        }
+        const vtkIdType t = this->FaceFirstTri[f], nt = this->FaceFirstTri[f + 1] - t, b = off[f];
+        const double* T = this->T.data();
+        const bool diag02 = nt != 2 || dist2(T, 2, b, b + 2) < dist2(T, 2, b + 1, b + 3) ||
+          (!(dist2(T, 2, b + 1, b + 3) < dist2(T, 2, b, b + 2)) &&
+            !(dist2(this->P.data(), 3, b + 1, b + 3) < dist2(this->P.data(), 3, b, b + 2)));
         float area[2];
         for (vtkIdType i = 0; i < nt; ++i)
         {
-          evaluate(c + 3 * i, this->Tris[t + i], area[i]);
+          vtkIdType* c = &this->TriCorner[3 * (t + i)];
           for (int k = 0; k < 3; ++k)
           {
-            triVertex[3 * (t + i) + k] = this->WeldOf[conn[c[3 * i + k]]];
+            c[k] = b + split[diag02][3 * i + k];
+            triVertex[3 * (t + i) + k] = this->WeldOf[conn[c[k]]];
           }
+          area[i] = this->EvaluateTriangle(c, this->Tris[t + i]);
         }
         if (nt == 2)
         {
@@ -526,6 +457,48 @@ void MikkTSpace::BuildTriangles()
   this->VertexLinks.SerialBuildLinks(this->NumberOfPoints, nTris, triangles);
 }
 
+// The triangle of face corners c: its flags (the reference's expressions in single
+// precision: eq. 18, 19 of its description, CalcTexArea) and its directions (in double).
+// Returns the signed texture area as the reference computes it.
+float MikkTSpace::EvaluateTriangle(const vtkIdType c[3], Triangle& tri) const
+{
+  const vtkIdType* conn = this->Connectivity->GetPointer(0);
+  const double* p[3] = { &this->P[3 * conn[c[0]]], &this->P[3 * conn[c[1]]],
+    &this->P[3 * conn[c[2]]] };
+  const double* t[3] = { &this->T[2 * conn[c[0]]], &this->T[2 * conn[c[1]]],
+    &this->T[2 * conn[c[2]]] };
+  auto f = [](double x) { return static_cast<float>(x); };
+  const float t21x = f(t[1][0]) - f(t[0][0]), t21y = f(t[1][1]) - f(t[0][1]);
+  const float t31x = f(t[2][0]) - f(t[0][0]), t31y = f(t[2][1]) - f(t[0][1]);
+  const float area = t21x * t31y - t21y * t31x;
+  float os2 = 0.0f, ot2 = 0.0f;
+  for (int k = 0; k < 3; ++k)
+  {
+    const float d1 = f(p[1][k]) - f(p[0][k]), d2 = f(p[2][k]) - f(p[0][k]);
+    const float os = t31y * d1 - t21y * d2, ot = -t31x * d1 + t21x * d2;
+    os2 += os * os;
+    ot2 += ot * ot;
+  }
+  const float absArea = std::abs(area);
+  const bool usable =
+    NotZeroF(area) && NotZeroF(std::sqrt(os2) / absArea) && NotZeroF(std::sqrt(ot2) / absArea);
+  auto same = [](const double* a, const double* b) { return std::equal(a, a + 3, b); };
+  tri.Flag = (area > 0.0f ? OrientPreserving : 0) | (usable ? 0 : GroupWithAny) |
+    (same(p[0], p[1]) || same(p[0], p[2]) || same(p[1], p[2]) ? Degenerate : 0);
+  const double sign = area > 0.0f ? 1.0 : -1.0;
+  const double s21 = t[1][1] - t[0][1], s31 = t[2][1] - t[0][1];
+  const double r21 = t[1][0] - t[0][0], r31 = t[2][0] - t[0][0];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d1 = p[1][k] - p[0][k], d2 = p[2][k] - p[0][k];
+    tri.Os[k] = usable ? sign * (s31 * d1 - s21 * d2) : 0.0;
+    tri.Ot[k] = usable ? sign * (r21 * d2 - r31 * d1) : 0.0;
+  }
+  NormalizeIfNotZero(tri.Os);
+  NormalizeIfNotZero(tri.Ot);
+  return area;
+}
+
 /// The good triangles around one vertex and how they connect there.
 struct MikkTSpace::Fan
 {
@@ -539,6 +512,29 @@ struct MikkTSpace::Fan
   std::vector<std::array<double, 3>> Os, Ot, Result;
   std::vector<double> Angle;
 };
+
+// Visits the triangles linked to fan entry @a s, depth first: enter(a) says whether a
+// joins (and records it); only those that join spread further.
+template <typename Enter>
+void Flood(const MikkTSpace::Fan& fan, int s, std::vector<int>& stack, Enter&& enter)
+{
+  stack.assign(1, s);
+  while (!stack.empty())
+  {
+    const int a = stack.back();
+    stack.pop_back();
+    if (enter(a))
+    {
+      for (int b : { fan.Out[a], fan.In[a] })
+      {
+        if (b >= 0)
+        {
+          stack.push_back(b);
+        }
+      }
+    }
+  }
+}
 
 // Triangles are neighbours across an edge they use in opposite directions. Where more than
 // two share an edge, the reference pairs them greedily in triangle order: each unpaired one
@@ -645,37 +641,26 @@ void MikkTSpace::ResolveGroupWithAnyOrientation()
       }
       const Fan& fan = found->second;
       const bool orient = this->Orient(t);
-      stack.assign(
-        1, static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), t) - fan.Tri.begin()));
-      while (!stack.empty())
-      {
-        const int a = stack.back();
-        stack.pop_back();
-        const vtkIdType u = fan.Tri[a];
-        char& done = assigned[3 * u + fan.Corner[a]];
-        if (done)
+      const int seed =
+        static_cast<int>(std::lower_bound(fan.Tri.begin(), fan.Tri.end(), t) - fan.Tri.begin());
+      Flood(fan, seed, stack,
+        [&](int a)
         {
-          continue;
-        }
-        int& flag = this->Tris[u].Flag;
-        if ((flag & GroupWithAny) && !assigned[3 * u] && !assigned[3 * u + 1] &&
-          !assigned[3 * u + 2])
-        {
-          flag = (flag & ~OrientPreserving) | (orient ? OrientPreserving : 0);
-        }
-        if (this->Orient(u) != orient)
-        {
-          continue;
-        }
-        done = 1;
-        for (int b : { fan.Out[a], fan.In[a] })
-        {
-          if (b >= 0)
+          const vtkIdType u = fan.Tri[a];
+          char& done = assigned[3 * u + fan.Corner[a]];
+          int& flag = this->Tris[u].Flag;
+          if (done)
           {
-            stack.push_back(b);
+            return false;
           }
-        }
-      }
+          if ((flag & GroupWithAny) && !assigned[3 * u] && !assigned[3 * u + 1] &&
+            !assigned[3 * u + 2])
+          {
+            flag = (flag & ~OrientPreserving) | (orient ? OrientPreserving : 0);
+          }
+          done = this->Orient(u) == orient ? 1 : 0;
+          return done != 0;
+        });
     }
   }
 }
@@ -767,25 +752,17 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
     }
     const bool orient = this->Orient(fan.Tri[s]);
     fan.Members.clear();
-    fan.Stack.assign(1, static_cast<int>(s));
-    while (!fan.Stack.empty())
-    {
-      const int a = fan.Stack.back();
-      fan.Stack.pop_back();
-      if (fan.Group[a] >= 0 || this->Orient(fan.Tri[a]) != orient)
+    Flood(fan, static_cast<int>(s), fan.Stack,
+      [&](int a)
       {
-        continue;
-      }
-      fan.Group[a] = static_cast<int>(s);
-      fan.Members.push_back(a);
-      for (int b : { fan.Out[a], fan.In[a] })
-      {
-        if (b >= 0)
+        if (fan.Group[a] >= 0 || this->Orient(fan.Tri[a]) != orient)
         {
-          fan.Stack.push_back(b);
+          return false;
         }
-      }
-    }
+        fan.Group[a] = static_cast<int>(s);
+        fan.Members.push_back(a);
+        return true;
+      });
     std::sort(fan.Members.begin(), fan.Members.end());
     this->EvaluateGroup(fan);
   }
@@ -1018,96 +995,64 @@ void MikkTSpace::SplitPoints()
   forEachCorner(
     this->Connectivity->GetPointer(0), [&](vtkIdType s, vtkIdType j) { corners[fill[s]++] = j; });
 
-  std::vector<vtkIdType> extra(nMixed + 1, 0);
-  vtkSMPTools::For(0, nMixed,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      std::vector<vtkIdType> rank, firsts;
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        this->DistinctFrames(&corners[start[i]], start[i + 1] - start[i], rank, firsts);
-        if (!firsts.empty())
-        {
-          this->PointFrame[mixed[i]] = this->CornerFrame[firsts[0]];
-          extra[i + 1] = static_cast<vtkIdType>(firsts.size()) - 1;
-        }
-      }
-    });
-  std::partial_sum(extra.begin(), extra.end(), extra.begin());
-  const vtkIdType nExtra = extra.back();
-  if (nExtra == 0)
+  // Rare, and in point order: serial. The connectivity is copied before it is renumbered
+  // (it may be the input's own array).
+  std::vector<vtkIdType> rank, firsts;
+  vtkIdType* conn = nullptr;
+  for (vtkIdType i = 0; i < nMixed; ++i)
   {
-    return;
-  }
-  // A copy to renumber: the connectivity may be the input's own array.
-  auto renumbered = vtkSmartPointer<vtkTypeInt64Array>::New();
-  renumbered->DeepCopy(this->Connectivity);
-  this->Connectivity = renumbered;
-  this->Renumbered = true;
-  vtkIdType* conn = renumbered->GetPointer(0);
-  this->PointFrame.resize(nPts + nExtra);
-  this->ExtraSource.resize(nExtra);
-  vtkSMPTools::For(0, nMixed,
-    [&](vtkIdType begin, vtkIdType end)
+    const vtkIdType* pc = &corners[start[i]];
+    this->DistinctFrames(pc, start[i + 1] - start[i], rank, firsts);
+    for (size_t d = 0; d < firsts.size(); ++d)
     {
-      std::vector<vtkIdType> rank, firsts;
-      for (vtkIdType i = begin; i < end; ++i)
+      const Frame frame = this->CornerFrame[firsts[d]];
+      if (d == 0)
       {
-        const vtkIdType* pc = &corners[start[i]];
-        this->DistinctFrames(pc, start[i + 1] - start[i], rank, firsts);
-        auto idOf = [&](vtkIdType d) { return d == 0 ? mixed[i] : nPts + extra[i] + d - 1; };
-        for (vtkIdType d = 1; d < static_cast<vtkIdType>(firsts.size()); ++d)
-        {
-          this->PointFrame[idOf(d)] = this->CornerFrame[firsts[d]];
-          this->ExtraSource[idOf(d) - nPts] = mixed[i];
-        }
-        for (size_t c = 0; c < rank.size(); ++c)
-        {
-          conn[pc[c]] = idOf(rank[c]);
-        }
+        this->PointFrame[mixed[i]] = frame;
+        continue;
       }
-    });
+      if (!conn)
+      {
+        auto renumbered = vtkSmartPointer<vtkTypeInt64Array>::New();
+        renumbered->DeepCopy(this->Connectivity);
+        this->Connectivity = renumbered;
+        conn = renumbered->GetPointer(0);
+        this->Renumbered = true;
+      }
+      firsts[d] = static_cast<vtkIdType>(this->PointFrame.size());
+      this->PointFrame.push_back(frame);
+      this->ExtraSource.push_back(mixed[i]);
+    }
+    for (size_t c = 0; c < rank.size(); ++c)
+    {
+      if (rank[c] > 0)
+      {
+        conn[pc[c]] = firsts[rank[c]];
+      }
+    }
+  }
 }
 
 // The distinct frames of @a m corners in order of first appearance: firsts[d] is the
-// first corner with frame d, rank[i] the frame number of corners[i]. A sort, not a scan
-// of the frames found so far: a point may have thousands.
+// first corner with frame d, rank[i] the frame number of corners[i]. Frames are told apart
+// by their bits, as they are stored.
 void MikkTSpace::DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vector<vtkIdType>& rank,
   std::vector<vtkIdType>& firsts) const
 {
-  std::vector<vtkIdType> order(m);
-  std::iota(order.begin(), order.end(), 0);
-  auto frame = [&](vtkIdType i) { return this->CornerFrame[corners[i]].data(); };
-  std::sort(order.begin(), order.end(),
-    [&](vtkIdType x, vtkIdType y)
-    {
-      const int c = std::memcmp(frame(x), frame(y), sizeof(Frame));
-      return c < 0 || (c == 0 && x < y);
-    });
-  // Runs of one frame, each led by its first corner; then the runs by their first corner.
-  std::vector<vtkIdType> runOf(m), leaders;
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    if (i == 0 || std::memcmp(frame(order[i - 1]), frame(order[i]), sizeof(Frame)) != 0)
-    {
-      leaders.push_back(order[i]);
-    }
-    runOf[order[i]] = static_cast<vtkIdType>(leaders.size()) - 1;
-  }
-  std::vector<vtkIdType> byFirst(leaders.size()), number(leaders.size());
-  std::iota(byFirst.begin(), byFirst.end(), 0);
-  std::sort(byFirst.begin(), byFirst.end(),
-    [&](vtkIdType x, vtkIdType y) { return leaders[x] < leaders[y]; });
-  firsts.resize(leaders.size());
-  for (size_t d = 0; d < byFirst.size(); ++d)
-  {
-    number[byFirst[d]] = static_cast<vtkIdType>(d);
-    firsts[d] = corners[leaders[byFirst[d]]];
-  }
+  auto less = [](const Frame& x, const Frame& y)
+  { return std::memcmp(x.data(), y.data(), sizeof(Frame)) < 0; };
+  std::map<Frame, vtkIdType, decltype(less)> number(less);
+  firsts.clear();
   rank.resize(m);
   for (vtkIdType i = 0; i < m; ++i)
   {
-    rank[i] = number[runOf[i]];
+    const auto found =
+      number.emplace(this->CornerFrame[corners[i]], static_cast<vtkIdType>(firsts.size()));
+    if (found.second)
+    {
+      firsts.push_back(corners[i]);
+    }
+    rank[i] = found.first->second;
   }
 }
 
@@ -1180,16 +1125,6 @@ void MikkTSpace::Assemble(vtkPointData* inPD, vtkPolyData* output) const
   output->GetFieldData()->PassData(input->GetFieldData());
 }
 
-vtkIdType MikkTSpace::CountNonFinitePoints() const
-{
-  vtkIdType count = 0;
-  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
-  {
-    const double* p = &this->P[3 * i];
-    count += !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
-  }
-  return count;
-}
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -1222,9 +1157,9 @@ int vtkMikkTSpaceTangents::RequestData(
   this->UpdateProgress(0.7);
   mikk.SplitPoints();
   mikk.Assemble(inPD, output);
-  if (const vtkIdType nonFinite = mikk.CountNonFinitePoints())
+  if (mikk.NonFinitePoints > 0)
   {
-    vtkWarningMacro(<< nonFinite
+    vtkWarningMacro(<< mikk.NonFinitePoints
                     << " points have non-finite coordinates; the tangents around "
                        "them are arbitrary unit vectors orthogonal to the normal.");
   }

@@ -241,6 +241,21 @@ TEST(vtkMikkTSpaceTangents, QuadsStripsPolygonsVertsLinesAndCellData)
   }
 }
 
+// Polygons of one or two points have no triangle: they pass through, and their points keep
+// a valid frame.
+TEST(vtkMikkTSpaceTangents, PolygonsOfFewerThanThreePointsPassThrough)
+{
+  auto plane = MakePlane(4);
+  const vtkIdType two[2] = { 24, 3 }, one[1] = { 7 };
+  plane->GetPolys()->InsertNextCell(2, two);
+  plane->GetPolys()->InsertNextCell(1, one);
+  FilterRun run(plane);
+  EXPECT_EQ(run.Errors->Count, 0);
+  EXPECT_EQ(run.Output()->GetNumberOfPolys(), plane->GetNumberOfPolys());
+  EXPECT_EQ(run.Output()->GetNumberOfPoints(), plane->GetNumberOfPoints());
+  ExpectValidFrames(run.Output());
+}
+
 // Split points carry copies of all point data; cell data and connectivity stay consistent.
 TEST(vtkMikkTSpaceTangents, SplitPointsKeepPointData)
 {
