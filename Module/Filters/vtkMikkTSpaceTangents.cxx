@@ -173,10 +173,7 @@ private:
   void BuildFan(vtkIdType v, Fan& fan);
   void EvaluateVertex(vtkIdType v, Fan& fan);
   void EvaluateGroup(Fan& fan) const;
-  vtkIdType CornerVertex(vtkIdType tri, int k) const
-  {
-    return this->TriVertex->GetValue(3 * tri + k);
-  }
+  vtkIdType CornerVertex(vtkIdType tri, int k) const { return this->TriVertexIds[3 * tri + k]; }
   void SetVertexFrame(vtkIdType v, const Frame& frame);
   bool Orient(vtkIdType tri) const { return (this->Tris[tri].Flag & OrientPreserving) != 0; }
   const double* Normal(vtkIdType pt) const { return &this->N[3 * pt]; }
@@ -199,8 +196,9 @@ private:
   // The big per-triangle and per-corner arrays are written entirely before they are read:
   // not zero-filled first.
   std::vector<vtkIdType> FaceFirstTri;
-  std::unique_ptr<vtkIdType[]> TriCorner; // 3 per triangle: face corner (connectivity index)
-  vtkNew<vtkIdTypeArray> TriVertex;       // 3 per triangle: welded vertex
+  std::unique_ptr<vtkIdType[]> TriCorner;  // 3 per triangle: face corner (connectivity index)
+  vtkNew<vtkIdTypeArray> TriVertex;        // 3 per triangle: welded vertex
+  const vtkIdType* TriVertexIds = nullptr; // its values
   std::unique_ptr<Triangle[]> Tris;
   vtkIdType NumberOfTriangles = 0;
   vtkStaticCellLinksTemplate<vtkIdType> VertexLinks; // vertex -> triangles, decreasing
@@ -397,6 +395,7 @@ void MikkTSpace::BuildTriangles()
   this->TriVertex->SetNumberOfValues(3 * nTris);
   this->Tris.reset(new Triangle[nTris]);
   vtkIdType* triVertex = this->TriVertex->GetPointer(0);
+  this->TriVertexIds = triVertex;
   // Squared distance between the points of face corners i and j, as floats, in texture
   // space (2 components) or in space (3).
   auto dist2 = [&](const double* x, int nc, vtkIdType i, vtkIdType j)
