@@ -21,6 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkPolygon.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLinksTemplate.h"
 #include "vtkTypeInt64Array.h"
@@ -161,8 +162,8 @@ public:
   void EvaluateVertices();
   void FixQuadsWithOneDegenerateTriangle();
   void SplitPoints();
-  void DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vector<vtkIdType>& rank,
-    std::vector<vtkIdType>& firsts) const;
+  void DistinctFrames(const vtkIdType* corners, vtkIdType m, vtkIdType v,
+    std::vector<vtkIdType>& rank, std::vector<vtkIdType>& firsts) const;
   void Assemble(vtkPointData* inPD, vtkPolyData* output) const;
   vtkIdType NonFinitePoints = 0; // points with a non-finite coordinate
 
@@ -171,10 +172,12 @@ public:
 private:
   float EvaluateTriangle(const vtkIdType c[3], Triangle& tri) const;
   void BuildFan(vtkIdType v, Fan& fan);
-  void EvaluateVertex(vtkIdType v, Fan& fan);
+  void EvaluateVertex(vtkIdType v, Fan& fan, std::vector<std::pair<vtkIdType, Frame>>& differing);
   void EvaluateGroup(Fan& fan) const;
   vtkIdType CornerVertex(vtkIdType tri, int k) const { return this->TriVertexIds[3 * tri + k]; }
-  void SetVertexFrame(vtkIdType v, const Frame& frame);
+  void SetCornerFrame(vtkIdType v, vtkIdType c, const Frame& frame,
+    std::vector<std::pair<vtkIdType, Frame>>& differing);
+  Frame FrameOf(vtkIdType c, vtkIdType v) const;
   bool Orient(vtkIdType tri) const { return (this->Tris[tri].Flag & OrientPreserving) != 0; }
   const double* Normal(vtkIdType pt) const { return &this->N[3 * pt]; }
 
@@ -203,7 +206,9 @@ private:
   vtkIdType NumberOfTriangles = 0;
   vtkStaticCellLinksTemplate<vtkIdType> VertexLinks; // vertex -> triangles, decreasing
 
-  std::unique_ptr<Frame[]> CornerFrame; // per corner of a face with 3 or 4 corners
+  // Corner frames: most corners have their vertex's frame (VertexFrame); the others are
+  // listed in Differing, sorted by corner.
+  std::vector<std::pair<vtkIdType, Frame>> Differing;
   // Per vertex: NoFrame, OneFrame (VertexFrame, for all its corners) or Mixed.
   enum VertexState : char
   {
@@ -670,9 +675,9 @@ void MikkTSpace::ResolveGroupWithAnyOrientation()
 // and the corners of degenerate triangles at the vertex.
 void MikkTSpace::EvaluateVertices()
 {
-  this->CornerFrame.reset(new Frame[this->Connectivity->GetNumberOfValues()]);
   this->State.assign(this->NumberOfPoints, NoFrame);
   this->VertexFrame.reset(new Frame[this->NumberOfPoints]);
+  vtkSMPThreadLocal<std::vector<std::pair<vtkIdType, Frame>>> differing;
   vtkSMPTools::For(0, this->NumberOfPoints,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -681,10 +686,17 @@ void MikkTSpace::EvaluateVertices()
       {
         if (this->WeldOf[v] == v)
         {
-          this->EvaluateVertex(v, fan);
+          this->EvaluateVertex(v, fan, differing.Local());
         }
       }
     });
+  for (const auto& local : differing)
+  {
+    this->Differing.insert(this->Differing.end(), local.begin(), local.end());
+  }
+  std::sort(this->Differing.begin(), this->Differing.end(),
+    [](const std::pair<vtkIdType, Frame>& x, const std::pair<vtkIdType, Frame>& y)
+    { return x.first < y.first; });
 }
 
 // The angle between two vectors whose cross product has length s and whose dot product is
@@ -705,7 +717,8 @@ inline double CornerAngle(double s, double c)
   return c < 0.0 ? vtkMath::Pi() - r : r;
 }
 
-void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
+void MikkTSpace::EvaluateVertex(
+  vtkIdType v, Fan& fan, std::vector<std::pair<vtkIdType, Frame>>& differing)
 {
   this->BuildFan(v, fan);
   const size_t k = fan.Tri.size();
@@ -797,8 +810,7 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
       lastOrient = orient;
       std::copy_n(os, 3, lastOs);
     }
-    this->CornerFrame[c] = frame;
-    this->SetVertexFrame(v, frame);
+    this->SetCornerFrame(v, c, frame, differing);
     a = b;
   }
   // Degenerate triangles take the space of the vertex's first good triangle.
@@ -812,29 +824,36 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan)
     {
       if (this->CornerVertex(d, j) == v)
       {
-        const vtkIdType c = this->TriCorner[3 * d + j];
-        this->CornerFrame[c] = k > 0
-          ? this->CornerFrame[this->TriCorner[3 * fan.Tri[0] + fan.Corner[0]]]
-          : FinalFrame(n, placeholder, false);
-        this->SetVertexFrame(v, this->CornerFrame[c]);
+        // The first good triangle's frame is the vertex's (the first one set).
+        this->SetCornerFrame(v, this->TriCorner[3 * d + j],
+          k > 0 ? this->VertexFrame[v] : FinalFrame(n, placeholder, false), differing);
       }
     }
   }
 }
 
-// Whether all the corners of vertex v have one frame: only the points of vertices with
-// several frames need their corners looked at again, to be split.
-void MikkTSpace::SetVertexFrame(vtkIdType v, const Frame& frame)
+// The frame of corner c of vertex v: the vertex's own (its first) or, where it differs,
+// listed; a vertex with several frames is Mixed, and only its points may need splitting.
+void MikkTSpace::SetCornerFrame(
+  vtkIdType v, vtkIdType c, const Frame& frame, std::vector<std::pair<vtkIdType, Frame>>& differing)
 {
   if (this->State[v] == NoFrame)
   {
     this->State[v] = OneFrame;
     this->VertexFrame[v] = frame;
   }
-  else if (this->State[v] == OneFrame && !SameFrame(this->VertexFrame[v], frame))
+  else if (!SameFrame(this->VertexFrame[v], frame))
   {
     this->State[v] = Mixed;
+    differing.emplace_back(c, frame);
   }
+}
+
+Frame MikkTSpace::FrameOf(vtkIdType c, vtkIdType v) const
+{
+  const auto found = std::lower_bound(this->Differing.begin(), this->Differing.end(), c,
+    [](const std::pair<vtkIdType, Frame>& x, vtkIdType y) { return x.first < y; });
+  return found != this->Differing.end() && found->first == c ? found->second : this->VertexFrame[v];
 }
 
 // The space of each member of a group: the angle-weighted average, in increasing triangle
@@ -905,6 +924,7 @@ void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
   const vtkIdType nFaces = this->Offsets->GetNumberOfValues() - 1;
   const vtkIdType* conn = this->Connectivity->GetPointer(0);
   const double placeholder[3] = { 1.0, 0.0, 0.0 };
+  std::vector<std::pair<vtkIdType, Frame>> added;
   for (vtkIdType f = 0; f < nFaces; ++f)
   {
     const vtkIdType t = this->FaceFirstTri[f];
@@ -923,18 +943,16 @@ void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
     const vtkIdType* src = std::find_if(
       c, c + 3, [&](vtkIdType j) { return std::equal(target, target + 3, &this->P[3 * conn[j]]); });
     const double* n = this->Normal(conn[missing]);
-    if (src == c + 3)
-    {
-      this->CornerFrame[missing] = FinalFrame(n, placeholder, false);
-    }
-    else
-    {
-      const Frame& from = this->CornerFrame[*src];
-      const double os[3] = { from[0], from[1], from[2] };
-      this->CornerFrame[missing] = FinalFrame(n, os, from[3] > 0.0f);
-    }
-    this->SetVertexFrame(this->WeldOf[conn[missing]], this->CornerFrame[missing]);
+    const Frame from = src == c + 3 ? Frame{ 1.0f, 0.0f, 0.0f, -1.0f }
+                                    : this->FrameOf(*src, this->WeldOf[conn[*src]]);
+    const double os[3] = { from[0], from[1], from[2] };
+    this->SetCornerFrame(this->WeldOf[conn[missing]], missing,
+      FinalFrame(n, src == c + 3 ? placeholder : os, from[3] > 0.0f), added);
   }
+  this->Differing.insert(this->Differing.end(), added.begin(), added.end());
+  std::sort(this->Differing.begin(), this->Differing.end(),
+    [](const std::pair<vtkIdType, Frame>& x, const std::pair<vtkIdType, Frame>& y)
+    { return x.first < y.first; });
 }
 
 // A point keeps the frame of its first corner; every other distinct frame among its
@@ -1001,10 +1019,10 @@ void MikkTSpace::SplitPoints()
   for (vtkIdType i = 0; i < nMixed; ++i)
   {
     const vtkIdType* pc = &corners[start[i]];
-    this->DistinctFrames(pc, start[i + 1] - start[i], rank, firsts);
+    this->DistinctFrames(pc, start[i + 1] - start[i], this->WeldOf[mixed[i]], rank, firsts);
     for (size_t d = 0; d < firsts.size(); ++d)
     {
-      const Frame frame = this->CornerFrame[firsts[d]];
+      const Frame frame = this->FrameOf(firsts[d], this->WeldOf[mixed[i]]);
       if (d == 0)
       {
         this->PointFrame[mixed[i]] = frame;
@@ -1035,8 +1053,8 @@ void MikkTSpace::SplitPoints()
 // The distinct frames of @a m corners in order of first appearance: firsts[d] is the
 // first corner with frame d, rank[i] the frame number of corners[i]. Frames are told apart
 // by their bits, as they are stored.
-void MikkTSpace::DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vector<vtkIdType>& rank,
-  std::vector<vtkIdType>& firsts) const
+void MikkTSpace::DistinctFrames(const vtkIdType* corners, vtkIdType m, vtkIdType v,
+  std::vector<vtkIdType>& rank, std::vector<vtkIdType>& firsts) const
 {
   auto less = [](const Frame& x, const Frame& y)
   { return std::memcmp(x.data(), y.data(), sizeof(Frame)) < 0; };
@@ -1046,7 +1064,7 @@ void MikkTSpace::DistinctFrames(const vtkIdType* corners, vtkIdType m, std::vect
   for (vtkIdType i = 0; i < m; ++i)
   {
     const auto found =
-      number.emplace(this->CornerFrame[corners[i]], static_cast<vtkIdType>(firsts.size()));
+      number.emplace(this->FrameOf(corners[i], v), static_cast<vtkIdType>(firsts.size()));
     if (found.second)
     {
       firsts.push_back(corners[i]);
