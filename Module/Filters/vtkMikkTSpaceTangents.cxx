@@ -55,6 +55,15 @@ constexpr int QuadOneDegenerate = 8; // a quad whose other triangle is degenerat
 constexpr size_t MaxSubGroupTest = 1024;
 
 using Frame = std::array<float, 4>;
+using CornerFrames = std::vector<std::pair<vtkIdType, Frame>>; // (face corner, frame)
+
+// Sorts a list of corner frames by corner, for lookups.
+void SortByCorner(CornerFrames& frames)
+{
+  std::sort(frames.begin(), frames.end(),
+    [](const std::pair<vtkIdType, Frame>& x, const std::pair<vtkIdType, Frame>& y)
+    { return x.first < y.first; });
+}
 
 inline bool NotZeroF(float x)
 {
@@ -172,11 +181,10 @@ public:
 private:
   float EvaluateTriangle(const vtkIdType c[3], Triangle& tri) const;
   void BuildFan(vtkIdType v, Fan& fan);
-  void EvaluateVertex(vtkIdType v, Fan& fan, std::vector<std::pair<vtkIdType, Frame>>& differing);
+  void EvaluateVertex(vtkIdType v, Fan& fan, CornerFrames& differing);
   void EvaluateGroup(Fan& fan) const;
   vtkIdType CornerVertex(vtkIdType tri, int k) const { return this->TriVertexIds[3 * tri + k]; }
-  void SetCornerFrame(vtkIdType v, vtkIdType c, const Frame& frame,
-    std::vector<std::pair<vtkIdType, Frame>>& differing);
+  void SetCornerFrame(vtkIdType v, vtkIdType c, const Frame& frame, CornerFrames& differing);
   Frame FrameOf(vtkIdType c, vtkIdType v) const;
   bool Orient(vtkIdType tri) const { return (this->Tris[tri].Flag & OrientPreserving) != 0; }
   const double* Normal(vtkIdType pt) const { return &this->N[3 * pt]; }
@@ -208,7 +216,7 @@ private:
 
   // Corner frames: most corners have their vertex's frame (VertexFrame); the others are
   // listed in Differing, sorted by corner.
-  std::vector<std::pair<vtkIdType, Frame>> Differing;
+  CornerFrames Differing;
   // Per vertex: NoFrame, OneFrame (VertexFrame, for all its corners) or Mixed.
   enum VertexState : char
   {
@@ -677,7 +685,7 @@ void MikkTSpace::EvaluateVertices()
 {
   this->State.assign(this->NumberOfPoints, NoFrame);
   this->VertexFrame.reset(new Frame[this->NumberOfPoints]);
-  vtkSMPThreadLocal<std::vector<std::pair<vtkIdType, Frame>>> differing;
+  vtkSMPThreadLocal<CornerFrames> differing;
   vtkSMPTools::For(0, this->NumberOfPoints,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -694,9 +702,7 @@ void MikkTSpace::EvaluateVertices()
   {
     this->Differing.insert(this->Differing.end(), local.begin(), local.end());
   }
-  std::sort(this->Differing.begin(), this->Differing.end(),
-    [](const std::pair<vtkIdType, Frame>& x, const std::pair<vtkIdType, Frame>& y)
-    { return x.first < y.first; });
+  SortByCorner(this->Differing);
 }
 
 // The angle between two vectors whose cross product has length s and whose dot product is
@@ -717,8 +723,7 @@ inline double CornerAngle(double s, double c)
   return c < 0.0 ? vtkMath::Pi() - r : r;
 }
 
-void MikkTSpace::EvaluateVertex(
-  vtkIdType v, Fan& fan, std::vector<std::pair<vtkIdType, Frame>>& differing)
+void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan, CornerFrames& differing)
 {
   this->BuildFan(v, fan);
   const size_t k = fan.Tri.size();
@@ -835,7 +840,7 @@ void MikkTSpace::EvaluateVertex(
 // The frame of corner c of vertex v: the vertex's own (its first) or, where it differs,
 // listed; a vertex with several frames is Mixed, and only its points may need splitting.
 void MikkTSpace::SetCornerFrame(
-  vtkIdType v, vtkIdType c, const Frame& frame, std::vector<std::pair<vtkIdType, Frame>>& differing)
+  vtkIdType v, vtkIdType c, const Frame& frame, CornerFrames& differing)
 {
   if (this->State[v] == NoFrame)
   {
@@ -924,7 +929,7 @@ void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
   const vtkIdType nFaces = this->Offsets->GetNumberOfValues() - 1;
   const vtkIdType* conn = this->Connectivity->GetPointer(0);
   const double placeholder[3] = { 1.0, 0.0, 0.0 };
-  std::vector<std::pair<vtkIdType, Frame>> added;
+  CornerFrames added;
   for (vtkIdType f = 0; f < nFaces; ++f)
   {
     const vtkIdType t = this->FaceFirstTri[f];
@@ -950,9 +955,7 @@ void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
       FinalFrame(n, src == c + 3 ? placeholder : os, from[3] > 0.0f), added);
   }
   this->Differing.insert(this->Differing.end(), added.begin(), added.end());
-  std::sort(this->Differing.begin(), this->Differing.end(),
-    [](const std::pair<vtkIdType, Frame>& x, const std::pair<vtkIdType, Frame>& y)
-    { return x.first < y.first; });
+  SortByCorner(this->Differing);
 }
 
 // A point keeps the frame of its first corner; every other distinct frame among its
