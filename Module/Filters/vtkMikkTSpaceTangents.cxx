@@ -147,7 +147,8 @@ std::vector<double> Read(vtkDataArray* array, int nc)
 struct Triangle
 {
   double Os[3], Ot[3];
-  int Flag;
+  vtkIdType Base; // its face's first corner
+  int Flag;       // the flags above; bits 4-9: its corners' offsets from Base, 2 bits each
 };
 
 /// The algorithm, stage by stage, on one input.
@@ -186,6 +187,10 @@ private:
   vtkIdType CornerVertex(vtkIdType tri, int k) const { return this->TriVertexIds[3 * tri + k]; }
   void SetCornerFrame(vtkIdType v, vtkIdType c, const Frame& frame, CornerFrames& differing);
   Frame FrameOf(vtkIdType c, vtkIdType v) const;
+  vtkIdType Corner(vtkIdType tri, int k) const
+  {
+    return this->Tris[tri].Base + ((this->Tris[tri].Flag >> (4 + 2 * k)) & 3);
+  }
   bool Orient(vtkIdType tri) const { return (this->Tris[tri].Flag & OrientPreserving) != 0; }
   const double* Normal(vtkIdType pt) const { return &this->N[3 * pt]; }
 
@@ -207,7 +212,6 @@ private:
   // The big per-triangle and per-corner arrays are written entirely before they are read:
   // not zero-filled first.
   std::vector<vtkIdType> FaceFirstTri;
-  std::unique_ptr<vtkIdType[]> TriCorner;  // 3 per triangle: face corner (connectivity index)
   vtkNew<vtkIdTypeArray> TriVertex;        // 3 per triangle: welded vertex
   const vtkIdType* TriVertexIds = nullptr; // its values
   std::unique_ptr<Triangle[]> Tris;
@@ -404,7 +408,6 @@ void MikkTSpace::BuildTriangles()
     this->FaceFirstTri[f + 1] = this->FaceFirstTri[f] + (n == 3 ? 1 : (n == 4 ? 2 : 0));
   }
   const vtkIdType nTris = this->NumberOfTriangles = this->FaceFirstTri[nFaces];
-  this->TriCorner.reset(new vtkIdType[3 * nTris]);
   this->TriVertex->SetNumberOfValues(3 * nTris);
   this->Tris.reset(new Triangle[nTris]);
   vtkIdType* triVertex = this->TriVertex->GetPointer(0);
@@ -436,13 +439,19 @@ void MikkTSpace::BuildTriangles()
         float area[2];
         for (vtkIdType i = 0; i < nt; ++i)
         {
-          vtkIdType* c = &this->TriCorner[3 * (t + i)];
+          vtkIdType c[3];
+          Triangle& tri = this->Tris[t + i];
           for (int k = 0; k < 3; ++k)
           {
             c[k] = b + split[diag02][3 * i + k];
             triVertex[3 * (t + i) + k] = this->WeldOf[conn[c[k]]];
           }
-          area[i] = this->EvaluateTriangle(c, this->Tris[t + i]);
+          area[i] = this->EvaluateTriangle(c, tri);
+          tri.Base = b;
+          for (int k = 0; k < 3; ++k)
+          {
+            tri.Flag |= static_cast<int>(c[k] - b) << (4 + 2 * k);
+          }
         }
         if (nt == 2)
         {
@@ -792,8 +801,8 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan, CornerFrames& differing)
   Frame frame{};
   for (size_t a = 0; a < k; ++a)
   {
-    const vtkIdType c = this->TriCorner[3 * fan.Tri[a] + fan.Corner[a]];
-    const bool pair = a + 1 < k && this->TriCorner[3 * fan.Tri[a + 1] + fan.Corner[a + 1]] == c;
+    const vtkIdType c = this->Corner(fan.Tri[a], fan.Corner[a]);
+    const bool pair = a + 1 < k && this->Corner(fan.Tri[a + 1], fan.Corner[a + 1]) == c;
     const size_t b = pair ? a + 1 : a;
     const int ga = fan.Group[a], gb = fan.Group[b];
     double os[3];
@@ -830,7 +839,7 @@ void MikkTSpace::EvaluateVertex(vtkIdType v, Fan& fan, CornerFrames& differing)
       if (this->CornerVertex(d, j) == v)
       {
         // The first good triangle's frame is the vertex's (the first one set).
-        this->SetCornerFrame(v, this->TriCorner[3 * d + j],
+        this->SetCornerFrame(v, this->Corner(d, j),
           k > 0 ? this->VertexFrame[v] : FinalFrame(n, placeholder, false), differing);
       }
     }
@@ -876,9 +885,10 @@ void MikkTSpace::EvaluateGroup(Fan& fan) const
     }
     // Triangles of one quad (which share a corner) and those without usable derivatives.
     const vtkIdType tf = fan.Tri[f], ta = fan.Tri[a];
-    const vtkIdType* cf = &this->TriCorner[3 * std::min(tf, ta)];
-    const vtkIdType first = this->TriCorner[3 * std::max(tf, ta)];
-    return tf == ta || (std::abs(tf - ta) == 1 && std::find(cf, cf + 3, first) != cf + 3) ||
+    const vtkIdType lo = std::min(tf, ta), first = this->Corner(std::max(tf, ta), 0);
+    const bool shared =
+      this->Corner(lo, 0) == first || this->Corner(lo, 1) == first || this->Corner(lo, 2) == first;
+    return tf == ta || (std::abs(tf - ta) == 1 && shared) ||
       ((this->Tris[tf].Flag | this->Tris[ta].Flag) & GroupWithAny);
   };
   auto average = [&](const std::vector<int>& subset)
@@ -938,7 +948,7 @@ void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
       continue;
     }
     const vtkIdType good = (this->Tris[t].Flag & Degenerate) ? t + 1 : t;
-    const vtkIdType* c = &this->TriCorner[3 * good];
+    const vtkIdType c[3] = { this->Corner(good, 0), this->Corner(good, 1), this->Corner(good, 2) };
     vtkIdType missing = this->Offsets->GetValue(f);
     while (missing == c[0] || missing == c[1] || missing == c[2])
     {
