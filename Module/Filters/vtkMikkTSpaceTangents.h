@@ -33,6 +33,13 @@
  * copied, and the polygons are renumbered. Points whose texture coordinates differ across
  * a seam are separate points in the input already and stay so.
  *
+ * One implementation, in stages: the input's values are read as doubles; vertices are
+ * welded through a hash table of their values (exact comparison decides); the triangles are
+ * evaluated per face and each vertex's groups per vertex, both with vtkSMPTools, from
+ * vertex-to-triangle links built with vtkStaticCellLinksTemplate; the few points whose
+ * corners get several frames are then split in point order. Every stage is deterministic,
+ * so the result does not depend on the number of threads.
+ *
  * The reference's handling of awkward input is kept: triangles with two corners at one
  * position are degenerate and take the frame of the first good triangle at each corner's
  * vertex (a quad with one degenerate triangle gives its lone corner the frame of the
@@ -58,7 +65,7 @@
  * - Groups of more than 1024 triangles at one vertex are not split into sub-groups by
  *   the angular threshold (the pairwise test is quadratic).
  * Missing normals are computed with vtkPolyDataNormals (no splitting, no reordering),
- * with a warning. The result does not depend on the number of threads.
+ * with a warning.
  *
  * @sa vtkPolyDataTangents vtkPolyDataNormals
  */
