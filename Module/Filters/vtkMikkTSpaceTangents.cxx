@@ -231,8 +231,8 @@ private:
   std::vector<VertexState> State;
   std::unique_ptr<Frame[]> VertexFrame;
 
-  // Output points: the input's, then one per extra frame of a split point.
-  std::vector<Frame> PointFrame;
+  // Output points' frames: the input's points, then one per extra frame of a split point.
+  vtkNew<vtkFloatArray> Tangents;
   std::vector<vtkIdType> ExtraSource;
 };
 
@@ -975,7 +975,10 @@ void MikkTSpace::FixQuadsWithOneDegenerateTriangle()
 void MikkTSpace::SplitPoints()
 {
   const vtkIdType nPts = this->NumberOfPoints;
-  this->PointFrame.resize(nPts);
+  this->Tangents->SetName("Tangents");
+  this->Tangents->SetNumberOfComponents(4);
+  this->Tangents->SetNumberOfTuples(nPts);
+  Frame* pointFrame = reinterpret_cast<Frame*>(this->Tangents->GetPointer(0));
   vtkSMPTools::For(0, nPts,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -983,8 +986,8 @@ void MikkTSpace::SplitPoints()
       for (vtkIdType p = begin; p < end; ++p)
       {
         const vtkIdType v = this->WeldOf[p];
-        this->PointFrame[p] = this->State[v] == NoFrame ? FinalFrame(this->Normal(p), zero, true)
-                                                        : this->VertexFrame[v];
+        pointFrame[p] = this->State[v] == NoFrame ? FinalFrame(this->Normal(p), zero, true)
+                                                  : this->VertexFrame[v];
       }
     });
   // Point -> its corners in corner order, for the points of mixed vertices only.
@@ -1038,7 +1041,7 @@ void MikkTSpace::SplitPoints()
       const Frame frame = this->FrameOf(firsts[d], this->WeldOf[mixed[i]]);
       if (d == 0)
       {
-        this->PointFrame[mixed[i]] = frame;
+        pointFrame[mixed[i]] = frame;
         continue;
       }
       if (!conn)
@@ -1049,8 +1052,8 @@ void MikkTSpace::SplitPoints()
         conn = renumbered->GetPointer(0);
         this->Renumbered = true;
       }
-      firsts[d] = static_cast<vtkIdType>(this->PointFrame.size());
-      this->PointFrame.push_back(frame);
+      firsts[d] = this->Tangents->InsertNextTypedTuple(frame.data());
+      pointFrame = reinterpret_cast<Frame*>(this->Tangents->GetPointer(0));
       this->ExtraSource.push_back(mixed[i]);
     }
     for (size_t c = 0; c < rank.size(); ++c)
@@ -1092,7 +1095,7 @@ void MikkTSpace::Assemble(vtkPointData* inPD, vtkPolyData* output) const
 {
   vtkPolyData* input = this->Input;
   const vtkIdType nPts = this->NumberOfPoints;
-  const vtkIdType nOut = static_cast<vtkIdType>(this->PointFrame.size());
+  const vtkIdType nOut = this->Tangents->GetNumberOfTuples();
   auto identity = [](vtkIdType n)
   {
     vtkNew<vtkIdList> ids;
@@ -1117,15 +1120,10 @@ void MikkTSpace::Assemble(vtkPointData* inPD, vtkPolyData* output) const
     output->GetPointData()->CopyAllocate(inPD, nOut);
     output->GetPointData()->CopyData(inPD, src, identity(nOut));
   }
-  vtkNew<vtkFloatArray> tangents;
-  tangents->SetName("Tangents");
-  tangents->SetNumberOfComponents(4);
-  tangents->SetNumberOfTuples(nOut);
-  std::copy_n(this->PointFrame.front().data(), 4 * nOut, tangents->GetPointer(0));
   // VTK 9.1 takes only 3-component tangent attributes, so the frame is the named array of
   // DESIGN.md; an input array of that name must not survive next to it.
   output->GetPointData()->RemoveArray("Tangents");
-  output->GetPointData()->AddArray(tangents);
+  output->GetPointData()->AddArray(this->Tangents);
 
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
