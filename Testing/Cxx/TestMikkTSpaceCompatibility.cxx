@@ -265,7 +265,7 @@ TEST(MikkTSpaceCompatibility, Plane)
 // At a pole the dP/ds directions of the fan point all round the circle and nearly cancel:
 // their average is decided by their last bits, and the filter agrees with the reference
 // there only because it keeps them in double (rounded to single precision they give a
-// frame 172 degrees off at the north pole).
+// frame 172 degrees off at a pole).
 TEST(MikkTSpaceCompatibility, UVSphereWithPoles)
 {
   ExpectAgreement(MakeUVSphere(48, 24), "uvsphere");
