@@ -65,6 +65,7 @@ void SortByCorner(CornerFrames& frames)
     { return x.first < y.first; });
 }
 
+// The reference's NotZero: single-precision values up to FLT_MIN count as zero.
 inline bool NotZeroF(float x)
 {
   return std::abs(x) > FLT_MIN;
@@ -112,11 +113,6 @@ Frame FinalFrame(const double n[3], const double os[3], bool orient)
   }
   return { static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2]),
     orient ? 1.0f : -1.0f };
-}
-
-inline bool SameFrame(const Frame& a, const Frame& b)
-{
-  return std::memcmp(a.data(), b.data(), sizeof(Frame)) == 0;
 }
 
 // The first nc components of every tuple, as doubles (typed access for float and double
@@ -856,7 +852,7 @@ void MikkTSpace::SetCornerFrame(
     this->State[v] = OneFrame;
     this->VertexFrame[v] = frame;
   }
-  else if (!SameFrame(this->VertexFrame[v], frame))
+  else if (std::memcmp(this->VertexFrame[v].data(), frame.data(), sizeof(Frame)) != 0)
   {
     this->State[v] = Mixed;
     differing.emplace_back(c, frame);
