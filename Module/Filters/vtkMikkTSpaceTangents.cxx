@@ -205,8 +205,7 @@ private:
   bool Renumbered = false;
 
   // Triangles of the faces with 3 or 4 corners, in face order (MikkTSpace's triangles).
-  // The big per-triangle and per-corner arrays are written entirely before they are read:
-  // not zero-filled first.
+  // The per-triangle arrays are written entirely before they are read: not zero-filled.
   std::vector<vtkIdType> FaceFirstTri;
   vtkNew<vtkIdTypeArray> TriVertex;        // 3 per triangle: welded vertex
   const vtkIdType* TriVertexIds = nullptr; // its values
