@@ -14,7 +14,7 @@
  *   one vertex, whether or not they share a point id), the triangles around it that are
  *   connected across edges and have the same orientation form a group; their directions,
  *   projected onto the vertex normal's tangent plane, are averaged with the corner angle
- *   as weight;
+ *   as weight (over the sub-group of those within AngularThreshold of each other);
  * - the tangent is that average, w = +1 for orientation-preserving groups and -1 for
  *   mirrored ones (so B = w cross(N, T) as in vtkSurfaceDetailConventions.h).
  *
@@ -33,29 +33,39 @@
  * copied, and the polygons are renumbered. Points whose texture coordinates differ across
  * a seam are separate points in the input already and stay so.
  *
- * Differences from the reference implementation, all on input it handles badly:
- * normals are normalised before use (the reference assumes unit normals); corners for
- * which the reference returns a zero vector or its (1, 0, 0) placeholder (no usable
- * texture derivatives around them, non-finite coordinates) get that placeholder made
- * orthogonal to the normal, or any unit vector orthogonal to it, so the output is always
- * finite and unit length. Missing normals are computed with vtkPolyDataNormals (no
- * splitting, no reordering), with a warning.
+ * One implementation, in stages: the input's values are read as doubles; vertices are
+ * welded through a hash table of their values (exact comparison decides); the triangles are
+ * evaluated per face and each vertex's groups per vertex, both with vtkSMPTools, from
+ * vertex-to-triangle links built with vtkStaticCellLinksTemplate; the few points whose
+ * corners get several frames are then split in point order. Every stage is deterministic,
+ * so the result does not depend on the number of threads.
  *
- * Arithmetic is in double precision. Where the reference's single precision cancels a
- * sliver's dP/ds or dP/dt to zero (a texture edge along a position edge shorter than the
- * rounding of the others), the filter also treats it as zero, rather than as a direction
- * made of rounding noise. The result does not depend on the number of threads.
+ * The reference's handling of awkward input is kept: triangles with two corners at one
+ * position are degenerate and take the frame of the first good triangle at each corner's
+ * vertex (a quad with one degenerate triangle gives its lone corner the frame of the
+ * corner at the same position); triangles with no usable texture derivatives join the
+ * first group that reaches them and add nothing to it; triangles sharing an edge with
+ * more than one other are paired greedily in triangle order. Its decisions that hinge on
+ * rounding (the quad diagonal, the sign of a triangle's texture area, whether its
+ * derivatives are usable) are made with the reference's own single-precision expressions
+ * on the values as floats, so that near zero they come out as in every tool that bakes
+ * with MikkTSpace; directions, angles and averages are computed in double precision.
  *
- * Most meshes take a fast path: triangles only, float or double arrays, the default
- * AngularThreshold, and every vertex one connected fan of one texture orientation (no
- * mirror seam through it, no pole of more than 32 triangles, no degenerate triangle).
- * There each point has one frame, computed in one parallel pass per point, with the
- * triangles' directions kept in single precision and a polynomial angle (frames within
- * 1e-5 degrees of the general algorithm's). Other meshes take the general algorithm.
- * In the AVX2 and AVX-512 builds, whether a closed fan is one run is shown by its angles
- * and by sums of a 64-bit hash of its neighbours' ids: a mesh whose ids were chosen to make
- * those sums collide (by chance about 2^-64 per fan) could get one frame at a vertex where
- * MikkTSpace gives two.
+ * Where the filter differs from the reference, and why:
+ * - A corner's weight is its angle computed as atan2 in double. The reference takes the
+ *   acos of a single-precision cosine, which is exactly 0 for a sliver (edges within
+ *   about 3e-4 radians of each other once projected, as on the seams of
+ *   vtkParametricFunctionSource's surfaces); at a vertex whose group has only such
+ *   corners the reference returns a zero vector, the filter the group's direction.
+ * - Normals are normalised before use (the reference assumes unit normals). Corners for
+ *   which the reference returns its (1, 0, 0) placeholder (no group reaches them) get it
+ *   made orthogonal to the normal, and any corner whose direction leaves nothing across
+ *   the normal gets some unit vector orthogonal to it: the output is always finite and
+ *   unit length.
+ * - Groups of more than 1024 triangles at one vertex are not split into sub-groups by
+ *   the angular threshold (the pairwise test is quadratic).
+ * Missing normals are computed with vtkPolyDataNormals (no splitting, no reordering),
+ * with a warning.
  *
  * @sa vtkPolyDataTangents vtkPolyDataNormals
  */
@@ -65,6 +75,8 @@
 
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkPointData;
 
 class SURFACEDETAILFILTERS_EXPORT vtkMikkTSpaceTangents : public vtkPolyDataAlgorithm
 {
@@ -89,6 +101,10 @@ protected:
   ~vtkMikkTSpaceTangents() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The checks of the input that make the filter stop with an error.
+  bool CheckInput(vtkPolyData* input, vtkPolyData* output);
+  /// The input's point data in @a inPD, with normals from vtkPolyDataNormals if it has none.
+  bool PrepareNormals(vtkPolyData* input, vtkPointData* inPD);
 
   double AngularThreshold = 180.0;
 
