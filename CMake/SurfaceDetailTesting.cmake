@@ -1,8 +1,9 @@
 # Helpers that add SurfaceDetail's tests in one line each.
 #
 #   surfacedetail_add_gtest(<exe> SOURCES <src>... [MODULES <module>...] [LABELS <label>]
-#                           [FIXTURES_REQUIRED <fixture>])
+#                           [FIXTURES_REQUIRED <fixture>] [SANITIZER_ENVIRONMENT <var=value>])
 #     A GoogleTest program; every TEST in it becomes its own ctest test.
+#     SANITIZER_ENVIRONMENT: one variable set for its tests in the sanitizer build only.
 #
 #   surfacedetail_add_image_test(<TestName> [SOURCES <src>...] [EXECUTABLE <exe>]
 #                                [MODULES <module>...] [ARGS <arg>...]
@@ -44,7 +45,8 @@ function(_surfacedetail_add_program exe)
 endfunction()
 
 function(surfacedetail_add_gtest exe)
-  cmake_parse_arguments(arg "" "LABELS;FIXTURES_REQUIRED" "SOURCES;MODULES;LIBRARIES"
+  cmake_parse_arguments(arg "" "LABELS;FIXTURES_REQUIRED;SANITIZER_ENVIRONMENT"
+    "SOURCES;MODULES;LIBRARIES"
     ${ARGN})
   _surfacedetail_add_program(${exe} SOURCES ${arg_SOURCES} MODULES ${arg_MODULES}
     LIBRARIES GTest::gtest GTest::gtest_main ${arg_LIBRARIES})
@@ -60,6 +62,8 @@ function(surfacedetail_add_gtest exe)
   endif()
   if(SURFACEDETAIL_SANITIZE AND arg_LABELS STREQUAL "rendering")
     list(APPEND properties ENVIRONMENT ${surfacedetail_rendering_asan_options})
+  elseif(SURFACEDETAIL_SANITIZE AND arg_SANITIZER_ENVIRONMENT)
+    list(APPEND properties ENVIRONMENT ${arg_SANITIZER_ENVIRONMENT})
   endif()
   gtest_discover_tests(${exe}
     DISCOVERY_MODE PRE_TEST

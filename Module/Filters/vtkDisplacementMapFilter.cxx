@@ -447,7 +447,7 @@ struct Context
     const double s = tc[tnc * i], t = tc[tnc * i + 1];
     double p[3];
     this->Get3(this->Points, i, p);
-    const double* n = this->UnitNormals + 3 * i;
+    const double* n = wantN ? this->UnitNormals + 3 * i : nullptr;
     double ss = 0.0, st = 0.0, tt = 0.0, bp[6] = {}, bn[6] = {};
     double nearest = std::numeric_limits<double>::max(), farthest = 0.0;
     const vtkIdType numCells = this->PointLinks->Count(i);

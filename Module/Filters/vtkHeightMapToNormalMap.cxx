@@ -170,7 +170,10 @@ struct NormalMapKernel
       if (this->Normals(c, n) > 0)
       {
         this->Slopes<true>(m, c0, p, n, gx, gy);
-        this->Normals(c, n);
+        if (this->Normals(c, n) > 0)
+        {
+          FlattenNaN(c, n);
+        }
       }
       OutT* out = this->Out + static_cast<size_t>(j - this->J0) * n * this->OutComps;
       this->Encode(c, c0, n, out);
@@ -270,6 +273,24 @@ struct NormalMapKernel
     return nan;
   }
 
+  // What no scaling of the heights makes finite (a stencil whose repaired heights are still
+  // not finite) gets the flat normal, 0.5 n + 0.5 = (0.5, 0.5, 1), never NaN.
+  static void FlattenNaN(RowCache<Real>& c, int n)
+  {
+    Real* r = c.Gx.data();
+    Real* g = c.Gy.data();
+    Real* b = c.B.data();
+    for (int i = 0; i < n; ++i)
+    {
+      if (!(r[i] == r[i] && g[i] == g[i] && b[i] == b[i]))
+      {
+        r[i] = Real(0.5);
+        g[i] = Real(0.5);
+        b[i] = Real(1);
+      }
+    }
+  }
+
   void Encode(RowCache<Real>& c, const Real* c0, int n, OutT* out) const
   {
     Real* r = c.Gx.data();
@@ -284,7 +305,9 @@ struct NormalMapKernel
       {
         const Real depth = Real(1) - (c0[i] * this->HScale + this->HOffset);
         outside += (depth < Real(0) || depth > Real(1)) ? 1 : 0;
-        planes[3][i] = std::min(std::max(depth, Real(0)), Real(1));
+        // Written so that a NaN depth (heights whose scaling overflows, inf - inf) clamps
+        // to 0 like the others instead of passing through std::max.
+        planes[3][i] = depth > Real(0) ? std::min(depth, Real(1)) : Real(0);
       }
       c.OutOfRange += outside;
     }
