@@ -9,7 +9,6 @@ set -euo pipefail
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$src/build-sanitizers}"
 seconds="${FUZZ_SECONDS:-60}"
-export ASAN_OPTIONS="detect_leaks=1"
 export LSAN_OPTIONS="suppressions=$src/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 mkdir -p "$build/fuzz-artifacts"
@@ -23,7 +22,8 @@ for target in FuzzDisplacementMapFilter FuzzHeightMapToNormalMap FuzzMikkTSpaceT
   # corpus replay in ctest has them).
   leaks=1
   [ "$target" = FuzzOIIOImageReader ] && leaks=0
-  "$build/bin/$target" -detect_leaks="$leaks" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 \
+  ASAN_OPTIONS="detect_leaks=$leaks" "$build/bin/$target" -detect_leaks="$leaks" \
+    -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 \
     -artifact_prefix="$build/fuzz-artifacts/$target-" "$scratch" \
     "$src/Testing/Fuzz/corpus/$target" 2>&1 | grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)' || true
   if ls "$build/fuzz-artifacts/$target-"* >/dev/null 2>&1; then
