@@ -237,20 +237,42 @@ void vtkOIIOImageReader::ExecuteInformation()
 //------------------------------------------------------------------------------
 void vtkOIIOImageReader::ExecuteDataWithInformation(vtkDataObject* output, vtkInformation* outInfo)
 {
-  vtkImageData* data = this->AllocateOutputData(output, outInfo);
-  if (!data || !this->FileName)
+  if (!this->FileName)
   {
     return;
   }
   const std::string path = this->FileName;
-  data->GetPointData()->GetScalars()->SetName("OIIOImage");
-
-  int extent[6];
-  data->GetExtent(extent);
-  if (extent[0] > extent[1] || extent[2] > extent[3])
+  // A header may claim more pixels than memory holds (a damaged or hostile file): VTK then
+  // leaves the scalars unallocated, or throws, and nothing may be read into them.
+  vtkImageData* data = nullptr;
+  try
   {
-    return; // An empty update extent reads nothing.
+    data = this->AllocateOutputData(output, outInfo);
   }
+  catch (const std::bad_alloc&)
+  {
+    data = nullptr;
+  }
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  if (data)
+  {
+    data->GetExtent(extent);
+    if (extent[0] > extent[1] || extent[2] > extent[3] || extent[4] > extent[5])
+    {
+      return; // An empty update extent reads nothing.
+    }
+  }
+  const vtkIdType expected = static_cast<vtkIdType>(extent[1] - extent[0] + 1) *
+    (extent[3] - extent[2] + 1) * (extent[5] - extent[4] + 1);
+  vtkDataArray* scalars = data ? data->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || scalars->GetNumberOfTuples() != expected || !data->GetScalarPointer())
+  {
+    this->Fail(vtkErrorCode::FileFormatError,
+      "Cannot read '" + path + "': its " + std::to_string(this->DataExtent[1] + 1) + " x " +
+        std::to_string(this->DataExtent[3] + 1) + " pixels do not fit in memory.");
+    return;
+  }
+  scalars->SetName("OIIOImage");
 
   try
   {

@@ -468,6 +468,16 @@ TEST(TestOIIOImageIO, ReaderRejectsTruncatedFile)
   }
 }
 
+// A header that claims more pixels than memory holds (found by FuzzOIIOImageReader): an error,
+// not a read into memory that was never allocated.
+TEST(TestOIIOImageIO, ReaderRejectsHeaderBeyondMemory)
+{
+  const std::string path = TempPath("huge.pnm");
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << "P5\n2000000000 2000000000\n255\n"
+                                                          << std::string(64, 'x');
+  ExpectReadFails(path, "do not fit in memory", true);
+}
+
 TEST(TestOIIOImageIO, ReaderRejectsDirectory)
 {
   ExpectReadFails(TempDir(), "directory");
