@@ -13,8 +13,6 @@ packages=(
   libjpeg-turbo-progs
   xplanet-images
 
-  # the displacement benchmark's time-vs-error plot
-  python3-matplotlib
 
   # CI's second stage (scripts/test-sanitizers.sh): clang with ASan and UBSan
   clang
