@@ -13,7 +13,6 @@ packages=(
   libjpeg-turbo-progs
   xplanet-images
 
-
   # CI's second stage (scripts/test-sanitizers.sh): clang with ASan and UBSan
   clang
 )
