@@ -57,7 +57,8 @@ public:
    * The second derivatives d2P/du2 (D2[0..2]), d2P/dudv (D2[3..5]) and d2P/dv2 (D2[6..8])
    * from the same terms, if the subclass knows them in closed form: returns true then. The
    * default returns false, and vtkParametricSurfaceSource differences the first derivatives
-   * instead. Thread-safe.
+   * instead. A subclass that changes the shape through EvaluateTerms() must override this too
+   * (returning false is enough), or "dNdu"/"dNdv" describe its parent's shape. Thread-safe.
    */
   virtual bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]);
 
