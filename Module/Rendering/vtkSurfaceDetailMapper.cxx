@@ -6,7 +6,10 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLTexture.h"
@@ -25,6 +28,7 @@
 #include "vtkSurfaceDetailNormalCoding.h"
 #include "vtkSurfaceDetailNormalMapFS.h"
 #include "vtkSurfaceDetailParallaxFS.h"
+#include "vtkSurfaceDetailReliefFS.h"
 #include "vtkSurfaceDetailTangentFrameFS.h"
 
 #include <algorithm>
@@ -36,6 +40,7 @@
 vtkStandardNewMacro(vtkSurfaceDetailMapper);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, NormalMap, vtkTexture);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, HeightMap, vtkTexture);
+vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, ReliefMap, vtkTexture);
 
 namespace
 {
@@ -84,6 +89,7 @@ vtkSurfaceDetailMapper::~vtkSurfaceDetailMapper()
 {
   this->SetNormalMap(nullptr);
   this->SetHeightMap(nullptr);
+  this->SetReliefMap(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -115,6 +121,21 @@ void vtkSurfaceDetailMapper::SetBumpScale(double scale)
 void vtkSurfaceDetailMapper::SetDepthScale(double depth)
 {
   this->SetUniformSetting(this->DepthScale, std::max(depth, 0.0));
+}
+
+void vtkSurfaceDetailMapper::SetLinearSearchSteps(int steps)
+{
+  this->SetUniformSetting(this->LinearSearchSteps, std::min(std::max(steps, 1), 256));
+}
+
+void vtkSurfaceDetailMapper::SetBinarySearchSteps(int steps)
+{
+  this->SetUniformSetting(this->BinarySearchSteps, std::min(std::max(steps, 0), 32));
+}
+
+void vtkSurfaceDetailMapper::SetAdaptiveSteps(bool adaptive)
+{
+  this->SetUniformSetting(this->AdaptiveSteps, adaptive);
 }
 
 //------------------------------------------------------------------------------
@@ -151,21 +172,20 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
   this->ActiveUsesTangents = false;
   this->ActiveUsesNormalMap = false;
   this->ActiveUsesHeightMap = false;
+  this->ActiveUsesReliefMap = false;
 
   int technique = this->Technique;
   std::string problem;
-  bool warningOnly = false;
-  if (technique == ReliefMapping)
-  {
-    problem = "ReliefMapping is not implemented yet: rendering with ParallaxMapping instead.";
-    warningOnly = true;
-    technique = ParallaxMapping;
-  }
-
-  const bool usesNormalMap =
-    technique == NormalMapping || (technique == ParallaxMapping && this->NormalMap != nullptr);
-  const bool usesHeightMap = technique == BumpMapping || technique == ParallaxMapping;
-  const bool usesTangents = usesNormalMap || (technique == BumpMapping && !this->TangentFree);
+  // Relief reads its relief map if it has one, else the height map (with the normal map if
+  // one is set); parallax reads the height map and, if set, the normal map.
+  const bool usesReliefMap = technique == ReliefMapping && this->ReliefMap != nullptr;
+  const bool heightRelief = technique == ReliefMapping && !usesReliefMap;
+  const bool usesNormalMap = technique == NormalMapping ||
+    ((technique == ParallaxMapping || heightRelief) && this->NormalMap != nullptr);
+  const bool usesHeightMap =
+    technique == BumpMapping || technique == ParallaxMapping || heightRelief;
+  const bool usesTangents =
+    usesNormalMap || usesReliefMap || (technique == BumpMapping && !this->TangentFree);
 
   vtkPolyData* input = this->CurrentInput;
   vtkPointData* pd = input ? input->GetPointData() : nullptr;
@@ -176,6 +196,9 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     vtkDataArray* tcoords = pd->GetTCoords();
     vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
     vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
+    vtkImageData* reliefImage = usesReliefMap ? TextureImage(this->ReliefMap) : nullptr;
+    vtkDataArray* reliefScalars =
+      reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
     std::ostringstream err;
     double heightScale = 1.0;
     const char* name = GetTechniqueAsString(technique);
@@ -230,9 +253,25 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
           << ", which VTK's texture does not read as 0.5*n + 0.5: use unsigned char, or float "
           << "in [0,1] with SetColorModeToDirectScalars() (vtkImageShiftScale converts).";
     }
+    else if (usesReliefMap && (!reliefScalars || reliefScalars->GetNumberOfComponents() != 4))
+    {
+      err << "The relief map must be an image with 4 components (RGB = 0.5*n + 0.5, A = depth)"
+          << "; this one has " << (reliefScalars ? reliefScalars->GetNumberOfComponents() : 0)
+          << ". Make it with vtkHeightMapToNormalMap and OutputRelief on.";
+    }
+    else if (usesReliefMap && !NormalMapTypeReadable(reliefScalars, this->ReliefMap))
+    {
+      err << "The relief map's scalars are " << reliefScalars->GetDataTypeAsString()
+          << (this->ReliefMap->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS
+                 ? ""
+                 : " without SetColorModeToDirectScalars() on the texture")
+          << ", which VTK's texture does not read as they are: use unsigned char, or float "
+          << "in [0,1] with SetColorModeToDirectScalars().";
+    }
     else if (usesHeightMap && !this->HeightMap)
     {
-      err << name << " needs a height map: call SetHeightMap().";
+      err << name << " needs a height map: call SetHeightMap()"
+          << (technique == ReliefMapping ? ", or give it a relief map (SetReliefMap)." : ".");
     }
     else if (usesHeightMap && (!heightImage || !heightImage->GetPointData()->GetScalars()))
     {
@@ -250,7 +289,6 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     if (!err.str().empty())
     {
       problem = err.str() + " Rendering without surface detail.";
-      warningOnly = false;
       technique = None;
     }
   }
@@ -260,14 +298,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     this->ReportedProblem = problem;
     if (!problem.empty())
     {
-      if (warningOnly)
-      {
-        vtkWarningMacro(<< problem);
-      }
-      else
-      {
-        vtkErrorMacro(<< problem);
-      }
+      vtkErrorMacro(<< problem);
     }
   }
 
@@ -282,6 +313,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     this->ActiveUsesTangents = usesTangents;
     this->ActiveUsesNormalMap = usesNormalMap;
     this->ActiveUsesHeightMap = usesHeightMap;
+    this->ActiveUsesReliefMap = usesReliefMap;
   }
 
   // The tangent attribute is uploaded only while a technique reads it.
@@ -329,7 +361,11 @@ std::string vtkSurfaceDetailMapper::ShaderKey() const
 {
   std::ostringstream key;
   key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesNormalMap
-      << this->ActiveUsesHeightMap;
+      << this->ActiveUsesHeightMap << this->ActiveUsesReliefMap;
+  if (this->ActiveTechnique == ReliefMapping)
+  {
+    key << this->SelfShadowing << this->DepthCorrection;
+  }
   return key.str();
 }
 
@@ -342,6 +378,10 @@ void vtkSurfaceDetailMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   if (this->ActiveUsesNormalMap)
   {
     this->NormalMap->Render(ren);
+  }
+  if (this->ActiveUsesReliefMap)
+  {
+    this->ReliefMap->Render(ren);
   }
   if (this->ActiveUsesHeightMap)
   {
@@ -463,6 +503,10 @@ void vtkSurfaceDetailMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   {
     this->NormalMap->PostRender(ren);
   }
+  if (this->ActiveUsesReliefMap)
+  {
+    this->ReliefMap->PostRender(ren);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -471,6 +515,10 @@ void vtkSurfaceDetailMapper::ReleaseGraphicsResources(vtkWindow* win)
   if (this->NormalMap)
   {
     this->NormalMap->ReleaseGraphicsResources(win);
+  }
+  if (this->ReliefMap)
+  {
+    this->ReliefMap->ReleaseGraphicsResources(win);
   }
   if (this->HeightTexture)
   {
@@ -566,7 +614,9 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
               "  }\n";
     fsDec += "in vec3 sdTangentVCVSOutput;\nin vec3 sdBitangentVCVSOutput;\n";
   }
-  if (this->ActiveTechnique == ParallaxMapping)
+  const bool marches =
+    this->ActiveTechnique == ParallaxMapping || this->ActiveTechnique == ReliefMapping;
+  if (marches)
   {
     // A depth D along the unit object normal n is the view vector D*M*n (M the 3x3 of
     // MCVCMatrix); its part along the unit view normal N = normalMatrix*n/|normalMatrix*n|,
@@ -580,8 +630,9 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   {
     fsDec += vtkSurfaceDetailTangentFrameFS;
   }
-  if (this->ActiveUsesNormalMap)
+  if (this->ActiveUsesNormalMap || this->ActiveUsesReliefMap)
   {
+    // A relief map is read as a normal map (its RGB) through the same sampler.
     fsDec += vtkSurfaceDetailNormalCoding;
     fsDec += vtkSurfaceDetailNormalMapFS;
   }
@@ -595,6 +646,18 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   if (this->ActiveTechnique == ParallaxMapping)
   {
     fsDec += vtkSurfaceDetailParallaxFS;
+  }
+  if (this->ActiveTechnique == ReliefMapping)
+  {
+    // Where the depth is read: the relief map's alpha, or one minus the height.
+    fsDec += this->ActiveUsesReliefMap
+      ? "#define SD_RELIEF_SAMPLER sdNormalMap\n"
+        "#define SD_RELIEF_DEPTH(tc) textureGrad(sdNormalMap, tc, sdReliefGradX, "
+        "sdReliefGradY).a\n"
+      : "#define SD_RELIEF_SAMPLER sdHeightMap\n"
+        "#define SD_RELIEF_DEPTH(tc) (1.0 - textureGrad(sdHeightMap, tc, sdReliefGradX, "
+        "sdReliefGradY).r)\n";
+    fsDec += vtkSurfaceDetailReliefFS;
   }
   vtkShaderProgram::Substitute(vs, DecTag, vsDec + DecTag);
   vtkShaderProgram::Substitute(vs, VSImplTag, vsImpl + VSImplTag);
@@ -615,7 +678,7 @@ void vtkSurfaceDetailMapper::ReplaceShaderLight(
   // VTK's lighting (headlight, light kit, positional and spot lights) reads
   // normalVCVSOutput: replacing it there is all the lighting needs.
   std::string nTS;
-  if (this->ActiveUsesNormalMap)
+  if (this->ActiveUsesNormalMap || this->ActiveUsesReliefMap)
   {
     nTS = "sdNormalMapTS(tcoordVCVSOutput)";
   }
@@ -633,6 +696,13 @@ void vtkSurfaceDetailMapper::ReplaceShaderLight(
       "sdBitangentVCVSOutput);\n"
       "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
   }
+  else if (this->ActiveTechnique == ReliefMapping)
+  {
+    // The relief's own normal, at the hit, for the front face the march used.
+    impl += "normalVCVSOutput = sdReliefHeightNormal(tcoordVCVSOutput, "
+            "textureGrad(sdHeightMap, tcoordVCVSOutput, sdReliefGradX, sdReliefGradY).gb);\n"
+            "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
+  }
   else
   {
     // The surface gradient is that of the front face, whichever face is drawn.
@@ -643,7 +713,38 @@ void vtkSurfaceDetailMapper::ReplaceShaderLight(
   }
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fs, NormalImplTag, impl);
+  if (this->ActiveTechnique == ReliefMapping && this->SelfShadowing)
+  {
+    this->AddReliefShadows(fs);
+  }
   shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::AddReliefShadows(std::string& fs)
+{
+  // VTK 9.1 writes one diffuse factor df per light: the headlight's from normal.z, a light
+  // kit's from lightDirectionVC<i>, positional and spot lights' from vertLightDirectionVC,
+  // each followed by a specular factor sf = sign(df)*... (or pow(df, ...) for the
+  // headlight). Each df is passed through sdShadowed with the direction toward its light,
+  // and each sign(df) specular factor gets the same visibility.
+  const std::regex sceneLight(
+    "(\\bdf = max\\(0\\.0, ?(?:attenuation\\*)?dot\\(normalVCVSOutput, -(\\w+)\\)\\);)");
+  const std::string headlight = "float df = max(0.0,normalVCVSOutput.z);";
+  auto lights = std::distance(std::sregex_iterator(fs.begin(), fs.end(), sceneLight), {});
+  fs = std::regex_replace(fs, sceneLight, "$1\n  df = sdShadowed(df, -$2);");
+  if (vtkShaderProgram::Substitute(fs, headlight,
+        headlight + "\n  df = sdShadowed(df, vec3(0.0, 0.0, 1.0));"))
+  {
+    ++lights;
+  }
+  vtkShaderProgram::Substitute(fs, "sf = sign(df)*", "sf = sdLightVisibility*sign(df)*", true);
+  if (lights == 0)
+  {
+    // Only a VTK whose lighting code differs from 9.1's gets here.
+    vtkErrorMacro("No light of VTK's fragment shader was recognised: the relief is drawn "
+                  "without self-shadowing.");
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -687,6 +788,16 @@ void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
   }
 
   std::string impl = "tcoordVCVSOutput = sdTCoordVCVSOutput;\n";
+  if (this->ActiveTechnique == ReliefMapping)
+  {
+    impl += "  tcoordVCVSOutput = sdReliefTCoord(sdTCoordVCVSOutput, vertexVC.xyz,\n"
+            "    normalize(gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput),\n"
+            "    sdDepthUnitVCVSOutput);\n";
+    if (this->DepthCorrection)
+    {
+      impl += "  gl_FragDepth = sdReliefFragDepth(vertexVC.xyz);\n";
+    }
+  }
   if (this->ActiveTechnique == ParallaxMapping)
   {
     // VTK has not yet redeclared normalVCVSOutput (normalised, flipped on back faces).
@@ -721,11 +832,33 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
     program->SetUniformi("sdHeightMap", this->HeightTexture->GetTextureUnit());
     program->SetUniformf("sdBumpScale", static_cast<float>(this->BumpScale));
   }
-  if (this->ActiveTechnique == ParallaxMapping)
+  if (this->ActiveTechnique == ParallaxMapping || this->ActiveTechnique == ReliefMapping)
   {
     program->SetUniformf("sdDepthScale", static_cast<float>(this->DepthScale));
     program->SetUniformi(
       "sdCameraParallel", ren->GetActiveCamera()->GetParallelProjection() ? 1 : 0);
+  }
+  if (this->ActiveUsesReliefMap)
+  {
+    program->SetUniformi("sdNormalMap", TextureUnit(this->ReliefMap));
+    const float scaleXY[2] = { 1.f, this->GreenUp ? 1.f : -1.f };
+    program->SetUniform2f("sdNormalScaleXY", scaleXY);
+  }
+  if (this->ActiveTechnique == ReliefMapping)
+  {
+    program->SetUniformi("sdLinearSearchSteps", this->LinearSearchSteps);
+    program->SetUniformi("sdBinarySearchSteps", this->BinarySearchSteps);
+    program->SetUniformi("sdAdaptiveSteps", this->AdaptiveSteps ? 1 : 0);
+    if (this->DepthCorrection)
+    {
+      vtkMatrix4x4* wcvc;
+      vtkMatrix3x3* normalMatrix;
+      vtkMatrix4x4* vcdc;
+      vtkMatrix4x4* wcdc;
+      vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera())
+        ->GetKeyMatrices(ren, wcvc, normalMatrix, vcdc, wcdc);
+      program->SetUniformMatrix("sdVCDCMatrix", vcdc);
+    }
   }
 }
 
@@ -743,6 +876,12 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
     this->SetDifferences(other->GetDifferences());
     this->SetTangentFree(other->GetTangentFree());
     this->SetDepthScale(other->GetDepthScale());
+    this->SetReliefMap(other->GetReliefMap());
+    this->SetLinearSearchSteps(other->GetLinearSearchSteps());
+    this->SetBinarySearchSteps(other->GetBinarySearchSteps());
+    this->SetAdaptiveSteps(other->GetAdaptiveSteps());
+    this->SetSelfShadowing(other->GetSelfShadowing());
+    this->SetDepthCorrection(other->GetDepthCorrection());
   }
   this->Superclass::ShallowCopy(m);
 }
@@ -761,4 +900,10 @@ void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Differences: " << (this->Differences == Central ? "Central" : "Forward") << "\n";
   os << indent << "TangentFree: " << (this->TangentFree ? "On" : "Off") << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "ReliefMap: " << this->ReliefMap << "\n";
+  os << indent << "LinearSearchSteps: " << this->LinearSearchSteps << "\n";
+  os << indent << "BinarySearchSteps: " << this->BinarySearchSteps << "\n";
+  os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
+  os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
+  os << indent << "DepthCorrection: " << (this->DepthCorrection ? "On" : "Off") << "\n";
 }

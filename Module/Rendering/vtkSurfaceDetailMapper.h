@@ -1,9 +1,9 @@
 /**
  * @class   vtkSurfaceDetailMapper
- * @brief   Polydata mapper that shades surface detail: normal, bump and parallax mapping.
+ * @brief   Polydata mapper that shades surface detail: normal, bump, parallax and relief mapping.
  *
  * vtkSurfaceDetailMapper is a vtkOpenGLPolyDataMapper that perturbs the shading normal
- * (and, for parallax, the texture coordinate) per fragment, so that a coarse mesh shows
+ * (and, for parallax and relief, the texture coordinate) per fragment, so that a coarse mesh shows
  * the detail of a normal map or a height map without moving any geometry (seed 000).
  * Everything else is VTK's own: the actor's ambient, diffuse, specular colours and
  * specular power, the headlight, light kits, positional and spot lights, actor transforms
@@ -27,8 +27,25 @@
  *   view ray meets the height field lying DepthScale*(1 - h) below the mesh (DepthScale in
  *   the mesh's own units). Shading then uses the normal map if one is set (needs tangents),
  *   otherwise the height map's bumps (tangent free, BumpScale).
- * - ReliefMapping: reserved for the relief technique of a later release; it currently
- *   warns and renders as ParallaxMapping.
+ * - ReliefMapping: relief mapping (Policarpo, Oliveira & Comba 2005): the eye ray is
+ *   marched through a box DepthScale deep under the mesh, a linear search
+ *   (LinearSearchSteps) to the first point under the height field, then a binary search
+ *   (BinarySearchSteps); colour, normal and lighting are taken at the hit, so bricks
+ *   hide the mortar behind them. The depth comes from a relief map (SetReliefMap: RGBA,
+ *   the normal in RGB, depth = 1 - h in A, as vtkHeightMapToNormalMap makes with
+ *   OutputRelief; needs tangents) or from the height map, shaded then with the normal
+ *   map if one is set (needs tangents) or else with the normal of the relief surface
+ *   itself, from the height gradient and DepthScale (no tangents). The relief with
+ *   DepthScale d is the surface vtkDisplacementMapFilter makes with Scale d and
+ *   Midlevel 1. The march uses each fragment's own dP/ds, dP/dt (screen-space
+ *   derivatives), so depth is in object units on curved and stretched meshes alike.
+ *   SelfShadowing traces from the hit toward every light that shades it (headlight,
+ *   light kits, positional and spot lights). DepthCorrection writes the hit's depth, so
+ *   the relief meets other geometry where the displaced surface would. The linear steps
+ *   follow the view (AdaptiveSteps: one per texel the ray crosses, between a few and
+ *   LinearSearchSteps), and where the whole depth is less than about a pixel on screen
+ *   the relief fades to plain normal mapping and no search runs. Silhouettes stay those
+ *   of the mesh.
  *
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
  * input lacks, a normal map with fewer than 3 components or of a type other than unsigned
@@ -36,9 +53,10 @@
  * once with vtkErrorMacro, and the actor is rendered as with Technique None until fixed.
  *
  * Shader code exists only for what is switched on. The program is rebuilt when the set of
- * shader features changes (technique, TangentFree, whether parallax shades with the normal
- * map), never per frame; strengths, scales, GreenUp and the maps themselves are uniforms
- * and textures. Changing NormalStrength, GreenUp, BumpScale or DepthScale modifies the
+ * shader features changes (technique, TangentFree, which maps are read, SelfShadowing,
+ * DepthCorrection), never per frame; strengths, scales, step counts, GreenUp and the maps
+ * themselves are uniforms and textures. Changing NormalStrength, GreenUp, BumpScale,
+ * DepthScale, LinearSearchSteps, BinarySearchSteps or AdaptiveSteps modifies the
  * mapper (GetMTime) but neither rebuilds the shader nor re-uploads the vertex buffers: the
  * next render just sets the new uniform. The height map is
  * uploaded as a float texture holding h and its finite differences (Differences), so bump
@@ -173,11 +191,70 @@ public:
 
   ///@{
   /**
-   * Depth of the height field for parallax mapping, in the mesh's own (object) units:
-   * height 1 is the mesh, height 0 lies DepthScale below it. Default 0.05.
+   * Depth of the height field for parallax and relief mapping, in the mesh's own (object)
+   * units: height 1 is the mesh, height 0 lies DepthScale below it. Default 0.05.
    */
   void SetDepthScale(double depth);
   vtkGetMacro(DepthScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Relief map for ReliefMapping: RGBA, RGB the tangent-space normal (as SetNormalMap),
+   * A the depth 1 - h (0 = top, 1 = deepest), unsigned char or float with direct scalars.
+   * When set, it replaces the normal and height maps for relief mapping. Default none.
+   */
+  virtual void SetReliefMap(vtkTexture*);
+  vtkGetObjectMacro(ReliefMap, vtkTexture);
+  ///@}
+
+  ///@{
+  /**
+   * Most steps of the relief's linear search (and of each shadow search); with
+   * AdaptiveSteps off, the number of steps always taken. Clamped to [1, 256]. Default 32.
+   */
+  void SetLinearSearchSteps(int steps);
+  vtkGetMacro(LinearSearchSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Steps of the relief's binary search, each halving the depth bracket. Clamped to
+   * [0, 32]. Default 8.
+   */
+  void SetBinarySearchSteps(int steps);
+  vtkGetMacro(BinarySearchSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Linear steps adapted to the view: one per texel the ray crosses in the depth map,
+   * at least a few (head-on) and at most LinearSearchSteps (grazing). Default true.
+   */
+  void SetAdaptiveSteps(bool adaptive);
+  vtkGetMacro(AdaptiveSteps, bool);
+  vtkBooleanMacro(AdaptiveSteps, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Relief mapping: whether the relief shades itself (a search from the hit toward each
+   * light). Default false.
+   */
+  vtkSetMacro(SelfShadowing, bool);
+  vtkGetMacro(SelfShadowing, bool);
+  vtkBooleanMacro(SelfShadowing, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Relief mapping: write the depth of the hit (gl_FragDepth) instead of the mesh's, so
+   * the relief meets other geometry where the displaced surface would. It turns off the
+   * GPU's early depth test for this actor. Default false.
+   */
+  vtkSetMacro(DepthCorrection, bool);
+  vtkGetMacro(DepthCorrection, bool);
+  vtkBooleanMacro(DepthCorrection, bool);
   ///@}
 
   /**
@@ -192,7 +269,8 @@ public:
   void ShallowCopy(vtkAbstractMapper* m) override;
 
   /**
-   * Includes the uniform-only settings (NormalStrength, GreenUp, BumpScale, DepthScale),
+   * Includes the uniform-only settings (NormalStrength, GreenUp, BumpScale, DepthScale and
+   * the relief's step settings),
    * which are kept out of the time the shader and vertex-buffer rebuild checks compare:
    * changing them re-renders with new uniforms, not a new program or new buffers.
    */
@@ -227,6 +305,12 @@ protected:
   int Differences = Forward;
   bool TangentFree = false;
   double DepthScale = 0.05;
+  vtkTexture* ReliefMap = nullptr;
+  int LinearSearchSteps = 32;
+  int BinarySearchSteps = 8;
+  bool AdaptiveSteps = true;
+  bool SelfShadowing = false;
+  bool DepthCorrection = false;
 
 private:
   vtkSurfaceDetailMapper(const vtkSurfaceDetailMapper&) = delete;
@@ -241,11 +325,14 @@ private:
   // RGB texture (integer types scaled to [0,1]): vtkOpenGLTexture would store float images
   // in 8 bits, too coarse for differences.
   void UploadHeightMap(vtkRenderer* ren);
+  // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
+  void AddReliefShadows(std::string& fs);
 
   int ActiveTechnique = None;
   bool ActiveUsesTangents = false;
   bool ActiveUsesNormalMap = false;
   bool ActiveUsesHeightMap = false;
+  bool ActiveUsesReliefMap = false;
   std::string ReportedProblem;
   std::string MappedTangentArray;
   std::map<const vtkOpenGLHelper*, std::string> BuiltShaderKeys;

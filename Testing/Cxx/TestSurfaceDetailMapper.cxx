@@ -908,21 +908,6 @@ TEST(vtkSurfaceDetailMapper, NonFiniteHeightsWarnOnce)
   EXPECT_GE(PSNR(image1, scene.Actor, DetailNormal(false), scene.Mat), 35.0);
 }
 
-TEST(vtkSurfaceDetailMapper, ReliefFallsBackToParallaxWithWarning)
-{
-  auto mapper = MakeMapper(MakeRectangle(false));
-  mapper->SetTechniqueToReliefMapping();
-  mapper->SetHeightMap(MakeHeightMap());
-  vtkNew<ErrorCounter> errors;
-  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-  mapper->AddObserver(vtkCommand::WarningEvent, errors);
-  Scene scene(mapper);
-  scene.Render();
-  EXPECT_EQ(errors->Errors, 0);
-  EXPECT_EQ(errors->Warnings, 1);
-  EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
-}
-
 // A 16-bit height map (read as value/65535) gives the same picture as the float one.
 TEST(vtkSurfaceDetailMapper, BumpUnsignedShortHeights)
 {

@@ -1,7 +1,7 @@
 // Regression scenes for vtkSurfaceDetailMapper: one technique on one brick-textured surface
 // from vtkParametricSurfaceSource, seen head-on or obliquely, under the headlight or a
 // positional light. Arguments:
-//   --technique none|normal|bump|bump-tangent-free|parallax
+//   --technique none|normal|bump|bump-tangent-free|parallax|relief|relief-shadow|relief-map
 //   --surface rectangle|sphere|torus|vase
 //   --view head-on|oblique                  --light headlight|positional|spot|lightkit
 //   --mutation none|light-10|flipped-maps|half-scale|flipped-handedness
@@ -11,8 +11,12 @@
 // right picture to fail.
 // The bricks are a procedural height field (bricks at height 1, mortar joints at 0 with a
 // bevel), a colour texture of the same layout, and the normal map vtkHeightMapToNormalMap
-// makes from the heights, so all techniques show the same raised bricks.
+// makes from the heights, so all techniques show the same raised bricks. Relief mapping
+// shades with the normal of the relief itself (relief, relief-shadow: the height map alone,
+// the second with self-shadowing) or with a relief map from vtkHeightMapToNormalMap whose
+// strength matches the depth (relief-map, self-shadowing on).
 
+#include "BrickTextures.h"
 #include "SurfaceDetailImageComparison.h"
 #include "vtkSurfaceDetailMapper.h"
 
@@ -48,79 +52,6 @@ namespace
 {
 constexpr int TextureSize = 256;
 
-// Distance (texture units) from (s,t) to the nearest brick edge, and the brick's index.
-// 4 courses of 2 bricks per texture square, every other course offset by half a brick.
-double BrickEdgeDistance(double s, double t, int& brick)
-{
-  const double rows = 4.0, perRow = 2.0;
-  const double row = std::floor(t * rows);
-  const double tr = t * rows - row;
-  const double shifted = (s + (static_cast<int>(row) % 2 ? 0.5 / perRow : 0.0)) * perRow;
-  const double col = std::floor(shifted);
-  const double sc = shifted - col;
-  brick = static_cast<int>(row) * 7 + static_cast<int>(col) % static_cast<int>(perRow);
-  const double dx = std::min(sc, 1.0 - sc) / perRow;
-  const double dy = std::min(tr, 1.0 - tr) / rows;
-  return std::min(dx, dy);
-}
-
-double BrickHeight(double s, double t)
-{
-  int brick;
-  const double d = BrickEdgeDistance(s, t, brick);
-  const double mortar = 0.008, bevel = 0.02;
-  const double x = std::min(1.0, std::max(0.0, (d - mortar) / bevel));
-  return x * x * (3 - 2 * x);
-}
-
-vtkSmartPointer<vtkImageData> MakeImage(int type, int comps)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(TextureSize, TextureSize, 1);
-  image->AllocateScalars(type, comps);
-  return image;
-}
-
-vtkSmartPointer<vtkImageData> BrickHeights()
-{
-  auto image = MakeImage(VTK_FLOAT, 1);
-  auto* h = static_cast<float*>(image->GetScalarPointer());
-  for (int j = 0; j < TextureSize; ++j)
-  {
-    for (int i = 0; i < TextureSize; ++i)
-    {
-      h[j * TextureSize + i] =
-        static_cast<float>(BrickHeight((i + 0.5) / TextureSize, (j + 0.5) / TextureSize));
-    }
-  }
-  return image;
-}
-
-vtkSmartPointer<vtkImageData> BrickColours()
-{
-  auto image = MakeImage(VTK_UNSIGNED_CHAR, 3);
-  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int j = 0; j < TextureSize; ++j)
-  {
-    for (int i = 0; i < TextureSize; ++i)
-    {
-      const double s = (i + 0.5) / TextureSize, t = (j + 0.5) / TextureSize;
-      int brick;
-      BrickEdgeDistance(s, t, brick);
-      const double h = BrickHeight(s, t);
-      const double shade = 0.85 + 0.15 * std::sin(brick * 2.3);
-      const double brickRGB[3] = { 0.70 * shade, 0.30 * shade, 0.20 * shade };
-      const double mortarRGB[3] = { 0.80, 0.78, 0.72 };
-      for (int c = 0; c < 3; ++c)
-      {
-        const double v = h * brickRGB[c] + (1 - h) * mortarRGB[c];
-        rgb[3 * (j * TextureSize + i) + c] = static_cast<unsigned char>(255 * v + 0.5);
-      }
-    }
-  }
-  return image;
-}
-
 // The image with its rows in reverse order: a map loaded upside down.
 vtkSmartPointer<vtkImageData> FlippedRows(vtkImageData* image)
 {
@@ -145,6 +76,26 @@ vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
   texture->InterpolateOn();
   texture->RepeatOn();
   return texture;
+}
+
+// The mean length on the surface of a unit of texture coordinate, over both directions.
+double MeanTextureSide(vtkParametricSurfaceSource* source)
+{
+  vtkNew<vtkParametricSurfaceSource> copy;
+  copy->SetParametricFunction(source->GetParametricFunction());
+  copy->SetUResolution(source->GetUResolution());
+  copy->SetVResolution(source->GetVResolution());
+  copy->GenerateDerivativesOn();
+  copy->Update();
+  vtkDataArray* dPdu = copy->GetOutput()->GetPointData()->GetArray("dPdu");
+  vtkDataArray* dPdv = copy->GetOutput()->GetPointData()->GetArray("dPdv");
+  double sum = 0;
+  for (vtkIdType id = 0; id < dPdu->GetNumberOfTuples(); ++id)
+  {
+    sum += vtkMath::Norm(dPdu->GetTuple3(id)) / source->GetTextureRepeat()[0] +
+      vtkMath::Norm(dPdv->GetTuple3(id)) / source->GetTextureRepeat()[1];
+  }
+  return sum / (2.0 * dPdu->GetNumberOfTuples());
 }
 
 const char* Arg(int argc, char* argv[], const char* name, const char* fallback)
@@ -228,7 +179,7 @@ int main(int argc, char* argv[])
     strength *= 0.5;
   }
 
-  auto heights = BrickHeights();
+  auto heights = BrickTextures::Heights();
   vtkNew<vtkHeightMapToNormalMap> toNormals;
   toNormals->SetInputData(heights);
   toNormals->SetStrength(strength);
@@ -258,6 +209,27 @@ int main(int argc, char* argv[])
   {
     mapper->SetTechniqueToParallaxMapping();
   }
+  else if (technique == "relief" || technique == "relief-shadow")
+  {
+    mapper->SetTechniqueToReliefMapping();
+    mapper->SetNormalMap(nullptr);
+    mapper->SetSelfShadowing(technique == "relief-shadow");
+  }
+  else if (technique == "relief-map")
+  {
+    // The normal map of the relief itself: its strength is the depth over the texture
+    // square's size on the surface (on average: the sides differ from place to place).
+    vtkNew<vtkHeightMapToNormalMap> toRelief;
+    toRelief->SetInputData(flip ? FlippedRows(heights) : heights);
+    toRelief->SetStrength(depth / MeanTextureSide(source));
+    toRelief->SetSchemeToCentral();
+    toRelief->SetWrap(vtkHeightMapToNormalMap::Repeat);
+    toRelief->OutputReliefOn();
+    toRelief->Update();
+    mapper->SetTechniqueToReliefMapping();
+    mapper->SetReliefMap(MakeTexture(toRelief->GetOutput()));
+    mapper->SetSelfShadowing(true);
+  }
   else if (technique != "none")
   {
     std::cerr << "unknown technique " << technique << "\n";
@@ -266,7 +238,7 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  actor->SetTexture(MakeTexture(BrickColours()));
+  actor->SetTexture(MakeTexture(BrickTextures::Colours()));
   actor->GetProperty()->SetAmbient(0.15);
   actor->GetProperty()->SetDiffuse(0.85);
   actor->GetProperty()->SetSpecular(0.25);

@@ -1,4 +1,5 @@
-// Rendering torture: normal, bump and parallax mapping seen at grazing angles (85 to 89.9
+// Rendering torture: normal, bump, parallax and relief mapping (with self-shadowing and
+// depth correction, from a relief map and from the height map alone) seen at grazing angles (85 to 89.9
 // degrees from the normal) and with the camera very close to the surface. Each picture is
 // compared with the plain mapper's picture of the same scene: no pixel may leave the plain
 // silhouette (the detail moves shading and texture lookups, never geometry), and no pixel
@@ -104,9 +105,28 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
     {
       detail->SetTechniqueToBumpMapping();
     }
-    else
+    else if (technique == "parallax")
     {
       detail->SetTechniqueToParallaxMapping();
+    }
+    else
+    {
+      detail->SetTechniqueToReliefMapping();
+      detail->SetSelfShadowing(true);
+      detail->SetDepthCorrection(true);
+      if (technique == "relief-map")
+      {
+        vtkNew<vtkHeightMapToNormalMap> relief;
+        relief->SetInputData(heights);
+        relief->SetStrength(0.05);
+        relief->OutputReliefOn();
+        relief->Update();
+        detail->SetReliefMap(Texture(relief->GetOutput()));
+      }
+      else
+      {
+        detail->SetNormalMap(nullptr); // the relief's own normal, from the heights
+      }
     }
     mapper = detail;
   }
@@ -173,7 +193,7 @@ void ExpectSoundAgainstPlain(double angle, double distance)
   }
   ASSERT_GT(inside, 0) << "the plain wall is not on screen at " << angle << " degrees, distance "
                        << distance;
-  for (const char* technique : { "normal", "bump", "parallax" })
+  for (const char* technique : { "normal", "bump", "parallax", "relief", "relief-map" })
   {
     const std::vector<unsigned char> detail = Render(technique, angle, distance);
     int outside = 0, speckles = 0;

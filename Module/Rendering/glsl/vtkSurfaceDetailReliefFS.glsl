@@ -1,0 +1,209 @@
+// Relief mapping (Policarpo, Oliveira & Comba 2005, seed 000). The mesh is the top of a
+// box DepthScale deep (object units, DESIGN.md); depth d in [0,1] is SD_RELIEF_DEPTH(tc)
+// (the relief map's alpha, or 1 - h of the height map, defined by the mapper). The eye ray
+// is marched through the box in (s, t, depth) coordinates: a linear search to the first
+// sample under the height field, so thin features are not stepped over, then a binary
+// search. The colour, the normal and the light visibility are all taken at the hit.
+//
+// The box's frame at a fragment is (dP/ds, dP/dt, N): the surface's own texture
+// derivatives from screen-space derivatives, so depth and parallax keep object units
+// wherever the texture is stretched, on curved meshes as on planes, and no tangent array
+// is needed for the march itself. Every texture read inside the loops uses the gradients
+// of the fragment's own texture coordinate (textureGrad), taken before any branch, so
+// mipmapped maps are read at the right level and never through derivatives of a branch.
+uniform float sdDepthScale;
+uniform int sdCameraParallel;
+uniform int sdLinearSearchSteps;
+uniform int sdBinarySearchSteps;
+uniform int sdAdaptiveSteps;
+
+// Fewest linear steps of the adaptive search: head-on the ray crosses no texel sideways,
+// but a few steps keep the first bracket the binary search refines inside one slab.
+const float sdMinLinearSteps = 4.0;
+// Depth (as a fraction of DepthScale) over which an occluder fades a light in: soft
+// enough that shadow edges do not alias, hard enough to read as the seed's shadows.
+const float sdShadowSoftness = 0.04;
+// Smallest cosine between the view ray and the tangent plane that the march accepts: a
+// ray closer to the plane is marched as at this angle, which keeps the texture offset
+// finite at the silhouette.
+const float sdMinRayCosine = 0.03;
+
+vec2 sdReliefGradX;    // d(tc)/dx of the fragment, for every lookup of the march
+vec2 sdReliefGradY;    // d(tc)/dy
+mat3 sdReliefToBox;    // view vector -> (ds, dt, depth along N in view units)
+vec3 sdReliefDPds;     // dP/ds in view coordinates
+vec3 sdReliefDPdt;     // dP/dt
+vec3 sdReliefN;        // unit mesh normal of the front face
+float sdReliefDepthVC; // DepthScale in view units along N
+float sdReliefFade;    // 1: full relief; 0: plain normal mapping (relief below a pixel)
+vec2 sdReliefHitTC;    // texture coordinate of the hit
+float sdReliefHitDepth;   // its depth, a fraction of DepthScale
+float sdReliefRayLength;  // view-space distance from the fragment to the hit
+float sdLightVisibility = 1.0; // of the light being shaded (specular uses it too)
+
+float sdReliefDepthAt(vec2 tc)
+{
+  return SD_RELIEF_DEPTH(tc);
+}
+
+// Linear steps for a texture-space path: one per texel crossed, between the adaptive
+// minimum and LinearSearchSteps; LinearSearchSteps always when adaptive steps are off.
+int sdReliefSteps(vec2 path)
+{
+  float most = float(max(sdLinearSearchSteps, 1));
+  if (sdAdaptiveSteps == 0)
+  {
+    return int(most);
+  }
+  float texels = length(path * vec2(textureSize(SD_RELIEF_SAMPLER, 0)));
+  return int(clamp(ceil(texels), min(sdMinLinearSteps, most), most));
+}
+
+// The depth fraction where the ray tc + d*delta first goes under the height field.
+float sdReliefIntersect(vec2 tc, vec2 delta, int steps)
+{
+  float lo = 0.0;
+  float hi = 1.0;
+  float stepSize = 1.0 / float(steps);
+  for (int i = 1; i <= steps; ++i)
+  {
+    float d = float(i) * stepSize;
+    if (d >= sdReliefDepthAt(tc + d * delta))
+    {
+      hi = d;
+      break;
+    }
+    lo = d;
+  }
+  for (int i = 0; i < sdBinarySearchSteps; ++i)
+  {
+    float mid = 0.5 * (lo + hi);
+    if (mid >= sdReliefDepthAt(tc + mid * delta))
+    {
+      hi = mid;
+    }
+    else
+    {
+      lo = mid;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Marches the view ray from the fragment; returns the texture coordinate every texture is
+// then read at. N: the unit normal of the front face; depthUnitVC: view units per object
+// unit of depth along N (see the mapper).
+vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
+{
+  vec3 sigmaS = dFdx(posVC);
+  vec3 sigmaT = dFdy(posVC);
+  sdReliefGradX = dFdx(tc);
+  sdReliefGradY = dFdy(tc);
+  sdReliefN = N;
+  sdReliefFade = 0.0;
+  sdReliefHitTC = tc;
+  sdReliefHitDepth = 0.0;
+  sdReliefRayLength = 0.0;
+  sdReliefDepthVC = sdDepthScale * depthUnitVC;
+  float tcDet = sdReliefGradX.x * sdReliefGradY.y - sdReliefGradX.y * sdReliefGradY.x;
+  if (!(abs(tcDet) > 1e-30))
+  {
+    return tc;
+  }
+  // Screen-space derivatives give each triangle's flat dP/ds, dP/dt; their parts in the
+  // tangent plane of the interpolated normal vary smoothly enough not to show the facets.
+  sdReliefDPds = (sigmaS * sdReliefGradY.y - sigmaT * sdReliefGradX.y) / tcDet;
+  sdReliefDPdt = (sigmaT * sdReliefGradX.x - sigmaS * sdReliefGradY.x) / tcDet;
+  sdReliefDPds -= N * dot(N, sdReliefDPds);
+  sdReliefDPdt -= N * dot(N, sdReliefDPdt);
+  mat3 frame = mat3(sdReliefDPds, sdReliefDPdt, N);
+  if (!(abs(determinant(frame)) > 1e-30))
+  {
+    return tc;
+  }
+  sdReliefToBox = inverse(frame);
+
+  // Fade to normal mapping where the whole depth spans less than a pixel: the pixel's
+  // size across the view ray is that of the screen derivatives without their part along it.
+  vec3 V = sdCameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-posVC);
+  float pixel = max(length(sigmaS - V * dot(V, sigmaS)), length(sigmaT - V * dot(V, sigmaT)));
+  sdReliefFade = gl_FrontFacing ? clamp(2.0 * sdReliefDepthVC / max(pixel, 1e-30) - 1.0, 0.0, 1.0) : 0.0;
+  if (sdReliefFade <= 0.0)
+  {
+    return tc;
+  }
+
+  vec3 ray = sdReliefToBox * (-V);
+  float down = max(-ray.z, sdMinRayCosine);
+  vec2 delta = ray.xy * (sdReliefDepthVC / down); // texture offset from the top to depth 1
+  float d = sdReliefIntersect(tc, delta, sdReliefSteps(delta));
+  sdReliefHitTC = tc + d * delta;
+  sdReliefHitDepth = d;
+  sdReliefRayLength = sdReliefFade * d * sdReliefDepthVC / down;
+  return tc + sdReliefFade * d * delta;
+}
+
+// The normal of the relief itself, P + DepthScale*(h - 1)*N, at tc: from the height map's
+// gradient (dh/ds, dh/dt) and the same frame the march used, so shading and depth describe
+// one surface (the one vtkDisplacementMapFilter makes with Scale = DepthScale, Midlevel 1,
+// up to the mesh's curvature over the depth).
+vec3 sdReliefHeightNormal(vec2 tc, vec2 gradST)
+{
+  vec3 a = sdReliefDPds + (sdReliefDepthVC * gradST.x) * sdReliefN;
+  vec3 b = sdReliefDPdt + (sdReliefDepthVC * gradST.y) * sdReliefN;
+  vec3 n = cross(a, b);
+  // Mirrored texture coordinates turn the parameter frame around, not the surface.
+  float side = dot(cross(sdReliefDPds, sdReliefDPdt), sdReliefN) < 0.0 ? -1.0 : 1.0;
+  float len2 = dot(n, n);
+  return len2 > 0.0 ? side * n * inversesqrt(len2) : sdReliefN;
+}
+
+// How much of a light reaches the hit (1 lit, 0 in the relief's shadow): the ray from the
+// hit toward the light (L, unit, view coordinates) is followed up to the top of the box;
+// any height above it on the way shades the hit. Lights behind the mesh's tangent plane
+// cannot reach into the box.
+float sdReliefShadow(vec3 L)
+{
+  if (sdReliefFade <= 0.0)
+  {
+    return 1.0;
+  }
+  vec3 ray = sdReliefToBox * L;
+  if (!(ray.z > 0.0))
+  {
+    return 1.0 - sdReliefFade;
+  }
+  float up = max(ray.z, sdMinRayCosine);
+  vec2 delta = ray.xy * (sdReliefHitDepth * sdReliefDepthVC / up);
+  int steps = sdReliefSteps(delta);
+  float occlusion = 0.0;
+  for (int i = 1; i < steps; ++i)
+  {
+    float f = float(i) / float(steps);
+    float rayDepth = sdReliefHitDepth * (1.0 - f);
+    occlusion = max(occlusion, rayDepth - sdReliefDepthAt(sdReliefHitTC + f * delta));
+  }
+  float lit = 1.0 - clamp(occlusion / sdShadowSoftness, 0.0, 1.0);
+  return mix(1.0, lit, sdReliefFade);
+}
+
+// VTK's diffuse term for one light, with its visibility; the light's specular term reads
+// sdLightVisibility. Lights the detail normal faces away from are not traced.
+float sdShadowed(float df, vec3 L)
+{
+  sdLightVisibility = df > 0.0 ? sdReliefShadow(normalize(L)) : 1.0;
+  return df * sdLightVisibility;
+}
+
+// Window depth of the hit, for DepthCorrection: the fragment moved along the view ray.
+uniform mat4 sdVCDCMatrix;
+float sdReliefFragDepth(vec3 posVC)
+{
+  if (sdReliefRayLength == 0.0)
+  {
+    return gl_FragCoord.z;
+  }
+  vec3 V = sdCameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-posVC);
+  vec4 clip = sdVCDCMatrix * vec4(posVC - sdReliefRayLength * V, 1.0);
+  return clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+}

@@ -1,0 +1,414 @@
+// Relief mapping against ground truth. The truth is the relief's own definition made real:
+// the mesh displaced by vtkDisplacementMapFilter (Scale = DepthScale, Midlevel 1, Exact
+// normals), tessellated finely enough that doubling it changes the picture much less than the
+// errors judged here, drawn by VTK's plain mapper with the same colour texture, camera and
+// light. Against it:
+// - relief mapping (from a relief map, and from the height map alone) at default settings
+//   must be much closer than normal mapping with the same normals;
+// - self-shadowing must darken what a CPU ray cast on the displaced surface finds in shadow,
+//   and leave what it finds lit;
+// - with DepthCorrection, a sphere half sunk into a relief wall must meet it where it meets
+//   the displaced wall.
+// Errors are over the pixels the object covers in either picture; every figure is printed.
+
+#include "BrickTextures.h"
+#include "vtkSurfaceDetailMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkDisplacementMapFilter.h>
+#include <vtkFloatArray.h>
+#include <vtkHeightMapToNormalMap.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkParametricDonut.h>
+#include <vtkParametricRectangle.h>
+#include <vtkParametricSphere.h>
+#include <vtkParametricSurfaceSource.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPNGWriter.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int Size = 300;
+const double Background[3] = { 0.18, 0.2, 0.24 };
+
+// Smoother bricks than the regression scenes' (wider bevels), so that a displaced mesh a
+// few times finer than the texels converges.
+BrickTextures::Layout TruthBricks()
+{
+  BrickTextures::Layout layout;
+  layout.Size = 128;
+  layout.Mortar = 0.01;
+  layout.Bevel = 0.04;
+  return layout;
+}
+
+vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+struct Surface
+{
+  std::string Name;
+  std::function<vtkSmartPointer<vtkParametricFunction>()> Function;
+  double Repeat[2];
+  int Coarse[2]; // resolution of the relief-mapped mesh
+  int Dense[2];  // resolution of the truth; twice this is the convergence check
+  double Depth;  // DepthScale = the displacement's Scale, object units
+};
+
+Surface Wall()
+{
+  return { "wall", [] { return vtkSmartPointer<vtkParametricRectangle>::New(); }, { 2, 2 },
+    { 16, 16 }, { 512, 512 }, 0.12 };
+}
+
+Surface Ball()
+{
+  return { "sphere", [] { return vtkSmartPointer<vtkParametricSphere>::New(); }, { 4, 2 },
+    { 64, 32 }, { 1024, 512 }, 0.05 };
+}
+
+Surface Ring()
+{
+  return { "torus", [] { return vtkSmartPointer<vtkParametricDonut>::New(); }, { 6, 2 },
+    { 96, 32 }, { 1536, 512 }, 0.04 };
+}
+
+vtkSmartPointer<vtkPolyData> Tessellate(const Surface& surface, const int resolution[2])
+{
+  vtkNew<vtkParametricSurfaceSource> source;
+  source->SetParametricFunction(surface.Function());
+  source->SetUResolution(resolution[0]);
+  source->SetVResolution(resolution[1]);
+  source->SetTextureRepeat(surface.Repeat[0], surface.Repeat[1]);
+  source->GenerateTangentsOn();
+  source->GenerateDerivativesOn();
+  source->Update();
+  return source->GetOutput();
+}
+
+// The truth: the surface displaced by the relief's depth (Midlevel 1: the top is the mesh).
+vtkSmartPointer<vtkPolyData> Displaced(const Surface& surface, const int resolution[2])
+{
+  vtkNew<vtkDisplacementMapFilter> displace;
+  displace->SetInputData(Tessellate(surface, resolution));
+  displace->SetInputData(1, BrickTextures::Heights(TruthBricks()));
+  displace->SetScale(surface.Depth);
+  displace->SetMidlevel(1.0);
+  displace->SetWrapToRepeat();
+  displace->SetInterpolationToLinear();
+  displace->SetNormalModeToExact();
+  displace->Update();
+  return displace->GetOutput();
+}
+
+// The mean length on the surface of one unit of texture coordinate, both directions.
+double MeanTextureSide(vtkPolyData* mesh, const Surface& surface)
+{
+  vtkDataArray* dPdu = mesh->GetPointData()->GetArray("dPdu");
+  vtkDataArray* dPdv = mesh->GetPointData()->GetArray("dPdv");
+  double sum = 0;
+  for (vtkIdType id = 0; id < dPdu->GetNumberOfTuples(); ++id)
+  {
+    sum += vtkMath::Norm(dPdu->GetTuple3(id)) / surface.Repeat[0] +
+      vtkMath::Norm(dPdv->GetTuple3(id)) / surface.Repeat[1];
+  }
+  return sum / (2.0 * dPdu->GetNumberOfTuples());
+}
+
+enum class Look
+{
+  Truth,
+  Normal,
+  Relief,          // from a relief map
+  ReliefFromHeight // from the height map alone
+};
+
+struct Options
+{
+  bool SelfShadowing = false;
+  bool DepthCorrection = false;
+};
+
+vtkSmartPointer<vtkActor> SurfaceActor(
+  const Surface& surface, Look look, const Options& options = Options())
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetTexture(MakeTexture(BrickTextures::Colours(TruthBricks())));
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(0.85);
+  actor->GetProperty()->SetSpecular(0.2);
+  actor->GetProperty()->SetSpecularPower(30);
+  if (look == Look::Truth)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(Displaced(surface, surface.Dense));
+    actor->SetMapper(mapper);
+    return actor;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = Tessellate(surface, surface.Coarse);
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  mapper->SetInputData(mesh);
+  vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
+  vtkNew<vtkHeightMapToNormalMap> maps;
+  maps->SetInputData(heights);
+  maps->SetStrength(surface.Depth / MeanTextureSide(mesh, surface));
+  maps->SetSchemeToCentral();
+  maps->SetWrap(vtkHeightMapToNormalMap::Repeat);
+  maps->SetOutputRelief(look == Look::Relief);
+  maps->Update();
+  mapper->SetDepthScale(surface.Depth);
+  mapper->SetSelfShadowing(options.SelfShadowing);
+  mapper->SetDepthCorrection(options.DepthCorrection);
+  switch (look)
+  {
+    case Look::Normal:
+      mapper->SetTechniqueToNormalMapping();
+      mapper->SetNormalMap(MakeTexture(maps->GetOutput()));
+      break;
+    case Look::Relief:
+      mapper->SetTechniqueToReliefMapping();
+      mapper->SetReliefMap(MakeTexture(maps->GetOutput()));
+      break;
+    default:
+      mapper->SetTechniqueToReliefMapping();
+      mapper->SetHeightMap(MakeTexture(heights));
+      break;
+  }
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// The view of one scene: a camera fitted to the coarse surface, seen obliquely, and a
+// positional light above, right of and in front of it. Every picture of a scene uses it.
+struct View
+{
+  vtkNew<vtkCamera> Camera;
+  double LightPosition[3];
+  double Centre[3];
+};
+
+void FitView(const Surface& surface, View& view)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Tessellate(surface, surface.Coarse);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->ResetCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (surface.Name == "torus")
+  {
+    camera->Elevation(-55); // the donut is z up: from the side, a little above
+    camera->OrthogonalizeViewUp();
+  }
+  camera->Azimuth(40);
+  camera->Elevation(20);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCamera();
+  camera->Zoom(1.3);
+  double bounds[6], up[3], front[3], right[3];
+  mesh->GetBounds(bounds);
+  const double size = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+    std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  camera->GetViewUp(up);
+  camera->GetDirectionOfProjection(front);
+  vtkMath::Cross(front, up, right);
+  for (int k = 0; k < 3; ++k)
+  {
+    view.Centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+    view.LightPosition[k] = view.Centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
+  }
+  // One clipping range for every picture of the scene, so that depths compare.
+  double range[2];
+  camera->GetClippingRange(range);
+  camera->SetClippingRange(0.5 * range[0], 2.0 * range[1]);
+  view.Camera->DeepCopy(camera);
+}
+
+struct Picture
+{
+  std::vector<unsigned char> RGB;
+  std::vector<float> Z;
+  vtkNew<vtkRenderer> Renderer; // kept for DisplayToWorld
+};
+
+void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors,
+  Picture& picture, bool withDepth = false)
+{
+  vtkRenderer* renderer = picture.Renderer;
+  for (const auto& actor : actors)
+  {
+    renderer->AddActor(actor);
+  }
+  renderer->SetBackground(Background[0], Background[1], Background[2]);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOn();
+  light->SetConeAngle(180);
+  light->SetPosition(view.LightPosition);
+  light->SetFocalPoint(view.Centre);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->DeepCopy(view.Camera);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(Size, Size);
+  window->AddRenderer(renderer);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  picture.RGB.assign(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * Size * Size);
+  if (withDepth)
+  {
+    picture.Z.resize(Size * Size);
+    vtkNew<vtkFloatArray> z;
+    window->GetZbufferData(0, 0, Size - 1, Size - 1, z);
+    std::copy(z->GetPointer(0), z->GetPointer(0) + Size * Size, picture.Z.begin());
+  }
+  window->RemoveRenderer(renderer); // the renderer outlives the window for DisplayToWorld
+}
+
+bool IsBackground(const unsigned char* p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (std::abs(p[c] - 255.0 * Background[c]) > 1.5)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Root mean square difference (levels, over R, G, B) over the pixels where either picture
+// shows the object.
+double ObjectRMSE(const Picture& a, const Picture& b)
+{
+  double sum = 0;
+  long count = 0;
+  for (int p = 0; p < Size * Size; ++p)
+  {
+    if (IsBackground(&a.RGB[3 * p]) && IsBackground(&b.RGB[3 * p]))
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = a.RGB[3 * p + c] - b.RGB[3 * p + c];
+      sum += d * d;
+    }
+    ++count;
+  }
+  return count ? std::sqrt(sum / (3.0 * count)) : 0.0;
+}
+
+// With SURFACEDETAIL_TRUTH_PICTURES=<folder>, the pictures side by side, to look at.
+void SaveSideBySide(const std::string& name, const std::vector<const Picture*>& pictures)
+{
+  const char* folder = std::getenv("SURFACEDETAIL_TRUTH_PICTURES");
+  if (!folder)
+  {
+    return;
+  }
+  const int n = static_cast<int>(pictures.size());
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n * Size, Size, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < Size; ++j)
+    {
+      std::copy_n(&pictures[k]->RGB[3 * j * Size], 3 * Size, out + 3 * (j * n * Size + k * Size));
+    }
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((std::string(folder) + "/" + name + ".png").c_str());
+  writer->Write();
+}
+
+void ExpectReliefCloserThanNormalMapping(const Surface& surface)
+{
+  View view;
+  FitView(surface, view);
+  Picture truth, finer, normal, relief, fromHeight;
+  Draw(view, { SurfaceActor(surface, Look::Truth) }, truth);
+  Surface doubled = surface;
+  doubled.Dense[0] *= 2;
+  doubled.Dense[1] *= 2;
+  Draw(view, { SurfaceActor(doubled, Look::Truth) }, finer);
+  Draw(view, { SurfaceActor(surface, Look::Normal) }, normal);
+  Draw(view, { SurfaceActor(surface, Look::Relief) }, relief);
+  Draw(view, { SurfaceActor(surface, Look::ReliefFromHeight) }, fromHeight);
+
+  SaveSideBySide(surface.Name, { &truth, &relief, &fromHeight, &normal });
+  const double convergence = ObjectRMSE(truth, finer);
+  const double normalError = ObjectRMSE(normal, truth);
+  const double reliefError = ObjectRMSE(relief, truth);
+  const double heightError = ObjectRMSE(fromHeight, truth);
+  std::cout << surface.Name << ": RMSE against the displaced mesh (levels) - normal mapping "
+            << normalError << ", relief map " << reliefError << " (ratio "
+            << reliefError / normalError << "), relief from the height map " << heightError
+            << " (ratio " << heightError / normalError << "); truth against twice as fine "
+            << convergence << "\n";
+  // The truth has converged: doubling it moves the picture far less than relief's error.
+  EXPECT_LT(convergence, 0.5 * reliefError) << surface.Name;
+  EXPECT_LT(reliefError, 0.6 * normalError) << surface.Name;
+  EXPECT_LT(heightError, 0.6 * normalError) << surface.Name;
+}
+} // namespace
+
+TEST(SurfaceDetailRelief, WallIsCloserThanNormalMapping)
+{
+  ExpectReliefCloserThanNormalMapping(Wall());
+}
+
+TEST(SurfaceDetailRelief, SphereIsCloserThanNormalMapping)
+{
+  ExpectReliefCloserThanNormalMapping(Ball());
+}
+
+TEST(SurfaceDetailRelief, TorusIsCloserThanNormalMapping)
+{
+  ExpectReliefCloserThanNormalMapping(Ring());
+}
