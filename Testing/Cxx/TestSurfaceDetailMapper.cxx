@@ -804,6 +804,7 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     int Technique;
     vtkSmartPointer<vtkTexture> NormalMap;
     vtkSmartPointer<vtkTexture> HeightMap;
+    vtkSmartPointer<vtkTexture> ReliefMap = nullptr;
   };
   auto twoChannel = MakeTexture(8, 2, [](double, double, double* v) { v[0] = v[1] = 0.5; });
   // A flat normal map or a mid height, in a scalar type the mapper cannot read as such.
@@ -854,6 +855,17 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
       typed(VTK_SHORT, 1, true) },
     { "int height map", MakeRectangle(false, false), vtkSurfaceDetailMapper::ParallaxMapping,
       nullptr, typed(VTK_INT, 1, true) },
+    // Relief needs a relief map (RGBA) or a height map, and tangents for a relief map.
+    { "relief without maps", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
+      nullptr, nullptr },
+    { "three-channel relief map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
+      nullptr, nullptr, typed(VTK_UNSIGNED_CHAR, 3, false) },
+    { "unsigned short relief map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
+      nullptr, nullptr, typed(VTK_UNSIGNED_SHORT, 4, true) },
+    { "relief map without tangents", MakeRectangle(false, false),
+      vtkSurfaceDetailMapper::ReliefMapping, nullptr, nullptr, typed(VTK_UNSIGNED_CHAR, 4, false) },
+    { "relief from a short height map", MakeRectangle(false, false),
+      vtkSurfaceDetailMapper::ReliefMapping, nullptr, typed(VTK_SHORT, 1, true) },
   };
   // One window for all cases: X servers under test do not like windows made in a burst.
   Scene scene(nullptr);
@@ -864,6 +876,7 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     mapper->SetTechnique(c.Technique);
     mapper->SetNormalMap(c.NormalMap);
     mapper->SetHeightMap(c.HeightMap);
+    mapper->SetReliefMap(c.ReliefMap);
     vtkNew<ErrorCounter> errors;
     mapper->AddObserver(vtkCommand::ErrorEvent, errors);
     mapper->AddObserver(vtkCommand::WarningEvent, errors);
@@ -1012,6 +1025,28 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   EXPECT_NE(scene.Render(), deeper);
   EXPECT_EQ(mapper->Builds, parallax) << "SetDepthScale or SetGreenUp rebuilt the shader text";
   EXPECT_EQ(mapper->VBOTime(), vboParallax) << "SetDepthScale or SetGreenUp re-uploaded buffers";
+  // Relief's step settings are uniforms too; self-shadowing and depth correction are code.
+  mapper->SetTechniqueToReliefMapping();
+  mapper->SetLinearSearchSteps(4);
+  mapper->SetBinarySearchSteps(0);
+  mapper->AdaptiveStepsOff();
+  scene.Render();
+  const int relief = mapper->Builds;
+  const auto coarse = scene.Render();
+  mapper->SetLinearSearchSteps(64);
+  mapper->SetBinarySearchSteps(8);
+  const auto fine = scene.Render();
+  EXPECT_NE(fine, coarse) << "the step counts did not reach the picture";
+  mapper->AdaptiveStepsOn();
+  scene.Render();
+  EXPECT_EQ(mapper->Builds, relief) << "a step setting rebuilt the shader text";
+  mapper->SelfShadowingOn();
+  scene.Render();
+  EXPECT_GT(mapper->Builds, relief) << "self-shadowing did not change the shader";
+  const int shadowing = mapper->Builds;
+  mapper->DepthCorrectionOn();
+  scene.Render();
+  EXPECT_GT(mapper->Builds, shadowing) << "depth correction did not change the shader";
 }
 
 // Bump mapping gets a gradient-only height texture, parallax (lit here by the gradient, no
@@ -1129,6 +1164,13 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   source->SetDifferencesToCentral();
   source->TangentFreeOn();
   source->SetDepthScale(0.2);
+  auto relief = MakeNormalMap();
+  source->SetReliefMap(relief);
+  source->SetLinearSearchSteps(12);
+  source->SetBinarySearchSteps(5);
+  source->AdaptiveStepsOff();
+  source->SelfShadowingOn();
+  source->DepthCorrectionOn();
   vtkNew<vtkSurfaceDetailMapper> copy;
   copy->ShallowCopy(source);
   EXPECT_EQ(copy->GetTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
@@ -1140,6 +1182,28 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   EXPECT_EQ(copy->GetDifferences(), vtkSurfaceDetailMapper::Central);
   EXPECT_TRUE(copy->GetTangentFree());
   EXPECT_EQ(copy->GetDepthScale(), 0.2);
+  EXPECT_EQ(copy->GetReliefMap(), relief.Get());
+  EXPECT_EQ(copy->GetLinearSearchSteps(), 12);
+  EXPECT_EQ(copy->GetBinarySearchSteps(), 5);
+  EXPECT_FALSE(copy->GetAdaptiveSteps());
+  EXPECT_TRUE(copy->GetSelfShadowing());
+  EXPECT_TRUE(copy->GetDepthCorrection());
+}
+
+// Step counts stay within what a fragment can afford; depth is never negative.
+TEST(vtkSurfaceDetailMapper, ReliefSettingsAreClamped)
+{
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  mapper->SetLinearSearchSteps(0);
+  EXPECT_EQ(mapper->GetLinearSearchSteps(), 1);
+  mapper->SetLinearSearchSteps(100000);
+  EXPECT_EQ(mapper->GetLinearSearchSteps(), 256);
+  mapper->SetBinarySearchSteps(-3);
+  EXPECT_EQ(mapper->GetBinarySearchSteps(), 0);
+  mapper->SetBinarySearchSteps(1000);
+  EXPECT_EQ(mapper->GetBinarySearchSteps(), 32);
+  mapper->SetDepthScale(-1);
+  EXPECT_EQ(mapper->GetDepthScale(), 0.0);
 }
 
 // With Technique None the triangles' program is VTK's own, to the character.
@@ -1185,8 +1249,14 @@ TEST(vtkSurfaceDetailMapper, PrintSelf)
   vtkNew<vtkSurfaceDetailMapper> mapper;
   mapper->SetTechniqueToBumpMapping();
   mapper->SetDepthScale(0.125);
+  mapper->SetLinearSearchSteps(48);
+  mapper->SelfShadowingOn();
   std::ostringstream os;
   mapper->Print(os);
+  EXPECT_NE(os.str().find("LinearSearchSteps: 48"), std::string::npos);
+  EXPECT_NE(os.str().find("SelfShadowing: On"), std::string::npos);
+  EXPECT_NE(os.str().find("DepthCorrection: Off"), std::string::npos);
+  EXPECT_NE(os.str().find("ReliefMap: 0"), std::string::npos);
   EXPECT_NE(os.str().find("Technique: BumpMapping"), std::string::npos);
   EXPECT_NE(os.str().find("DepthScale: 0.125"), std::string::npos);
   EXPECT_NE(os.str().find("TangentFree: Off"), std::string::npos);

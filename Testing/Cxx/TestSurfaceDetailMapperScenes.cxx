@@ -3,7 +3,7 @@
 // positional light. Arguments:
 //   --technique none|normal|bump|bump-tangent-free|parallax|relief|relief-shadow|relief-map
 //   --surface rectangle|sphere|torus|vase
-//   --view head-on|oblique                  --light headlight|positional|spot|lightkit
+//   --view head-on|oblique|grazing                 --light headlight|positional|spot|lightkit
 //   --mutation none|light-10|flipped-maps|half-scale|flipped-handedness
 // A mutation makes one kind of mistake on purpose (the light turned by 10 degrees about the
 // camera's up axis, the height and normal maps upside down, BumpScale and DepthScale halved,
@@ -258,6 +258,12 @@ int main(int argc, char* argv[])
   {
     camera->Azimuth(40);
     camera->Elevation(20);
+    camera->OrthogonalizeViewUp();
+  }
+  else if (view == "grazing")
+  {
+    camera->Azimuth(80); // 80 degrees from the wall's normal at its centre, more at its far end
+    camera->Elevation(5);
     camera->OrthogonalizeViewUp();
   }
   if (lightName == "lightkit")

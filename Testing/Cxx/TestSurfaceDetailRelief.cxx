@@ -23,6 +23,7 @@
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkParametricDonut.h>
 #include <vtkParametricRectangle.h>
@@ -158,11 +159,16 @@ struct Options
 {
   bool SelfShadowing = false;
   bool DepthCorrection = false;
+  double Depth = 0.0; // 0: the surface's own
 };
 
 vtkSmartPointer<vtkActor> SurfaceActor(
-  const Surface& surface, Look look, const Options& options = Options())
+  Surface surface, Look look, const Options& options = Options())
 {
+  if (options.Depth > 0)
+  {
+    surface.Depth = options.Depth;
+  }
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetTexture(MakeTexture(BrickTextures::Colours(TruthBricks())));
   actor->GetProperty()->SetAmbient(0.15);
@@ -262,13 +268,12 @@ struct Picture
 {
   std::vector<unsigned char> RGB;
   std::vector<float> Z;
-  vtkNew<vtkRenderer> Renderer; // kept for DisplayToWorld
 };
 
 void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors,
   Picture& picture, bool withDepth = false)
 {
-  vtkRenderer* renderer = picture.Renderer;
+  vtkNew<vtkRenderer> renderer;
   for (const auto& actor : actors)
   {
     renderer->AddActor(actor);
@@ -304,7 +309,6 @@ void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors
     window->GetZbufferData(0, 0, Size - 1, Size - 1, z);
     std::copy(z->GetPointer(0), z->GetPointer(0) + Size * Size, picture.Z.begin());
   }
-  window->RemoveRenderer(renderer); // the renderer outlives the window for DisplayToWorld
 }
 
 bool IsBackground(const unsigned char* p)
@@ -411,4 +415,371 @@ TEST(SurfaceDetailRelief, SphereIsCloserThanNormalMapping)
 TEST(SurfaceDetailRelief, TorusIsCloserThanNormalMapping)
 {
   ExpectReliefCloserThanNormalMapping(Ring());
+}
+
+namespace
+{
+// The world point seen at pixel (i,j) with window depth z, through the view's camera.
+void PixelToWorld(const View& view, int i, int j, double z, double world[3])
+{
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(view.Camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0));
+  inverse->Invert();
+  const double ndc[4] = { 2.0 * (i + 0.5) / Size - 1.0, 2.0 * (j + 0.5) / Size - 1.0,
+    2.0 * z - 1.0, 1.0 };
+  double p[4];
+  inverse->MultiplyPoint(ndc, p);
+  for (int k = 0; k < 3; ++k)
+  {
+    world[k] = p[k] / p[3];
+  }
+}
+
+// The truth's height field, read as vtkDisplacementMapFilter reads it (bilinear between
+// texel centres, repeated).
+double HeightAt(vtkImageData* heights, double s, double t)
+{
+  int dims[3];
+  heights->GetDimensions(dims);
+  const auto* h = static_cast<const float*>(heights->GetScalarPointer());
+  const double x = s * dims[0] - 0.5, y = t * dims[1] - 0.5;
+  const double fx = std::floor(x), fy = std::floor(y);
+  auto at = [&](int i, int j)
+  {
+    i = ((i % dims[0]) + dims[0]) % dims[0];
+    j = ((j % dims[1]) + dims[1]) % dims[1];
+    return static_cast<double>(h[j * dims[0] + i]);
+  };
+  const int i = static_cast<int>(fx), j = static_cast<int>(fy);
+  const double a = x - fx, b = y - fy;
+  return (1 - b) * ((1 - a) * at(i, j) + a * at(i + 1, j)) +
+    b * ((1 - a) * at(i, j + 1) + a * at(i + 1, j + 1));
+}
+
+enum class Light
+{
+  Lit,
+  Shadowed,
+  Unsure
+};
+
+// Whether the displaced wall (x in [-2,2], y in [0,3.5], z = depth*(h - 1), texture
+// repeated twice each way) shades the point p from a light at lightPosition: the segment
+// toward the light is followed in small steps until it rises above the wall's top (z = 0)
+// or leaves the wall, and the deepest it goes under the surface decides.
+Light WallShadow(vtkImageData* heights, double depth, const double p[3], const double light[3])
+{
+  double d[3] = { light[0] - p[0], light[1] - p[1], light[2] - p[2] };
+  vtkMath::Normalize(d);
+  if (!(d[2] > 0))
+  {
+    return Light::Unsure;
+  }
+  const double step = 0.001;
+  double deepest = -1.0;
+  for (double u = 5 * step;; u += step)
+  {
+    const double q[3] = { p[0] + u * d[0], p[1] + u * d[1], p[2] + u * d[2] };
+    if (q[2] > 0 || q[0] < -2 || q[0] > 2 || q[1] < 0 || q[1] > 3.5)
+    {
+      break;
+    }
+    const double s = 2 * (q[0] + 2) / 4, t = 2 * q[1] / 3.5;
+    deepest = std::max(deepest, depth * (HeightAt(heights, s, t) - 1) - q[2]);
+  }
+  if (deepest > 0.2 * depth)
+  {
+    return Light::Shadowed;
+  }
+  return deepest < 0.0 ? Light::Lit : Light::Unsure;
+}
+
+double Luma(const unsigned char* p)
+{
+  return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+}
+} // namespace
+
+// Self-shadowing darkens what a ray cast on the displaced wall finds in shadow, and leaves
+// what it finds lit (pixels whose 3x3 neighbourhood agrees, away from shadow edges).
+TEST(SurfaceDetailRelief, SelfShadowsWhereTheDisplacedWallIsInShadow)
+{
+  const Surface wall = Wall();
+  View view;
+  FitView(wall, view);
+  Picture truth, shadowed, unshadowed;
+  Draw(view, { SurfaceActor(wall, Look::Truth) }, truth, true);
+  Options withShadows;
+  withShadows.SelfShadowing = true;
+  Draw(view, { SurfaceActor(wall, Look::Relief, withShadows) }, shadowed);
+  Draw(view, { SurfaceActor(wall, Look::Relief) }, unshadowed);
+  SaveSideBySide("wall-shadows", { &truth, &shadowed, &unshadowed });
+
+  vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
+  std::vector<Light> light(Size * Size, Light::Unsure);
+  for (int j = 0; j < Size; ++j)
+  {
+    for (int i = 0; i < Size; ++i)
+    {
+      const float z = truth.Z[j * Size + i];
+      if (z < 1.0f)
+      {
+        double p[3];
+        PixelToWorld(view, i, j, z, p);
+        light[j * Size + i] = WallShadow(heights, wall.Depth, p, view.LightPosition);
+      }
+    }
+  }
+  long inShadow = 0, darkened = 0, inLight = 0, unchanged = 0;
+  for (int j = 1; j + 1 < Size; ++j)
+  {
+    for (int i = 1; i + 1 < Size; ++i)
+    {
+      const Light kind = light[j * Size + i];
+      bool agree = kind != Light::Unsure;
+      for (int dj = -1; dj <= 1 && agree; ++dj)
+      {
+        for (int di = -1; di <= 1 && agree; ++di)
+        {
+          agree = light[(j + dj) * Size + i + di] == kind;
+        }
+      }
+      if (!agree)
+      {
+        continue;
+      }
+      const int p = 3 * (j * Size + i);
+      const double drop = Luma(&unshadowed.RGB[p]) - Luma(&shadowed.RGB[p]);
+      if (kind == Light::Shadowed)
+      {
+        ++inShadow;
+        darkened += drop > 10.0;
+      }
+      else
+      {
+        ++inLight;
+        unchanged += std::abs(drop) <= 4.0;
+      }
+    }
+  }
+  std::cout << "Shadow mask from the displaced wall: " << inShadow << " pixels in shadow, "
+            << darkened << " of them darkened by self-shadowing; " << inLight
+            << " lit pixels, " << unchanged << " of them unchanged\n";
+  ASSERT_GT(inShadow, 500) << "the scene must have shadows to judge";
+  EXPECT_GT(darkened, 0.8 * inShadow);
+  EXPECT_GT(unchanged, 0.95 * inLight);
+}
+
+namespace
+{
+// Pixels showing the green, unlit sphere.
+std::vector<bool> SphereMask(const Picture& picture)
+{
+  std::vector<bool> mask(Size * Size);
+  for (int p = 0; p < Size * Size; ++p)
+  {
+    const unsigned char* rgb = &picture.RGB[3 * p];
+    mask[p] = rgb[1] > 200 && rgb[0] < 60 && rgb[2] < 60;
+  }
+  return mask;
+}
+
+long Mismatch(const std::vector<bool>& a, const std::vector<bool>& b)
+{
+  long count = 0;
+  for (size_t p = 0; p < a.size(); ++p)
+  {
+    count += a[p] != b[p];
+  }
+  return count;
+}
+} // namespace
+
+// A plain sphere half sunk into a relief wall: with DepthCorrection the sphere shows where
+// it shows against the displaced wall (the intersection curves agree); without, the wall
+// hides everything behind its flat top.
+TEST(SurfaceDetailRelief, DepthCorrectionMeetsGeometryLikeTheDisplacedWall)
+{
+  const Surface wall = Wall();
+  View view;
+  FitView(wall, view);
+  auto sphere = [] {
+    vtkNew<vtkSphereSource> source;
+    source->SetCenter(0.0, 1.75, 0.0);
+    source->SetRadius(0.8);
+    source->SetThetaResolution(64);
+    source->SetPhiResolution(64);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(source->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(0, 1, 0);
+    actor->GetProperty()->SetAmbient(1);
+    actor->GetProperty()->SetDiffuse(0);
+    return actor;
+  };
+  Options deep;
+  deep.Depth = 0.3;
+  Options corrected = deep;
+  corrected.DepthCorrection = true;
+  Picture truth, withCorrection, without;
+  Draw(view, { SurfaceActor(wall, Look::Truth, deep), sphere() }, truth);
+  Draw(view, { SurfaceActor(wall, Look::Relief, corrected), sphere() }, withCorrection);
+  Draw(view, { SurfaceActor(wall, Look::Relief, deep), sphere() }, without);
+  SaveSideBySide("wall-sphere-depth", { &truth, &withCorrection, &without });
+
+  const std::vector<bool> reference = SphereMask(truth);
+  long sphereArea = 0;
+  for (bool b : reference)
+  {
+    sphereArea += b;
+  }
+  const long correctedOff = Mismatch(SphereMask(withCorrection), reference);
+  const long uncorrectedOff = Mismatch(SphereMask(without), reference);
+  std::cout << "Sphere pixels: " << sphereArea << " against the displaced wall; pixels where "
+            << "the relief wall disagrees: " << correctedOff << " with depth correction, "
+            << uncorrectedOff << " without\n";
+  ASSERT_GT(sphereArea, 1000);
+  EXPECT_LT(correctedOff, 0.3 * uncorrectedOff);
+}
+
+namespace
+{
+// The coarse wall through vtkSurfaceDetailMapper, set up by @a configure.
+vtkSmartPointer<vtkActor> WallActor(const std::function<void(vtkSurfaceDetailMapper*)>& configure)
+{
+  const Surface wall = Wall();
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  mapper->SetInputData(Tessellate(wall, wall.Coarse));
+  mapper->SetDepthScale(wall.Depth);
+  configure(mapper);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->SetTexture(MakeTexture(BrickTextures::Colours(TruthBricks())));
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(0.85);
+  actor->GetProperty()->SetSpecular(0.2);
+  actor->GetProperty()->SetSpecularPower(30);
+  return actor;
+}
+
+int MaxDifference(const Picture& a, const Picture& b)
+{
+  int most = 0;
+  for (size_t k = 0; k < a.RGB.size(); ++k)
+  {
+    most = std::max(most, std::abs(a.RGB[k] - b.RGB[k]));
+  }
+  return most;
+}
+
+vtkSmartPointer<vtkImageData> ReliefMap(double strength)
+{
+  vtkNew<vtkHeightMapToNormalMap> maps;
+  maps->SetInputData(BrickTextures::Heights(TruthBricks()));
+  maps->SetStrength(strength);
+  maps->SetSchemeToCentral();
+  maps->SetWrap(vtkHeightMapToNormalMap::Repeat);
+  maps->OutputReliefOn();
+  maps->Update();
+  return maps->GetOutput();
+}
+} // namespace
+
+// A relief whose height is 1 everywhere is the mesh itself: relief mapping, its shadows and
+// its depth correction must then draw exactly what the plain technique draws.
+TEST(SurfaceDetailRelief, FlatReliefIsTheMesh)
+{
+  View view;
+  FitView(Wall(), view);
+  vtkNew<vtkImageData> top;
+  top->SetDimensions(16, 16, 1);
+  top->AllocateScalars(VTK_FLOAT, 1);
+  std::fill_n(static_cast<float*>(top->GetScalarPointer()), 256, 1.0f);
+  Picture plain, relief;
+  Draw(view, { WallActor([](vtkSurfaceDetailMapper*) {}) }, plain);
+  Draw(view,
+    { WallActor(
+      [&](vtkSurfaceDetailMapper* mapper)
+      {
+        mapper->SetTechniqueToReliefMapping();
+        mapper->SetHeightMap(MakeTexture(top));
+        mapper->SelfShadowingOn();
+        mapper->DepthCorrectionOn();
+      }) },
+    relief);
+  EXPECT_LE(MaxDifference(plain, relief), 2);
+}
+
+// Under a parallel projection the headlight shines exactly back along every view ray: each
+// point the eye reaches, the light reaches too, so self-shadowing must change nothing.
+TEST(SurfaceDetailRelief, HeadlightCastsNoVisibleShadow)
+{
+  View view;
+  FitView(Wall(), view);
+  auto relief = [&](bool shadows)
+  {
+    return WallActor(
+      [&](vtkSurfaceDetailMapper* mapper)
+      {
+        mapper->SetTechniqueToReliefMapping();
+        mapper->SetReliefMap(MakeTexture(ReliefMap(Wall().Depth / 2.0)));
+        mapper->SetSelfShadowing(shadows);
+      });
+  };
+  Picture lit, shadowed;
+  for (Picture* picture : { &lit, &shadowed })
+  {
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddActor(relief(picture == &shadowed));
+    renderer->GetActiveCamera()->DeepCopy(view.Camera);
+    renderer->GetActiveCamera()->ParallelProjectionOn();
+    renderer->GetActiveCamera()->SetParallelScale(2.0);
+    vtkNew<vtkRenderWindow> window;
+    window->SetMultiSamples(0);
+    window->SetSize(Size, Size);
+    window->AddRenderer(renderer);
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGB();
+    grab->Update();
+    auto* pixels =
+      vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+    picture->RGB.assign(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * Size * Size);
+  }
+  EXPECT_LE(MaxDifference(lit, shadowed), 2);
+}
+
+// Where the whole depth is less than half a pixel the relief fades out and the picture is
+// normal mapping with the same map (no search runs); a deep relief differs.
+TEST(SurfaceDetailRelief, ReliefBelowAPixelIsNormalMapping)
+{
+  View view;
+  FitView(Wall(), view);
+  vtkSmartPointer<vtkImageData> map = ReliefMap(Wall().Depth / 2.0);
+  auto relief = [&](double depth)
+  {
+    return WallActor(
+      [&](vtkSurfaceDetailMapper* mapper)
+      {
+        mapper->SetTechniqueToReliefMapping();
+        mapper->SetReliefMap(MakeTexture(map));
+        mapper->SetDepthScale(depth);
+        mapper->SelfShadowingOn();
+      });
+  };
+  Picture normal, shallow, deep;
+  Draw(view,
+    { WallActor(
+      [&](vtkSurfaceDetailMapper* mapper)
+      {
+        mapper->SetTechniqueToNormalMapping();
+        mapper->SetNormalMap(MakeTexture(map));
+      }) },
+    normal);
+  Draw(view, { relief(1e-4) }, shallow); // the wall is 4 units wide on 300 pixels
+  Draw(view, { relief(Wall().Depth) }, deep);
+  EXPECT_LE(MaxDifference(normal, shallow), 2);
+  EXPECT_GT(ObjectRMSE(normal, deep), 5.0);
 }

@@ -20,9 +20,12 @@ uniform int sdAdaptiveSteps;
 // Fewest linear steps of the adaptive search: head-on the ray crosses no texel sideways,
 // but a few steps keep the first bracket the binary search refines inside one slab.
 const float sdMinLinearSteps = 4.0;
-// Depth (as a fraction of DepthScale) over which an occluder fades a light in: soft
+// Depth (as a fraction of DepthScale) over which an occluder fades a light out: soft
 // enough that shadow edges do not alias, hard enough to read as the seed's shadows.
 const float sdShadowSoftness = 0.04;
+// Occlusion (same units) that casts no shadow: the view search's steps may pass a corner
+// of the height field that the denser or offset shadow steps then graze (shadow acne).
+const float sdShadowBias = 0.02;
 // Smallest cosine between the view ray and the tangent plane that the march accepts: a
 // ray closer to the plane is marched as at this angle, which keeps the texture offset
 // finite at the silhouette.
@@ -38,6 +41,8 @@ float sdReliefDepthVC; // DepthScale in view units along N
 float sdReliefFade;    // 1: full relief; 0: plain normal mapping (relief below a pixel)
 vec2 sdReliefHitTC;    // texture coordinate of the hit
 float sdReliefHitDepth;   // its depth, a fraction of DepthScale
+vec2 sdReliefAboveTC;  // the last point of the view ray found above the height field,
+float sdReliefAboveDepth; // where shadow rays start: the hit itself may lie just under it
 float sdReliefRayLength;  // view-space distance from the fragment to the hit
 float sdLightVisibility = 1.0; // of the light being shaded (specular uses it too)
 
@@ -59,8 +64,9 @@ int sdReliefSteps(vec2 path)
   return int(clamp(ceil(texels), min(sdMinLinearSteps, most), most));
 }
 
-// The depth fraction where the ray tc + d*delta first goes under the height field.
-float sdReliefIntersect(vec2 tc, vec2 delta, int steps)
+// The depth fraction where the ray tc + d*delta first goes under the height field; above:
+// the last depth the searches found the ray still above it.
+float sdReliefIntersect(vec2 tc, vec2 delta, int steps, out float above)
 {
   float lo = 0.0;
   float hi = 1.0;
@@ -87,6 +93,7 @@ float sdReliefIntersect(vec2 tc, vec2 delta, int steps)
       lo = mid;
     }
   }
+  above = lo;
   return 0.5 * (lo + hi);
 }
 
@@ -103,6 +110,8 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   sdReliefFade = 0.0;
   sdReliefHitTC = tc;
   sdReliefHitDepth = 0.0;
+  sdReliefAboveTC = tc;
+  sdReliefAboveDepth = 0.0;
   sdReliefRayLength = 0.0;
   sdReliefDepthVC = sdDepthScale * depthUnitVC;
   float tcDet = sdReliefGradX.x * sdReliefGradY.y - sdReliefGradX.y * sdReliefGradY.x;
@@ -136,9 +145,10 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   vec3 ray = sdReliefToBox * (-V);
   float down = max(-ray.z, sdMinRayCosine);
   vec2 delta = ray.xy * (sdReliefDepthVC / down); // texture offset from the top to depth 1
-  float d = sdReliefIntersect(tc, delta, sdReliefSteps(delta));
+  float d = sdReliefIntersect(tc, delta, sdReliefSteps(delta), sdReliefAboveDepth);
   sdReliefHitTC = tc + d * delta;
   sdReliefHitDepth = d;
+  sdReliefAboveTC = tc + sdReliefAboveDepth * delta;
   sdReliefRayLength = sdReliefFade * d * sdReliefDepthVC / down;
   return tc + sdReliefFade * d * delta;
 }
@@ -158,9 +168,10 @@ vec3 sdReliefHeightNormal(vec2 tc, vec2 gradST)
   return len2 > 0.0 ? side * n * inversesqrt(len2) : sdReliefN;
 }
 
-// How much of a light reaches the hit (1 lit, 0 in the relief's shadow): the ray from the
-// hit toward the light (L, unit, view coordinates) is followed up to the top of the box;
-// any height above it on the way shades the hit. Lights behind the mesh's tangent plane
+// How much of a light reaches the hit (1 lit, 0 in the relief's shadow): the ray toward
+// the light (L, unit, view coordinates) is followed up to the top of the box from the last
+// point of the view ray above the height field (so that the search's own tolerance under
+// the surface is not taken for a shadow); any height above it on the way shades the hit. Lights behind the mesh's tangent plane
 // cannot reach into the box.
 float sdReliefShadow(vec3 L)
 {
@@ -174,16 +185,16 @@ float sdReliefShadow(vec3 L)
     return 1.0 - sdReliefFade;
   }
   float up = max(ray.z, sdMinRayCosine);
-  vec2 delta = ray.xy * (sdReliefHitDepth * sdReliefDepthVC / up);
+  vec2 delta = ray.xy * (sdReliefAboveDepth * sdReliefDepthVC / up);
   int steps = sdReliefSteps(delta);
   float occlusion = 0.0;
   for (int i = 1; i < steps; ++i)
   {
     float f = float(i) / float(steps);
-    float rayDepth = sdReliefHitDepth * (1.0 - f);
-    occlusion = max(occlusion, rayDepth - sdReliefDepthAt(sdReliefHitTC + f * delta));
+    float rayDepth = sdReliefAboveDepth * (1.0 - f);
+    occlusion = max(occlusion, rayDepth - sdReliefDepthAt(sdReliefAboveTC + f * delta));
   }
-  float lit = 1.0 - clamp(occlusion / sdShadowSoftness, 0.0, 1.0);
+  float lit = 1.0 - clamp((occlusion - sdShadowBias) / sdShadowSoftness, 0.0, 1.0);
   return mix(1.0, lit, sdReliefFade);
 }
 
