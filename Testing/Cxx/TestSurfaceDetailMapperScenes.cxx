@@ -3,7 +3,7 @@
 // positional light. Arguments:
 //   --technique none|normal|bump|bump-tangent-free|parallax|relief|relief-shadow|relief-map
 //   --surface rectangle|sphere|torus|vase
-//   --view head-on|oblique|grazing                 --light headlight|positional|spot|lightkit
+//   --view head-on|oblique|grazing                 --light headlight|positional|raking|spot|lightkit
 //   --mutation none|light-10|flipped-maps|half-scale|flipped-handedness
 // A mutation makes one kind of mistake on purpose (the light turned by 10 degrees about the
 // camera's up axis, the height and normal maps upside down, BumpScale and DepthScale halved,
@@ -262,8 +262,7 @@ int main(int argc, char* argv[])
   }
   else if (view == "grazing")
   {
-    camera->Azimuth(80); // 80 degrees from the wall's normal at its centre, more at its far end
-    camera->Elevation(5);
+    camera->Elevation(-80); // from below, 80 degrees from the wall's normal at its centre
     camera->OrthogonalizeViewUp();
   }
   if (lightName == "lightkit")
@@ -272,7 +271,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkLightKit> kit; // key light upper left, fill, back lights and headlight
     kit->AddLightsToRenderer(renderer);
   }
-  if (lightName == "positional" || lightName == "spot")
+  if (lightName == "positional" || lightName == "spot" || lightName == "raking")
   {
     // A point light above, right of and in front of the object as the camera sees it, at
     // twice the object's size: the lit side of every brick faces up and to the right.
@@ -291,10 +290,14 @@ int main(int argc, char* argv[])
     light->SetConeAngle(lightName == "spot" ? 8 : 180);
     light->SetExponent(4);
     double position[3];
+    // The raking light comes from far to the right and above, about 60 degrees from the
+    // view, so that a relief's shadows are long even head-on.
+    const double side = lightName == "raking" ? 1.5 : 0.5;
+    const double back = lightName == "raking" ? 0.7 : 1.5;
     for (int k = 0; k < 3; ++k)
     {
       centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-      position[k] = centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
+      position[k] = centre[k] + size * (side * right[k] + 0.5 * up[k] - back * front[k]);
     }
     if (mutation == "light-10")
     {
@@ -319,7 +322,7 @@ int main(int argc, char* argv[])
     renderer->AddLight(light);
   }
   renderer->ResetCamera();
-  camera->Zoom(surface == "rectangle" && view == "head-on" ? 1.6 : 1.3);
+  camera->Zoom(surface == "rectangle" && view != "oblique" ? 1.6 : 1.3);
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;
