@@ -652,11 +652,9 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
     // Where the depth is read: the relief map's alpha, or one minus the height.
     fsDec += this->ActiveUsesReliefMap
       ? "#define SD_RELIEF_SAMPLER sdNormalMap\n"
-        "#define SD_RELIEF_DEPTH(tc) textureGrad(sdNormalMap, tc, sdReliefGradX, "
-        "sdReliefGradY).a\n"
+        "#define SD_RELIEF_DEPTH(tc) textureLod(sdNormalMap, tc, sdReliefLod).a\n"
       : "#define SD_RELIEF_SAMPLER sdHeightMap\n"
-        "#define SD_RELIEF_DEPTH(tc) (1.0 - textureGrad(sdHeightMap, tc, sdReliefGradX, "
-        "sdReliefGradY).r)\n";
+        "#define SD_RELIEF_DEPTH(tc) (1.0 - textureLod(sdHeightMap, tc, sdReliefLod).r)\n";
     fsDec += vtkSurfaceDetailReliefFS;
   }
   vtkShaderProgram::Substitute(vs, DecTag, vsDec + DecTag);
@@ -700,7 +698,7 @@ void vtkSurfaceDetailMapper::ReplaceShaderLight(
   {
     // The relief's own normal, at the hit, for the front face the march used.
     impl += "normalVCVSOutput = sdReliefHeightNormal(tcoordVCVSOutput, "
-            "textureGrad(sdHeightMap, tcoordVCVSOutput, sdReliefGradX, sdReliefGradY).gb);\n"
+            "textureLod(sdHeightMap, tcoordVCVSOutput, sdReliefLod).gb);\n"
             "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
   }
   else

@@ -250,7 +250,9 @@ public:
   /**
    * Relief mapping: write the depth of the hit (gl_FragDepth) instead of the mesh's, so
    * the relief meets other geometry where the displaced surface would. It turns off the
-   * GPU's early depth test for this actor. Default false.
+   * GPU's early depth test for this actor. On a closed surface, turn on back-face culling
+   * (vtkProperty::BackfaceCullingOn): near the silhouette a hit can lie deeper than the
+   * surface's far side, whose inside would then show through. Default false.
    */
   vtkSetMacro(DepthCorrection, bool);
   vtkGetMacro(DepthCorrection, bool);

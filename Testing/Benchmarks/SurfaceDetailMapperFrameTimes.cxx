@@ -1,11 +1,17 @@
-// Frame-time harness: vtkSurfaceDetailMapper (each technique) against VTK's plain
-// vtkOpenGLPolyDataMapper, the same brick-textured sphere filling a 1024x1024 window.
+// Frame-time harness: vtkSurfaceDetailMapper (each technique, relief at several settings)
+// against VTK's plain vtkOpenGLPolyDataMapper, the same textured surface filling the window.
 // All variants are actors of one renderer, shown one at a time and interleaved frame by
 // frame (round robin), so that the load of a shared machine falls on all of them alike;
 // each frame is Render + WaitForCompletion (the GPU work is inside the timing). Shaders,
 // buffers and textures are made in warm-up frames before timing starts. Prints the median
-// frame time of each variant and its ratio to the plain mapper as a Markdown table.
-// Usage: SurfaceDetailMapperFrameTimes [rounds]   (default 60; BENCHMARKS.md has the command)
+// frame time of each variant and its ratio to the plain mapper as a Markdown table, and for
+// the relief variants the image error (RMSE in 8-bit levels over the surface's pixels)
+// against relief with 256 linear and 16 binary steps, so that settings compare at equal
+// error.
+// Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall]
+//   rounds: default 60. --size: the window's side, default 1024 (a real GPU needs 4096 for
+//   the surface shading to outweigh a frame's fixed cost). --scene: a sphere filling most of
+//   the window (default), or a wall seen head-on filling all of it.
 
 #include "vtkSurfaceDetailMapper.h"
 
@@ -15,21 +21,26 @@
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
+#include <vtkHeightMapToNormalMap.h>
+#include <vtkParametricRectangle.h>
 #include <vtkParametricSphere.h>
 #include <vtkParametricSurfaceSource.h>
+#include <vtkPointData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
-
-#include <cmath>
 
 namespace
 {
@@ -72,10 +83,32 @@ struct Variant
 {
   const char* Name;
   int Technique; // -1: the plain vtkOpenGLPolyDataMapper
-  bool TangentFree;
+  bool TangentFree = false;
+  int LinearSteps = 32; // relief only
+  bool Adaptive = true;
+  int BinarySteps = 8;
+  bool Shadows = false;
+  bool DepthCorrection = false;
 };
 
-vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* surface, const Variant& variant)
+// The height map's relief map: normals of the relief DepthScale deep on a texture square
+// about as large as the scene's, depth in alpha.
+vtkSmartPointer<vtkTexture> ReliefTexture(double depth, double textureSide)
+{
+  vtkNew<vtkHeightMapToNormalMap> relief;
+  relief->SetInputData(Texture(1, true)->GetInput());
+  relief->SetStrength(depth / textureSide);
+  relief->OutputReliefOn();
+  relief->Update();
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(relief->GetOutput());
+  texture->InterpolateOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+vtkSmartPointer<vtkActor> MakeActor(
+  vtkAlgorithmOutput* surface, const Variant& variant, vtkTexture* relief, double depth)
 {
   vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper;
   if (variant.Technique < 0)
@@ -90,6 +123,13 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* surface, const Variant& 
     detail->SetBumpScale(0.05);
     detail->SetTechnique(variant.Technique);
     detail->SetTangentFree(variant.TangentFree);
+    detail->SetReliefMap(relief);
+    detail->SetDepthScale(depth);
+    detail->SetLinearSearchSteps(variant.LinearSteps);
+    detail->SetAdaptiveSteps(variant.Adaptive);
+    detail->SetBinarySearchSteps(variant.BinarySteps);
+    detail->SetSelfShadowing(variant.Shadows);
+    detail->SetDepthCorrection(variant.DepthCorrection);
     mapper = detail;
   }
   mapper->SetInputConnection(surface);
@@ -100,44 +140,122 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* surface, const Variant& 
   actor->GetProperty()->SetSpecularPower(20);
   return actor;
 }
+
+// The pixels of the current frame.
+std::vector<unsigned char> Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  return std::vector<unsigned char>(
+    pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+}
+
+// RMSE (levels) over the pixels where either image differs from the background pixel.
+double SurfaceRMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  double sum = 0;
+  size_t count = 0;
+  for (size_t p = 0; p + 2 < a.size(); p += 3)
+  {
+    const bool background = std::equal(&a[p], &a[p] + 3, &a[0]) && std::equal(&b[p], &b[p] + 3, &a[0]);
+    if (background)
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = a[p + c] - b[p + c];
+      sum += d * d;
+    }
+    ++count;
+  }
+  return count ? std::sqrt(sum / (3.0 * count)) : 0.0;
+}
+
+const char* Option(int argc, char* argv[], const char* name, const char* fallback)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], name) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return fallback;
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
-  const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 60;
+  const int rounds = argc > 1 && argv[1][0] != '-' ? std::max(1, std::atoi(argv[1])) : 60;
+  const int size = std::max(64, std::atoi(Option(argc, argv, "--size", "1024")));
+  const std::string scene = Option(argc, argv, "--scene", "sphere");
+  using SDM = vtkSurfaceDetailMapper;
+  const int relief = SDM::ReliefMapping;
   const std::vector<Variant> variants = {
-    { "vtkOpenGLPolyDataMapper (plain)", -1, false },
-    { "None", vtkSurfaceDetailMapper::None, false },
-    { "NormalMapping", vtkSurfaceDetailMapper::NormalMapping, false },
-    { "BumpMapping", vtkSurfaceDetailMapper::BumpMapping, false },
-    { "BumpMapping, TangentFree", vtkSurfaceDetailMapper::BumpMapping, true },
-    { "ParallaxMapping", vtkSurfaceDetailMapper::ParallaxMapping, false },
+    { "vtkOpenGLPolyDataMapper (plain)", -1 },
+    { "None", SDM::None },
+    { "NormalMapping", SDM::NormalMapping },
+    { "BumpMapping", SDM::BumpMapping },
+    { "BumpMapping, TangentFree", SDM::BumpMapping, true },
+    { "ParallaxMapping", SDM::ParallaxMapping },
+    { "ReliefMapping (default: adaptive, at most 32 + 8)", relief },
+    { "ReliefMapping, fixed 8 + 8", relief, false, 8, false },
+    { "ReliefMapping, fixed 16 + 8", relief, false, 16, false },
+    { "ReliefMapping, fixed 32 + 8", relief, false, 32, false },
+    { "ReliefMapping, SelfShadowing", relief, false, 32, true, 8, true },
+    { "ReliefMapping, DepthCorrection", relief, false, 32, true, 8, false, true },
+    { "ReliefMapping, reference 256 + 16", relief, false, 256, false, 16 },
   };
+  const size_t reference = variants.size() - 1;
 
   vtkNew<vtkParametricSurfaceSource> source;
   vtkNew<vtkParametricSphere> sphere;
-  source->SetParametricFunction(sphere);
-  source->SetUResolution(128);
-  source->SetVResolution(64);
+  vtkNew<vtkParametricRectangle> wall; // 4 x 3.5
+  double textureSide = 0.0, depth = 0.0;
+  if (scene == "wall")
+  {
+    source->SetParametricFunction(wall);
+    source->SetUResolution(16);
+    source->SetVResolution(16);
+    source->SetTextureRepeat(4, 4);
+    textureSide = 0.94;
+    depth = 0.08;
+  }
+  else
+  {
+    source->SetParametricFunction(sphere);
+    source->SetUResolution(128);
+    source->SetVResolution(64);
+    source->SetTextureRepeat(4, 2);
+    textureSide = 1.4;
+    depth = 0.05;
+  }
   source->GenerateTangentsOn();
-  source->SetTextureRepeat(4, 2);
+  vtkSmartPointer<vtkTexture> reliefMap = ReliefTexture(depth, textureSide);
 
   vtkNew<vtkRenderer> renderer;
   std::vector<vtkSmartPointer<vtkActor>> actors;
   for (const auto& variant : variants)
   {
-    actors.push_back(MakeActor(source->GetOutputPort(), variant));
+    actors.push_back(MakeActor(source->GetOutputPort(), variant, reliefMap, depth));
     renderer->AddActor(actors.back());
   }
   renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.4); // the sphere covers most of the window
+  // The sphere covers most of the window; the wall all of it.
+  renderer->GetActiveCamera()->Zoom(scene == "wall" ? 2.2 : 1.4);
+  renderer->ResetCameraClippingRange();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
-  window->SetSize(1024, 1024);
+  window->SetSize(size, size);
   window->AddRenderer(renderer);
   auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-
   auto frame = [&](size_t shown)
   {
     for (size_t k = 0; k < actors.size(); ++k)
@@ -172,14 +290,26 @@ int main(int argc, char* argv[])
     return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)];
   };
   const double plain = quantile(times[0], 0.5);
-  std::printf("| Variant | median frame (ms) | quartiles (ms) | ratio to plain |\n");
-  std::printf("|---|---|---|---|\n");
+  frame(reference);
+  const std::vector<unsigned char> best = Grab(window);
+  std::printf("| Variant | median frame (ms) | quartiles (ms) | ratio to plain | relief RMSE |\n");
+  std::printf("|---|---|---|---|---|\n");
   for (size_t k = 0; k < variants.size(); ++k)
   {
     const double median = quantile(times[k], 0.5);
-    std::printf("| %s | %.1f | %.1f - %.1f | %.3f |\n", variants[k].Name, median,
+    std::printf("| %s | %.1f | %.1f - %.1f | %.3f |", variants[k].Name, median,
       quantile(times[k], 0.25), quantile(times[k], 0.75), median / plain);
+    if (variants[k].Technique == relief && !variants[k].Shadows && k != reference)
+    {
+      frame(k);
+      std::printf(" %.2f |\n", SurfaceRMSE(Grab(window), best));
+    }
+    else
+    {
+      std::printf("  |\n");
+    }
   }
-  std::printf("\n%d interleaved frames per variant, 1024x1024\n", rounds);
+  std::printf("\n%d interleaved frames per variant, %dx%d, scene %s\n", rounds, size, size,
+    scene.c_str());
   return 0;
 }

@@ -8,9 +8,10 @@
 // The box's frame at a fragment is (dP/ds, dP/dt, N): the surface's own texture
 // derivatives from screen-space derivatives, so depth and parallax keep object units
 // wherever the texture is stretched, on curved meshes as on planes, and no tangent array
-// is needed for the march itself. Every texture read inside the loops uses the gradients
-// of the fragment's own texture coordinate (textureGrad), taken before any branch, so
-// mipmapped maps are read at the right level and never through derivatives of a branch.
+// is needed for the march itself. Every texture read inside the loops is at the level of
+// detail of the fragment's own texture coordinate (textureLod), worked out from its
+// derivatives before any branch, so mipmapped maps are read at the right level and never
+// through derivatives taken in a branch (and one level costs less than a gradient per read).
 uniform float sdDepthScale;
 uniform int sdCameraParallel;
 uniform int sdLinearSearchSteps;
@@ -31,8 +32,9 @@ const float sdShadowBias = 0.02;
 // finite at the silhouette.
 const float sdMinRayCosine = 0.03;
 
-vec2 sdReliefGradX;    // d(tc)/dx of the fragment, for every lookup of the march
+vec2 sdReliefGradX;    // d(tc)/dx of the fragment
 vec2 sdReliefGradY;    // d(tc)/dy
+float sdReliefLod;     // the depth map's level of detail there, for every read
 mat3 sdReliefToBox;    // view vector -> (ds, dt, depth along N in view units)
 vec3 sdReliefDPds;     // dP/ds in view coordinates
 vec3 sdReliefDPdt;     // dP/dt
@@ -64,37 +66,61 @@ int sdReliefSteps(vec2 path)
   return int(clamp(ceil(texels), min(sdMinLinearSteps, most), most));
 }
 
+// Binary steps that narrow one linear step of a ray spanning `reach` texels or pixels
+// (whichever is more) to a quarter of one; BinarySearchSteps always when adaptive steps
+// are off.
+int sdReliefBinarySteps(float reach, int linearSteps)
+{
+  if (sdAdaptiveSteps == 0)
+  {
+    return sdBinarySearchSteps;
+  }
+  float needed = ceil(log2(max(4.0 * reach / float(linearSteps), 1.0)));
+  return int(min(needed, float(sdBinarySearchSteps)));
+}
+
 // The depth fraction where the ray tc + d*delta first goes under the height field; above:
-// the last depth the searches found the ray still above it.
-float sdReliefIntersect(vec2 tc, vec2 delta, int steps, out float above)
+// the last depth the searches found the ray still above it. The bracket the searches leave
+// is closed by the secant through the ray's heights over the field at its ends, exact
+// where the field is planar there (a flat top comes out at depth 0, not half a bracket in).
+float sdReliefIntersect(vec2 tc, vec2 delta, int steps, int binarySteps, out float above)
 {
   float lo = 0.0;
   float hi = 1.0;
+  float gapLo = sdReliefDepthAt(tc); // field depth minus ray depth: > 0 above the field
+  float gapHi = 0.0;
   float stepSize = 1.0 / float(steps);
   for (int i = 1; i <= steps; ++i)
   {
     float d = float(i) * stepSize;
-    if (d >= sdReliefDepthAt(tc + d * delta))
+    float gap = sdReliefDepthAt(tc + d * delta) - d;
+    if (gap <= 0.0)
     {
       hi = d;
+      gapHi = gap;
       break;
     }
     lo = d;
+    gapLo = gap;
   }
-  for (int i = 0; i < sdBinarySearchSteps; ++i)
+  for (int i = 0; i < binarySteps; ++i)
   {
     float mid = 0.5 * (lo + hi);
-    if (mid >= sdReliefDepthAt(tc + mid * delta))
+    float gap = sdReliefDepthAt(tc + mid * delta) - mid;
+    if (gap <= 0.0)
     {
       hi = mid;
+      gapHi = gap;
     }
     else
     {
       lo = mid;
+      gapLo = gap;
     }
   }
   above = lo;
-  return 0.5 * (lo + hi);
+  float span = gapLo - gapHi;
+  return span > 0.0 ? lo + (hi - lo) * gapLo / span : lo;
 }
 
 // Marches the view ray from the fragment; returns the texture coordinate every texture is
@@ -107,6 +133,11 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   sdReliefGradX = dFdx(tc);
   sdReliefGradY = dFdy(tc);
   sdReliefN = N;
+  // The isotropic level OpenGL would choose: log2 of the longer texel footprint.
+  vec2 texels = vec2(textureSize(SD_RELIEF_SAMPLER, 0));
+  vec2 footX = sdReliefGradX * texels;
+  vec2 footY = sdReliefGradY * texels;
+  sdReliefLod = max(0.5 * log2(max(dot(footX, footX), dot(footY, footY))), 0.0);
   sdReliefFade = 0.0;
   sdReliefHitTC = tc;
   sdReliefHitDepth = 0.0;
@@ -145,7 +176,10 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   vec3 ray = sdReliefToBox * (-V);
   float down = max(-ray.z, sdMinRayCosine);
   vec2 delta = ray.xy * (sdReliefDepthVC / down); // texture offset from the top to depth 1
-  float d = sdReliefIntersect(tc, delta, sdReliefSteps(delta), sdReliefAboveDepth);
+  int steps = sdReliefSteps(delta);
+  float reach = max(length(delta * texels), sdReliefDepthVC / max(pixel, 1e-30));
+  float d = sdReliefIntersect(
+    tc, delta, steps, sdReliefBinarySteps(reach, steps), sdReliefAboveDepth);
   sdReliefHitTC = tc + d * delta;
   sdReliefHitDepth = d;
   sdReliefAboveTC = tc + sdReliefAboveDepth * delta;
