@@ -35,6 +35,6 @@ int main(int argc, char* argv[])
 
   const double eye[3] = { 1.0, 2.2, 4.0 };
   const double focus[3] = { 0, 0, 0 };
-  return ExampleScene::WritePicture(ExampleScene::ViewActor(actor, eye, focus),
-    ExampleScene::OutputFolder(argc, argv), "Donut");
+  return ExampleScene::WritePicture(
+    ExampleScene::ViewActor(actor, eye, focus), ExampleScene::OutputFolder(argc, argv), "Donut");
 }

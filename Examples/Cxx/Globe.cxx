@@ -22,8 +22,8 @@ namespace
 constexpr const char* EarthMap = "/usr/share/xplanet/images/earth.jpg";
 
 // Longitude, latitude of the centre and the half-widths, in degrees.
-constexpr double Continents[][4] = { { -100, 45, 35, 20 }, { -60, -15, 15, 28 },
-  { 15, 52, 20, 10 }, { 20, 5, 20, 32 }, { 95, 50, 45, 20 }, { 135, -25, 17, 10 } };
+constexpr double Continents[][4] = { { -100, 45, 35, 20 }, { -60, -15, 15, 28 }, { 15, 52, 20, 10 },
+  { 20, 5, 20, 32 }, { 95, 50, 45, 20 }, { 135, -25, 17, 10 } };
 
 vtkSmartPointer<vtkImageData> ProceduralEarth(int width, int height)
 {
@@ -127,6 +127,5 @@ int main(int argc, char* argv[])
   // Africa face the camera with the seam (longitude 180) behind the globe.
   const double eye[3] = { -4.0, 1.6, -1.2 };
   const double focus[3] = { 0, 0, 0 };
-  return ExampleScene::WritePicture(
-    ExampleScene::ViewActor(globe, eye, focus), folder, "Globe");
+  return ExampleScene::WritePicture(ExampleScene::ViewActor(globe, eye, focus), folder, "Globe");
 }

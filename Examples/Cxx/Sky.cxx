@@ -63,9 +63,10 @@ vtkSmartPointer<vtkImageData> Panorama(int width, int height)
         const double dLon = std::remainder(lon - sunLon, 360.0) * std::cos(lat * Pi / 180.0);
         const double d2 = dLon * dLon + (lat - sunLat) * (lat - sunLat);
         const double glow = 0.35 * std::exp(-d2 / 60.0);
-        const double puff = std::sin(5 * a + 0.15 * lat) * std::sin(0.3 * lat + 2 * std::sin(3 * a));
-        const double cloud =
-          SmoothStep(0.45, 0.8, puff) * SmoothStep(8.0, 14.0, lat) * (1.0 - SmoothStep(40.0, 55.0, lat));
+        const double puff =
+          std::sin(5 * a + 0.15 * lat) * std::sin(0.3 * lat + 2 * std::sin(3 * a));
+        const double cloud = SmoothStep(0.45, 0.8, puff) * SmoothStep(8.0, 14.0, lat) *
+          (1.0 - SmoothStep(40.0, 55.0, lat));
         for (int k = 0; k < 3; ++k)
         {
           c[k] = (1 - f) * horizon[k] + f * zenith[k] + glow;
@@ -118,6 +119,6 @@ int main(int argc, char* argv[])
   const double eye[3] = { 0, 0, 0 };
   const double focus[3] = { std::cos(theta) * std::cos(pitch), std::sin(pitch),
     -std::sin(theta) * std::cos(pitch) };
-  return ExampleScene::WritePicture(ExampleScene::ViewActor(sky, eye, focus, 75.0),
-    ExampleScene::OutputFolder(argc, argv), "Sky");
+  return ExampleScene::WritePicture(
+    ExampleScene::ViewActor(sky, eye, focus, 75.0), ExampleScene::OutputFolder(argc, argv), "Sky");
 }

@@ -30,7 +30,8 @@ def panorama(width, height):
         for i in range(width):
             lon = 360.0 * (i + 0.5) / width
             a = lon * math.pi / 180.0
-            ridge = 4.0 + 3.0 * math.sin(3 * a) + 2.0 * math.sin(7 * a + 1.3) + math.sin(17 * a + 0.4)
+            ridge = (4.0 + 3.0 * math.sin(3 * a) + 2.0 * math.sin(7 * a + 1.3)
+                     + math.sin(17 * a + 0.4))
             if lat < 0.0:
                 f = 0.7 + 0.3 * (1.0 + lat / 90.0)  # darker towards the feet
                 c = (0.28 * f, 0.50 * f, 0.22 * f)
