@@ -11,7 +11,9 @@ export CC=clang CXX=clang++
 # pointers and line tables that make the reports readable.
 export CMAKE_ARGS="${CMAKE_ARGS:-} -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSURFACEDETAIL_SANITIZE=ON \
   -DSURFACEDETAIL_BUILD_BENCHMARKS=OFF -DSURFACEDETAIL_BUILD_EXAMPLES=OFF \
-  -DCMAKE_COMPILE_WARNING_AS_ERROR=ON"
+  -DCMAKE_COMPILE_WARNING_AS_ERROR=ON -DSURFACEDETAIL_WRAP_PYTHON=OFF"
+# No Python wrapping here: an AddressSanitizer-built extension module cannot be loaded by
+# /usr/bin/python3, which is not built with the sanitizer runtime.
 # allocator_may_return_null: an allocation beyond memory fails as it does outside ASan (malloc
 # returns null), so that the code's own handling of it is what gets tested.
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:allocator_may_return_null=1"

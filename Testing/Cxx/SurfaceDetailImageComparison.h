@@ -154,33 +154,16 @@ inline double VTKMetric(vtkImageData* candidate, vtkImageData* baseline)
   return difference->GetThresholdedError();
 }
 
-/// Compares what @a window shows with the baseline named by -V; returns a Result.
-inline int RegressionTest(int argc, char* argv[], vtkRenderWindow* window)
+/**
+ * Compares @a candidate with the baseline at @a baselinePath (and its alternates); on failure,
+ * or when there is no baseline, writes the candidate (and the difference) into @a temporary.
+ * Returns a Result.
+ */
+inline int CompareWithBaseline(
+  vtkImageData* candidate, const std::string& baselinePath, const std::string& temporary)
 {
-  for (int i = 1; i < argc; ++i)
-  {
-    if (std::strcmp(argv[i], "-I") == 0)
-    {
-      return Interact;
-    }
-  }
-  const char* baselineArg = Argument(argc, argv, "-V");
-  if (!baselineArg)
-  {
-    return NotRun;
-  }
-  const char* temporaryArg = Argument(argc, argv, "-T");
-  const std::string temporary = temporaryArg ? temporaryArg : ".";
-  const std::string baselinePath = baselineArg;
   const std::string name = vtksys::SystemTools::GetFilenameWithoutLastExtension(baselinePath);
   const std::string stem = vtksys::SystemTools::GetFilenamePath(baselinePath) + "/" + name;
-
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* candidate = grab->GetOutput();
   const std::string candidatePath = temporary + "/" + name + ".png";
 
   // The baseline and its alternates; the best match counts.
@@ -238,6 +221,31 @@ inline int RegressionTest(int argc, char* argv[], vtkRenderWindow* window)
   WritePNG(difference, temporary + "/" + name + ".diff.png");
   std::cout << "Failed Image Test: the candidate is " << candidatePath << "\n";
   return Failed;
+}
+
+/// Compares what @a window shows with the baseline named by -V; returns a Result.
+inline int RegressionTest(int argc, char* argv[], vtkRenderWindow* window)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "-I") == 0)
+    {
+      return Interact;
+    }
+  }
+  const char* baselineArg = Argument(argc, argv, "-V");
+  if (!baselineArg)
+  {
+    return NotRun;
+  }
+  const char* temporaryArg = Argument(argc, argv, "-T");
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  return CompareWithBaseline(grab->GetOutput(), baselineArg, temporaryArg ? temporaryArg : ".");
 }
 } // namespace SurfaceDetailImageComparison
 

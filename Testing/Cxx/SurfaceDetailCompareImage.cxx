@@ -1,0 +1,30 @@
+// The strict image comparison (SurfaceDetailImageComparison.h) for a picture that another
+// program wrote: an example, a Python script. VTK's conventions: the candidate is compared
+// with -V <baseline.png> and its alternates; on failure the candidate and the difference
+// image go into -T <folder>. Prints "Failed Image Test" and returns 1 unless it passes.
+//
+// Usage: SurfaceDetailCompareImage <candidate.png> -V <baseline.png> -T <folder>
+#include "SurfaceDetailImageComparison.h"
+
+#include <iostream>
+
+int main(int argc, char* argv[])
+{
+  const char* baseline = SurfaceDetailImageComparison::Argument(argc, argv, "-V");
+  const char* temporary = SurfaceDetailImageComparison::Argument(argc, argv, "-T");
+  if (argc != 6 || !baseline || !temporary)
+  {
+    std::cerr << "usage: " << argv[0] << " <candidate.png> -V <baseline.png> -T <folder>\n";
+    return 2;
+  }
+  vtkSmartPointer<vtkImageData> candidate = SurfaceDetailImageComparison::ReadPNG(argv[1]);
+  if (!candidate)
+  {
+    std::cout << "Failed Image Test: there is no picture " << argv[1] << "\n";
+    return 1;
+  }
+  return SurfaceDetailImageComparison::CompareWithBaseline(candidate, baseline, temporary) ==
+      SurfaceDetailImageComparison::Passed
+    ? 0
+    : 1;
+}
