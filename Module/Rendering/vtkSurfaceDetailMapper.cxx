@@ -28,7 +28,9 @@
 #include "vtkSurfaceDetailNormalCoding.h"
 #include "vtkSurfaceDetailNormalMapFS.h"
 #include "vtkSurfaceDetailParallaxFS.h"
+#include "vtkSurfaceDetailReliefDepthFS.h"
 #include "vtkSurfaceDetailReliefFS.h"
+#include "vtkSurfaceDetailReliefShadowFS.h"
 #include "vtkSurfaceDetailTangentFrameFS.h"
 
 #include <algorithm>
@@ -656,6 +658,14 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
       : "#define SD_RELIEF_SAMPLER sdHeightMap\n"
         "#define SD_RELIEF_DEPTH(tc) (1.0 - textureLod(sdHeightMap, tc, sdReliefLod).r)\n";
     fsDec += vtkSurfaceDetailReliefFS;
+    if (this->SelfShadowing)
+    {
+      fsDec += vtkSurfaceDetailReliefShadowFS;
+    }
+    if (this->DepthCorrection)
+    {
+      fsDec += vtkSurfaceDetailReliefDepthFS;
+    }
   }
   vtkShaderProgram::Substitute(vs, DecTag, vsDec + DecTag);
   vtkShaderProgram::Substitute(vs, VSImplTag, vsImpl + VSImplTag);

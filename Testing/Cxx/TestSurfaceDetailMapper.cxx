@@ -1040,13 +1040,21 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   mapper->AdaptiveStepsOn();
   scene.Render();
   EXPECT_EQ(mapper->Builds, relief) << "a step setting rebuilt the shader text";
+  // The code of a feature that is off is not in the program.
+  auto fragmentHas = [&](const char* code)
+  { return mapper->TrianglesProgram()->GetFragmentShader()->GetSource().find(code) != std::string::npos; };
+  EXPECT_TRUE(fragmentHas("sdReliefIntersect"));
+  EXPECT_FALSE(fragmentHas("sdReliefShadow"));
+  EXPECT_FALSE(fragmentHas("gl_FragDepth ="));
   mapper->SelfShadowingOn();
   scene.Render();
   EXPECT_GT(mapper->Builds, relief) << "self-shadowing did not change the shader";
+  EXPECT_TRUE(fragmentHas("sdReliefShadow"));
   const int shadowing = mapper->Builds;
   mapper->DepthCorrectionOn();
   scene.Render();
   EXPECT_GT(mapper->Builds, shadowing) << "depth correction did not change the shader";
+  EXPECT_TRUE(fragmentHas("gl_FragDepth ="));
 }
 
 // Bump mapping gets a gradient-only height texture, parallax (lit here by the gradient, no

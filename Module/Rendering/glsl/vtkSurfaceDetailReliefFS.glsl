@@ -21,12 +21,6 @@ uniform int sdAdaptiveSteps;
 // Fewest linear steps of the adaptive search: head-on the ray crosses no texel sideways,
 // but a few steps keep the first bracket the binary search refines inside one slab.
 const float sdMinLinearSteps = 4.0;
-// Depth (as a fraction of DepthScale) over which an occluder fades a light out: soft
-// enough that shadow edges do not alias, hard enough to read as the seed's shadows.
-const float sdShadowSoftness = 0.04;
-// Occlusion (same units) that casts no shadow: the view search's steps may pass a corner
-// of the height field that the denser or offset shadow steps then graze (shadow acne).
-const float sdShadowBias = 0.02;
 // Smallest cosine between the view ray and the tangent plane that the march accepts: a
 // ray closer to the plane is marched as at this angle, which keeps the texture offset
 // finite at the silhouette.
@@ -46,7 +40,6 @@ float sdReliefHitDepth;   // its depth, a fraction of DepthScale
 vec2 sdReliefAboveTC;  // the last point of the view ray found above the height field,
 float sdReliefAboveDepth; // where shadow rays start: the hit itself may lie just under it
 float sdReliefRayLength;  // view-space distance from the fragment to the hit
-float sdLightVisibility = 1.0; // of the light being shaded (specular uses it too)
 
 float sdReliefDepthAt(vec2 tc)
 {
@@ -200,55 +193,4 @@ vec3 sdReliefHeightNormal(vec2 tc, vec2 gradST)
   float side = dot(cross(sdReliefDPds, sdReliefDPdt), sdReliefN) < 0.0 ? -1.0 : 1.0;
   float len2 = dot(n, n);
   return len2 > 0.0 ? side * n * inversesqrt(len2) : sdReliefN;
-}
-
-// How much of a light reaches the hit (1 lit, 0 in the relief's shadow): the ray toward
-// the light (L, unit, view coordinates) is followed up to the top of the box from the last
-// point of the view ray above the height field (so that the search's own tolerance under
-// the surface is not taken for a shadow); any height above it on the way shades the hit. Lights behind the mesh's tangent plane
-// cannot reach into the box.
-float sdReliefShadow(vec3 L)
-{
-  if (sdReliefFade <= 0.0)
-  {
-    return 1.0;
-  }
-  vec3 ray = sdReliefToBox * L;
-  if (!(ray.z > 0.0))
-  {
-    return 1.0 - sdReliefFade;
-  }
-  float up = max(ray.z, sdMinRayCosine);
-  vec2 delta = ray.xy * (sdReliefAboveDepth * sdReliefDepthVC / up);
-  int steps = sdReliefSteps(delta);
-  float occlusion = 0.0;
-  for (int i = 1; i < steps; ++i)
-  {
-    float f = float(i) / float(steps);
-    float rayDepth = sdReliefAboveDepth * (1.0 - f);
-    occlusion = max(occlusion, rayDepth - sdReliefDepthAt(sdReliefAboveTC + f * delta));
-  }
-  float lit = 1.0 - clamp((occlusion - sdShadowBias) / sdShadowSoftness, 0.0, 1.0);
-  return mix(1.0, lit, sdReliefFade);
-}
-
-// VTK's diffuse term for one light, with its visibility; the light's specular term reads
-// sdLightVisibility. Lights the detail normal faces away from are not traced.
-float sdShadowed(float df, vec3 L)
-{
-  sdLightVisibility = df > 0.0 ? sdReliefShadow(normalize(L)) : 1.0;
-  return df * sdLightVisibility;
-}
-
-// Window depth of the hit, for DepthCorrection: the fragment moved along the view ray.
-uniform mat4 sdVCDCMatrix;
-float sdReliefFragDepth(vec3 posVC)
-{
-  if (sdReliefRayLength == 0.0)
-  {
-    return gl_FragCoord.z;
-  }
-  vec3 V = sdCameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-posVC);
-  vec4 clip = sdVCDCMatrix * vec4(posVC - sdReliefRayLength * V, 1.0);
-  return clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
 }
