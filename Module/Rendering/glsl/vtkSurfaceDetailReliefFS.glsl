@@ -20,7 +20,7 @@ uniform int sdAdaptiveSteps;
 
 // Fewest linear steps of the adaptive search: head-on the ray crosses no texel sideways,
 // but a few steps keep the first bracket the binary search refines inside one slab.
-const float sdMinLinearSteps = 4.0;
+const float sdMinLinearSteps = 2.0;
 // Smallest cosine between the view ray and the tangent plane that the march accepts: a
 // ray closer to the plane is marched as at this angle, which keeps the texture offset
 // finite at the silhouette.
@@ -29,7 +29,9 @@ const float sdMinRayCosine = 0.03;
 vec2 sdReliefGradX;    // d(tc)/dx of the fragment
 vec2 sdReliefGradY;    // d(tc)/dy
 float sdReliefLod;     // the depth map's level of detail there, for every read
-mat3 sdReliefToBox;    // view vector -> (ds, dt, depth along N in view units)
+vec3 sdReliefDualS;    // with sdReliefDualT: the dual basis of (dP/ds, dP/dt) in the
+vec3 sdReliefDualT;    // tangent plane, so that a vector's (ds, dt) are dot products
+vec2 sdReliefTexels;   // the depth map's size
 vec3 sdReliefDPds;     // dP/ds in view coordinates
 vec3 sdReliefDPdt;     // dP/dt
 vec3 sdReliefN;        // unit mesh normal of the front face
@@ -46,6 +48,12 @@ float sdReliefDepthAt(vec2 tc)
   return SD_RELIEF_DEPTH(tc);
 }
 
+// A view-space vector in the box's coordinates: (ds, dt, depth along N in view units).
+vec3 sdReliefToBox(vec3 v)
+{
+  return vec3(dot(sdReliefDualS, v), dot(sdReliefDualT, v), dot(sdReliefN, v));
+}
+
 // Linear steps for a texture-space path: one per texel crossed, between the adaptive
 // minimum and LinearSearchSteps; LinearSearchSteps always when adaptive steps are off.
 int sdReliefSteps(vec2 path)
@@ -55,7 +63,7 @@ int sdReliefSteps(vec2 path)
   {
     return int(most);
   }
-  float texels = length(path * vec2(textureSize(SD_RELIEF_SAMPLER, 0)));
+  float texels = length(path * sdReliefTexels);
   return int(clamp(ceil(texels), min(sdMinLinearSteps, most), most));
 }
 
@@ -127,9 +135,9 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   sdReliefGradY = dFdy(tc);
   sdReliefN = N;
   // The isotropic level OpenGL would choose: log2 of the longer texel footprint.
-  vec2 texels = vec2(textureSize(SD_RELIEF_SAMPLER, 0));
-  vec2 footX = sdReliefGradX * texels;
-  vec2 footY = sdReliefGradY * texels;
+  sdReliefTexels = vec2(textureSize(SD_RELIEF_SAMPLER, 0));
+  vec2 footX = sdReliefGradX * sdReliefTexels;
+  vec2 footY = sdReliefGradY * sdReliefTexels;
   sdReliefLod = max(0.5 * log2(max(dot(footX, footX), dot(footY, footY))), 0.0);
   sdReliefFade = 0.0;
   sdReliefHitTC = tc;
@@ -149,12 +157,18 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   sdReliefDPdt = (sigmaT * sdReliefGradX.x - sigmaS * sdReliefGradY.x) / tcDet;
   sdReliefDPds -= N * dot(N, sdReliefDPds);
   sdReliefDPdt -= N * dot(N, sdReliefDPdt);
-  mat3 frame = mat3(sdReliefDPds, sdReliefDPdt, N);
-  if (!(abs(determinant(frame)) > 1e-30))
+  // (dP/ds, dP/dt, N) with N orthogonal to both: the inverse is N itself and, in the
+  // plane, the inverse of the 2x2 Gram matrix of dP/ds, dP/dt.
+  float gss = dot(sdReliefDPds, sdReliefDPds);
+  float gst = dot(sdReliefDPds, sdReliefDPdt);
+  float gtt = dot(sdReliefDPdt, sdReliefDPdt);
+  float gram = gss * gtt - gst * gst;
+  if (!(gram > 1e-30 * gss * gtt) || !(gram > 0.0))
   {
     return tc;
   }
-  sdReliefToBox = inverse(frame);
+  sdReliefDualS = (gtt * sdReliefDPds - gst * sdReliefDPdt) / gram;
+  sdReliefDualT = (gss * sdReliefDPdt - gst * sdReliefDPds) / gram;
 
   // Fade to normal mapping where the whole depth spans less than a pixel: the pixel's
   // size across the view ray is that of the screen derivatives without their part along it.
@@ -166,11 +180,11 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
     return tc;
   }
 
-  vec3 ray = sdReliefToBox * (-V);
+  vec3 ray = sdReliefToBox(-V);
   float down = max(-ray.z, sdMinRayCosine);
   vec2 delta = ray.xy * (sdReliefDepthVC / down); // texture offset from the top to depth 1
   int steps = sdReliefSteps(delta);
-  float reach = max(length(delta * texels), sdReliefDepthVC / max(pixel, 1e-30));
+  float reach = max(length(delta * sdReliefTexels), sdReliefDepthVC / max(pixel, 1e-30));
   float d = sdReliefIntersect(
     tc, delta, steps, sdReliefBinarySteps(reach, steps), sdReliefAboveDepth);
   sdReliefHitTC = tc + d * delta;

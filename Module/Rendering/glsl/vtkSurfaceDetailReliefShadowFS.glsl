@@ -21,7 +21,7 @@ float sdReliefShadow(vec3 L)
   {
     return 1.0;
   }
-  vec3 ray = sdReliefToBox * L;
+  vec3 ray = sdReliefToBox(L);
   if (!(ray.z > 0.0))
   {
     return 1.0 - sdReliefFade;
