@@ -382,6 +382,13 @@ void RowBuckets::Build(const CoarseMesh& mesh, int H)
 }
 
 //------------------------------------------------------------------------------
+struct BakeSettings
+{
+  double MaxRayDistance = 0.0;
+  double CageOffset = 0.0;
+  bool TangentSpace = true;
+};
+
 // The ray pass: one texel row per iteration, texels owned by the first triangle covering
 // their centre; every texel's result depends on the inputs only.
 struct CastRows
@@ -391,9 +398,7 @@ struct CastRows
   const RowBuckets& Rows;
   BakeBuffers& Out;
   std::vector<RowReport>& Reports;
-  double MaxRayDistance = 0.0;
-  double CageOffset = 0.0;
-  bool TangentSpace = true;
+  BakeSettings Settings;
 
   struct Scratch
   {
@@ -403,12 +408,13 @@ struct CastRows
   vtkSMPThreadLocal<Scratch> Local;
 
   CastRows(const CoarseMesh& c, const DetailedMesh& d, const RowBuckets& r, BakeBuffers& o,
-    std::vector<RowReport>& reports)
+    std::vector<RowReport>& reports, const BakeSettings& settings)
     : Coarse(c)
     , Detailed(d)
     , Rows(r)
     , Out(o)
     , Reports(reports)
+    , Settings(settings)
   {
   }
 
@@ -531,7 +537,7 @@ struct CastRows
     }
     double detail[3], stored[3];
     this->Detailed.NormalAt(hit, detail);
-    if (this->TangentSpace)
+    if (this->Settings.TangentSpace)
     {
       ToFrame(detail, t, bt, n, stored);
     }
@@ -552,20 +558,19 @@ struct CastRows
   // Both ways from the surface, nearest hit; or inwards from the cage, first hit.
   bool Cast(const double p[3], const double n[3], RayHit& hit, double& height) const
   {
-    if (this->CageOffset > 0.0)
+    const double cage = this->Settings.CageOffset, reach = this->Settings.MaxRayDistance;
+    if (cage > 0.0)
     {
-      const double o[3] = { p[0] + this->CageOffset * n[0], p[1] + this->CageOffset * n[1],
-        p[2] + this->CageOffset * n[2] };
+      const double o[3] = { p[0] + cage * n[0], p[1] + cage * n[1], p[2] + cage * n[2] };
       const double d[3] = { -n[0], -n[1], -n[2] };
-      if (!this->Detailed.Hierarchy.Nearest(
-            o, d, 0.0, this->CageOffset + this->MaxRayDistance, hit))
+      if (!this->Detailed.Hierarchy.Nearest(o, d, 0.0, cage + reach, hit))
       {
         return false;
       }
-      height = this->CageOffset - hit.T;
+      height = cage - hit.T;
       return true;
     }
-    if (!this->Detailed.Hierarchy.Nearest(p, n, -this->MaxRayDistance, this->MaxRayDistance, hit))
+    if (!this->Detailed.Hierarchy.Nearest(p, n, -reach, reach, hit))
     {
       return false;
     }
@@ -740,12 +745,6 @@ void ShapeImage(vtkImageData* image, int W, int H)
 }
 
 //------------------------------------------------------------------------------
-struct BakeSettings
-{
-  double MaxRayDistance = 0.0;
-  double CageOffset = 0.0;
-  bool TangentSpace = true;
-};
 
 struct CastSummary
 {
@@ -759,10 +758,7 @@ CastSummary CastRays(const CoarseMesh& coarse, const DetailedMesh& detailed,
   RowBuckets rows;
   rows.Build(coarse, buffers.H);
   std::vector<RowReport> reports(buffers.H);
-  CastRows cast(coarse, detailed, rows, buffers, reports);
-  cast.MaxRayDistance = settings.MaxRayDistance;
-  cast.CageOffset = settings.CageOffset;
-  cast.TangentSpace = settings.TangentSpace;
+  CastRows cast(coarse, detailed, rows, buffers, reports, settings);
   vtkSMPTools::For(0, buffers.H, cast);
 
   CastSummary summary;
