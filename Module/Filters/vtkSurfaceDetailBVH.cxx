@@ -1,14 +1,20 @@
 #include "vtkSurfaceDetailBVH.h"
 
+#include "vtkSMPTools.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace vtkSurfaceDetail
 {
 namespace
 {
 constexpr int LeafSize = 4;
+// Levels built serially before the subtrees (up to 2^ParallelLevels of them) are built in
+// parallel: enough tasks to balance any number of threads the machine is likely to have.
+constexpr int ParallelLevels = 6;
 // Deep enough for any tree of median splits over 2^31 triangles, with room to spare.
 constexpr int StackDepth = 96;
 // A ray through a shared edge or vertex must not slip between the triangles that share it.
@@ -49,6 +55,33 @@ double DistanceFromOrigin(double t0, double t1)
   return t0 > 0.0 ? t0 : (t1 < 0.0 ? -t1 : 0.0);
 }
 
+float Down(float v);
+float Up(float v);
+
+// The triangle's single-precision corners, their box widened by one ulp (every rounding of the
+// slab arithmetic stays inside that margin) and its centroid; false if a corner is not finite.
+bool PrepareTriangle(
+  const double* points, const vtkIdType* ids, float v[9], float box[6], float centroid[3])
+{
+  bool finite = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double* p = points + 3 * ids[c];
+    for (int k = 0; k < 3; ++k)
+    {
+      v[3 * c + k] = static_cast<float>(p[k]);
+      finite = finite && std::isfinite(v[3 * c + k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    box[k] = Down(std::min({ v[k], v[3 + k], v[6 + k] }));
+    box[3 + k] = Up(std::max({ v[k], v[3 + k], v[6 + k] }));
+    centroid[k] = (v[k] + v[3 + k] + v[6 + k]) / 3.0f;
+  }
+  return finite;
+}
+
 float Down(float v)
 {
   return std::nextafter(v, -std::numeric_limits<float>::infinity());
@@ -61,117 +94,203 @@ float Up(float v)
 } // namespace
 
 //------------------------------------------------------------------------------
-void TriangleBVH::Build(const double* points, const vtkIdType* corners, vtkIdType numberOfTriangles)
+// Median splits down to LeafSize: the tree's shape depends only on the number of triangles, so
+// every subtree's place in the depth-first node array is known before it is built, and the
+// subtrees below the first levels are built in parallel into their own parts of the array.
+// Items carry their centroids, so that the median selection reads no other array; boxes are
+// set for leaves during the build and for inner nodes in one sweep afterwards.
+struct TriangleBVH::Builder
 {
-  this->Nodes.clear();
-  this->Vertices.clear();
-  this->Order.clear();
-  std::vector<float> vertices(static_cast<size_t>(numberOfTriangles) * 9);
-  std::vector<float> boxes(static_cast<size_t>(numberOfTriangles) * 6);
-  std::vector<float> centroids(static_cast<size_t>(numberOfTriangles) * 3);
-  std::vector<int32_t> items;
-  items.reserve(static_cast<size_t>(numberOfTriangles));
-  for (vtkIdType t = 0; t < numberOfTriangles; ++t)
+  struct Item
   {
-    float* v = vertices.data() + 9 * t;
-    bool finite = true;
-    for (int c = 0; c < 3; ++c)
+    float Centroid[3];
+    int32_t Triangle;
+  };
+  struct Task
+  {
+    int32_t Index, Begin, End;
+  };
+
+  std::vector<Node>& Nodes;
+  std::vector<Item> Items;
+  const std::vector<float>& Boxes;
+  std::map<int32_t, int32_t> SubtreeSizes; // filled before the parallel part, then only read
+
+  int32_t SubtreeSize(int32_t n)
+  {
+    if (n <= LeafSize)
     {
-      const double* p = points + 3 * corners[3 * t + c];
+      return 1;
+    }
+    auto known = this->SubtreeSizes.find(n);
+    if (known != this->SubtreeSizes.end())
+    {
+      return known->second;
+    }
+    const int32_t size = 1 + this->SubtreeSize(n / 2) + this->SubtreeSize(n - n / 2);
+    this->SubtreeSizes[n] = size;
+    return size;
+  }
+
+  int32_t KnownSubtreeSize(int32_t n) const { return n <= LeafSize ? 1 : this->SubtreeSizes.at(n); }
+
+  // Fills node @a index for items [begin, end); below @a serialLevels levels the subtrees go
+  // to @a deferred instead (when given).
+  void Build(
+    int32_t index, int32_t begin, int32_t end, int serialLevels, std::vector<Task>* deferred)
+  {
+    if (deferred && serialLevels == 0)
+    {
+      deferred->push_back({ index, begin, end });
+      return;
+    }
+    Node& node = this->Nodes[index];
+    if (end - begin <= LeafSize)
+    {
+      this->MakeLeaf(begin, end, node);
+      return;
+    }
+    const int axis = this->SplitAxis(begin, end);
+    const int32_t mid = begin + (end - begin) / 2;
+    // Ties broken by triangle index: the tree depends on the mesh alone.
+    std::nth_element(this->Items.begin() + begin, this->Items.begin() + mid,
+      this->Items.begin() + end,
+      [axis](const Item& a, const Item& b)
+      {
+        return a.Centroid[axis] < b.Centroid[axis] ||
+          (a.Centroid[axis] == b.Centroid[axis] && a.Triangle < b.Triangle);
+      });
+    const int32_t right = index + 1 + this->KnownSubtreeSize(mid - begin);
+    node.First = right;
+    node.Count = 0;
+    this->Build(index + 1, begin, mid, serialLevels - 1, deferred);
+    this->Build(right, mid, end, serialLevels - 1, deferred);
+  }
+
+  // The axis along which the centroids spread most.
+  int SplitAxis(int32_t begin, int32_t end) const
+  {
+    float lo[3], hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::numeric_limits<float>::infinity();
+      hi[k] = -lo[k];
+    }
+    for (int32_t i = begin; i < end; ++i)
+    {
       for (int k = 0; k < 3; ++k)
       {
-        v[3 * c + k] = static_cast<float>(p[k]);
-        finite = finite && std::isfinite(v[3 * c + k]);
+        lo[k] = std::min(lo[k], this->Items[i].Centroid[k]);
+        hi[k] = std::max(hi[k], this->Items[i].Centroid[k]);
       }
     }
-    if (!finite)
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
     {
-      continue;
+      axis = (hi[k] - lo[k]) > (hi[axis] - lo[axis]) ? k : axis;
     }
-    // Boxes of the single-precision vertices, widened by one ulp: every rounding of the slab
-    // arithmetic stays inside that margin.
-    for (int k = 0; k < 3; ++k)
-    {
-      const float lo = std::min({ v[k], v[3 + k], v[6 + k] });
-      const float hi = std::max({ v[k], v[3 + k], v[6 + k] });
-      boxes[6 * t + k] = Down(lo);
-      boxes[6 * t + 3 + k] = Up(hi);
-      centroids[3 * t + k] = (v[k] + v[3 + k] + v[6 + k]) / 3.0f;
-    }
-    items.push_back(static_cast<int32_t>(t));
+    return axis;
   }
-  if (items.empty())
-  {
-    return;
-  }
-  this->Nodes.reserve(2 * (items.size() / LeafSize + 1));
-  this->Nodes.emplace_back();
-  const int32_t count = static_cast<int32_t>(items.size());
-  this->BuildNode(0, items, centroids, boxes, 0, count);
-  this->Vertices.resize(items.size() * 9);
-  this->Order.resize(items.size());
-  for (size_t slot = 0; slot < items.size(); ++slot)
-  {
-    std::copy_n(
-      vertices.data() + 9 * static_cast<size_t>(items[slot]), 9, this->Vertices.data() + 9 * slot);
-    this->Order[slot] = items[slot];
-  }
-}
 
-//------------------------------------------------------------------------------
-// Fills node @a index for items [begin, end); children are created in adjacent pairs.
-void TriangleBVH::BuildNode(int32_t index, std::vector<int32_t>& items,
-  const std::vector<float>& centroids, const std::vector<float>& boxes, int32_t begin, int32_t end)
-{
-  float lo[3], hi[3], clo[3], chi[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    lo[k] = clo[k] = std::numeric_limits<float>::infinity();
-    hi[k] = chi[k] = -std::numeric_limits<float>::infinity();
-  }
-  for (int32_t i = begin; i < end; ++i)
-  {
-    const size_t t = static_cast<size_t>(items[i]);
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], boxes[6 * t + k]);
-      hi[k] = std::max(hi[k], boxes[6 * t + 3 + k]);
-      clo[k] = std::min(clo[k], centroids[3 * t + k]);
-      chi[k] = std::max(chi[k], centroids[3 * t + k]);
-    }
-  }
-  Node node;
-  std::copy_n(lo, 3, node.Lo);
-  std::copy_n(hi, 3, node.Hi);
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-  {
-    axis = (chi[k] - clo[k]) > (chi[axis] - clo[axis]) ? k : axis;
-  }
-  if (end - begin <= LeafSize || !(chi[axis] > clo[axis]))
+  void MakeLeaf(int32_t begin, int32_t end, Node& node) const
   {
     node.First = begin;
     node.Count = end - begin;
-    this->Nodes[index] = node;
+    for (int k = 0; k < 3; ++k)
+    {
+      node.Lo[k] = std::numeric_limits<float>::infinity();
+      node.Hi[k] = -node.Lo[k];
+    }
+    for (int32_t i = begin; i < end; ++i)
+    {
+      const float* box = this->Boxes.data() + 6 * static_cast<size_t>(this->Items[i].Triangle);
+      for (int k = 0; k < 3; ++k)
+      {
+        node.Lo[k] = std::min(node.Lo[k], box[k]);
+        node.Hi[k] = std::max(node.Hi[k], box[3 + k]);
+      }
+    }
+  }
+
+  // Children come after their parent in the depth-first array: one backward sweep.
+  void InnerBoxes()
+  {
+    for (size_t i = this->Nodes.size(); i-- > 0;)
+    {
+      Node& node = this->Nodes[i];
+      if (node.Count > 0)
+      {
+        continue;
+      }
+      const Node& left = this->Nodes[i + 1];
+      const Node& right = this->Nodes[node.First];
+      for (int k = 0; k < 3; ++k)
+      {
+        node.Lo[k] = std::min(left.Lo[k], right.Lo[k]);
+        node.Hi[k] = std::max(left.Hi[k], right.Hi[k]);
+      }
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+void TriangleBVH::Build(const double* points, const vtkIdType* corners, vtkIdType numberOfTriangles)
+{
+  const size_t n = static_cast<size_t>(numberOfTriangles);
+  std::vector<float> vertices(n * 9), boxes(n * 6), centroids(n * 3);
+  std::vector<uint8_t> finite(n, 0);
+  vtkSMPTools::For(0, numberOfTriangles,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        finite[t] = PrepareTriangle(points, corners + 3 * t, vertices.data() + 9 * t,
+          boxes.data() + 6 * t, centroids.data() + 3 * t);
+      }
+    });
+  Builder builder{ this->Nodes, {}, boxes, {} };
+  builder.Items.reserve(n);
+  for (size_t t = 0; t < n; ++t)
+  {
+    if (finite[t])
+    {
+      const float* c = centroids.data() + 3 * t;
+      builder.Items.push_back({ { c[0], c[1], c[2] }, static_cast<int32_t>(t) });
+    }
+  }
+  this->Nodes.clear();
+  this->Vertices.clear();
+  this->Order.clear();
+  if (builder.Items.empty())
+  {
     return;
   }
-  const int32_t mid = begin + (end - begin) / 2;
-  // Ties broken by triangle index: the tree depends on the mesh alone.
-  std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
-    [&](int32_t a, int32_t b)
+  const int32_t count = static_cast<int32_t>(builder.Items.size());
+  this->Nodes.resize(static_cast<size_t>(builder.SubtreeSize(count)));
+  std::vector<Builder::Task> tasks;
+  builder.Build(0, 0, count, ParallelLevels, &tasks);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(tasks.size()),
+    [&](vtkIdType first, vtkIdType last)
     {
-      const float ca = centroids[3 * static_cast<size_t>(a) + axis];
-      const float cb = centroids[3 * static_cast<size_t>(b) + axis];
-      return ca < cb || (ca == cb && a < b);
+      for (vtkIdType k = first; k < last; ++k)
+      {
+        builder.Build(tasks[k].Index, tasks[k].Begin, tasks[k].End, -1, nullptr);
+      }
     });
-  const int32_t left = static_cast<int32_t>(this->Nodes.size());
-  node.First = left;
-  node.Count = 0;
-  this->Nodes[index] = node;
-  this->Nodes.emplace_back();
-  this->Nodes.emplace_back();
-  this->BuildNode(left, items, centroids, boxes, begin, mid);
-  this->BuildNode(left + 1, items, centroids, boxes, mid, end);
+  builder.InnerBoxes();
+  this->Vertices.resize(static_cast<size_t>(count) * 9);
+  this->Order.resize(static_cast<size_t>(count));
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType slot = first; slot < last; ++slot)
+      {
+        const int32_t t = builder.Items[slot].Triangle;
+        this->Order[slot] = t;
+        std::copy_n(
+          vertices.data() + 9 * static_cast<size_t>(t), 9, this->Vertices.data() + 9 * slot);
+      }
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -266,9 +385,10 @@ bool TriangleBVH::Nearest(
     const double lo = std::max(tLow, -best), hi = std::min(tHigh, best);
     double dist[2];
     bool in[2];
+    const int32_t children[2] = { stackNode[top] + 1, node.First };
     for (int c = 0; c < 2; ++c)
     {
-      const Node& child = this->Nodes[node.First + c];
+      const Node& child = this->Nodes[children[c]];
       in[c] = Slabs(child.Lo, child.Hi, origin, inv, direction, lo, hi, t0, t1);
       dist[c] = in[c] ? DistanceFromOrigin(t0, t1) : 0.0;
     }
@@ -278,7 +398,7 @@ bool TriangleBVH::Nearest(
     {
       if (in[c] && top < StackDepth)
       {
-        stackNode[top] = node.First + c;
+        stackNode[top] = children[c];
         stackDist[top++] = dist[c];
       }
     }

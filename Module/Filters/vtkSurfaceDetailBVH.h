@@ -9,7 +9,8 @@
  * visited nearest first.
  *
  * Built once (object-median splits on the longest axis of the centroids, up to four
- * triangles per leaf), read-only afterwards: queries from many threads need no locking, and a
+ * triangles per leaf; the subtrees in parallel, the result independent of the threads),
+ * read-only afterwards: queries from many threads need no locking, and a
  * query's answer depends only on the ray, never on the order in which others ran. Boxes and
  * the leaf-ordered vertex copy are single precision (half the memory traffic); the
  * intersection arithmetic is double precision, on those single-precision vertices.
@@ -58,12 +59,11 @@ private:
   {
     float Lo[3];
     float Hi[3];
-    int32_t First; // leaf: first triangle slot; inner: index of the left child (right = +1)
+    int32_t First; // leaf: first triangle slot; inner: the right child (the left is next)
     int32_t Count; // leaf: number of triangles (> 0); inner: 0
   };
 
-  void BuildNode(int32_t index, std::vector<int32_t>& items, const std::vector<float>& centroids,
-    const std::vector<float>& boxes, int32_t begin, int32_t end);
+  struct Builder;
   bool IntersectLeaf(const Node& node, const double o[3], const double d[3], double tLow,
     double tHigh, double& best, RayHit& hit) const;
 
