@@ -358,9 +358,12 @@ void RowBuckets::Build(const CoarseMesh& mesh, int H)
       lo = std::min(lo, t);
       hi = std::max(hi, t);
     }
-    // Rows whose centre (j + 0.5)/H lies in [lo, hi], a little widened for rounding.
-    first[tri] = static_cast<int>(std::max(0.0, std::ceil(lo * H - 0.5 - 1e-6)));
-    last[tri] = static_cast<int>(std::min(H - 1.0, std::floor(hi * H - 0.5 + 1e-6)));
+    // Rows whose centre (j + 0.5)/H lies in [lo, hi], a little widened for rounding; clamped
+    // in floating point first, as coordinates far outside [0,1] would overflow an int.
+    first[tri] =
+      static_cast<int>(std::min(std::max(0.0, std::ceil(lo * H - 0.5 - 1e-6)), double(H)));
+    last[tri] =
+      static_cast<int>(std::max(std::min(H - 1.0, std::floor(hi * H - 0.5 + 1e-6)), -1.0));
     for (int j = first[tri]; j <= last[tri]; ++j)
     {
       ++this->Offsets[j + 1];
@@ -513,9 +516,12 @@ struct CastRows
       }
     }
     const int W = this->Out.W;
-    // One texel of slack each way; the exact test in Rasterise decides.
-    i0 = lo > -1.0 ? static_cast<int>(std::floor(lo * W - 0.5)) : 0;
-    i1 = hi < 2.0 ? static_cast<int>(std::ceil(hi * W - 0.5)) : W - 1;
+    // One texel of slack each way; the exact test in Rasterise decides. Clamped first: an int
+    // cannot hold what a sliver of a triangle far outside [0,1] gives.
+    lo = std::min(std::max(lo, -1.0), 2.0);
+    hi = std::min(std::max(hi, -1.0), 2.0);
+    i0 = static_cast<int>(std::floor(lo * W - 0.5));
+    i1 = static_cast<int>(std::ceil(hi * W - 0.5));
     if (!(lo <= hi))
     {
       i1 = i0 - 1;

@@ -538,6 +538,13 @@ TEST(NormalMapBaker, TextureCoordinatesOutsideTheSquareAndOverlaps)
   baker->Update();
   EXPECT_EQ(obs->Errors, 0);
   EXPECT_NE(obs->Messages.find("outside [0,1] (cells 0, 1)"), std::string::npos) << obs->Messages;
+  // Coordinates far beyond any int's range of texels: still only a warning.
+  outside->GetPointData()->GetTCoords()->SetTuple2(0, 1e30, -1e30);
+  outside->Modified();
+  obs->Messages.clear();
+  baker->Update();
+  EXPECT_EQ(obs->Errors, 0);
+  EXPECT_NE(obs->Messages.find("outside [0,1] (cells 0, 1)"), std::string::npos) << obs->Messages;
 
   // Two triangles, apart in space, with the same texture coordinates.
   vtkNew<vtkPolyData> overlap;
