@@ -158,7 +158,9 @@ Accuracy Measure(const Surface& s, int space, int type)
       const vtkIdType texel = static_cast<vtkIdType>(j) * W + i;
       const Frame f = CoarseFrame(coarse, U, V, st[0], st[1]);
       const double baked = heights->GetComponent(texel, 0);
-      double u = st[0], v = st[1], d = baked;
+      // Newton starts on the coarse surface (d = 0), not at the baked height: the hit it finds
+      // is the closed form's own.
+      double u = st[0], v = st[1], d = 0.0;
       if (!MeetSurface(s, f.P, f.N, u, v, d))
       {
         ADD_FAILURE() << s.Name << ": no closed-form hit at texel " << i << "," << j;
@@ -194,6 +196,8 @@ void ExpectAccurate(const Accuracy& a, double scale)
 {
   EXPECT_GT(a.Texels, 40000);
   EXPECT_LT(a.MeanAngle, 1.0);
+  // Everywhere, seams included: 8-bit rounding alone is up to half a degree.
+  EXPECT_LT(a.MaxAngle, 1.0);
   // The detailed mesh is a tessellation: its facets stand off the closed form by their chord
   // error, a small fraction of the displacement.
   EXPECT_LT(a.MeanHeightError, 0.01 * scale);
