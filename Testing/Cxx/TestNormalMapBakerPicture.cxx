@@ -1,5 +1,5 @@
-// The point of baking, as a picture: on the left the detailed torus (1.2M triangles, displaced by
-// vtkDisplacementMapFilter with Exact normals) through the plain vtkOpenGLPolyDataMapper; on the
+// The point of baking, as a picture: on the left the detailed torus (590,000 triangles, displaced
+// by vtkDisplacementMapFilter with Exact normals) through the plain vtkOpenGLPolyDataMapper; on the
 // right the 48 x 24 coarse torus with the map vtkNormalMapBaker baked from it, through
 // vtkSurfaceDetailMapper's NormalMapping. Same camera, same light (from the right, a little
 // above and in front).
