@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
 
 int main(int argc, char* argv[])
@@ -69,16 +70,21 @@ int main(int argc, char* argv[])
   // Timed apart from the writing, which measures the disk rather than the module.
   vtkNew<vtkTimerLog> timer;
   controller->Barrier();
+  // Wall-clock time, and processor time (all threads), which other jobs on a shared machine
+  // do not inflate.
+  const std::clock_t cpu0 = std::clock();
   timer->StartTimer();
   pipeline.Displace->UpdatePiece(rank, ranks, 0);
   timer->StopTimer();
+  const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   vtkPolyData* piece = pipeline.Displace->GetOutput();
   const double seconds = timer->GetElapsedTime();
-  std::printf("rank %d of %d, %d threads: %lld points, %lld triangles in %.3f s (%.3g points/s)\n",
-    rank, ranks, vtkSMPTools::GetEstimatedNumberOfThreads(),
-    static_cast<long long>(piece->GetNumberOfPoints()),
-    static_cast<long long>(piece->GetNumberOfCells()), seconds,
-    piece->GetNumberOfPoints() / seconds);
+  const double points = static_cast<double>(piece->GetNumberOfPoints());
+  std::printf("rank %d of %d, %d threads: %.0f points, %lld triangles in %.3f s, %.3f s of "
+              "processor time (%.3g points/s, %.3g points per processor second)\n",
+    rank, ranks, vtkSMPTools::GetEstimatedNumberOfThreads(), points,
+    static_cast<long long>(piece->GetNumberOfCells()), seconds, cpu, points / seconds,
+    points / cpu);
 
   // The writer asks for the same piece, which is up to date: nothing runs again.
   vtkNew<vtkXMLPPolyDataWriter> writer;
@@ -90,7 +96,12 @@ int main(int argc, char* argv[])
   writer->SetController(controller);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
+  // LZ4: several times faster than the default zlib for a few percent more bytes.
+  writer->SetCompressorTypeToLZ4();
+  timer->StartTimer();
   const int written = writer->Write();
+  timer->StopTimer();
+  std::printf("rank %d of %d: wrote its piece in %.3f s\n", rank, ranks, timer->GetElapsedTime());
 
   int ok = written == 1 ? 1 : 0, allOk = 0;
   controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
