@@ -590,13 +590,14 @@ struct PieceRows
   {
     const vtkIdType g = ghostLevels;
     const vtkIdType lo = std::max<vtkIdType>(0, row0 - g), hi = std::min(v, row1 + g);
-    // Across the seam, never reaching the rows taken already.
-    const vtkIdType below = joinV ? std::min(g - (row0 - lo), v - hi) : 0;
-    const vtkIdType above = joinV ? std::min(g - (hi - row1), lo) : 0;
+    // Across the seam, never reaching the rows taken already: a piece at the start takes the
+    // last rows, a piece at the end the first rows.
+    const vtkIdType lastRows = joinV ? std::min(g - (row0 - lo), v - hi) : 0;
+    const vtkIdType firstRows = joinV ? std::min(g - (hi - row1), lo) : 0;
     std::vector<char> want(v, 0);
     std::fill(want.begin() + lo, want.begin() + hi, 1);
-    std::fill(want.begin(), want.begin() + above, 1);
-    std::fill(want.end() - below, want.end(), 1);
+    std::fill(want.begin(), want.begin() + firstRows, 1);
+    std::fill(want.end() - lastRows, want.end(), 1);
     // Each run of consecutive cell rows [a, b) has the point rows a..b.
     for (vtkIdType a = 0; a < v;)
     {
