@@ -12,6 +12,9 @@ packages=(
   xvfb xauth mesa-utils libgl1-mesa-dri
   libjpeg-turbo-progs
   xplanet-images
+  # The MPI example and tests: VTK::ParallelMPI comes with libvtk9-dev; mpiexec and the
+  # MPI headers it was built against come from Open MPI (Debian's default MPI).
+  openmpi-bin libopenmpi-dev
 
   # CI's second stage (scripts/test-sanitizers.sh): clang with ASan and UBSan
   clang

@@ -6,9 +6,11 @@
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkParametricSurfaceSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -18,6 +20,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailGhosts.h"
 
 #include <algorithm>
 #include <atomic>
@@ -1104,6 +1107,32 @@ void EstimateDerivativeScale(Context<R>& c)
   }
 }
 
+// The map from dPdu/dPdv's parameters to the texture coordinates as
+// vtkParametricSurfaceSource declares it on them: exact, and the same in every piece, where
+// an estimate depends on the polygons at hand. False where it is not declared or not usable.
+template <typename R>
+bool DeclaredDerivativeScale(vtkDataArray* tcoords, Context<R>& c)
+{
+  vtkInformationDoubleVectorKey* key = vtkParametricSurfaceSource::TEXTURE_TRANSFORM();
+  vtkInformation* info = tcoords->HasInformation() ? tcoords->GetInformation() : nullptr;
+  if (!info || !info->Has(key) || info->Length(key) != 4)
+  {
+    return false;
+  }
+  const double* transform = info->Get(key);
+  const double repeat[2] = { transform[0], transform[2] };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!std::isfinite(1.0 / repeat[k]) || repeat[k] == 0.0)
+    {
+      return false;
+    }
+  }
+  c.DerivativeScale[0] = 1.0 / repeat[0];
+  c.DerivativeScale[1] = 1.0 / repeat[1];
+  return true;
+}
+
 // A 3-component point array named @a name, or null.
 vtkDataArray* Vector(vtkPointData* pd, const char* name)
 {
@@ -1293,7 +1322,7 @@ struct Execution
           }
         });
     }
-    if (c.DPdu)
+    if (c.DPdu && !DeclaredDerivativeScale(tcoords, c))
     {
       EstimateDerivativeScale(c);
     }
@@ -1343,15 +1372,17 @@ int vtkDisplacementMapFilter::FillInputPortInformation(int port, vtkInformation*
 int vtkDisplacementMapFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The surface streams piece by piece; every piece needs the whole height map.
+  // The surface streams piece by piece; every piece needs the whole height map. Seams, fits
+  // and Mesh normals read a point's polygons, so a piece needs its neighbours' as ghosts.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
+  vtkSurfaceDetailGhosts::RequestOneMoreLevel(inInfo, outInfo);
+  if (!this->MergeSeams && this->NormalMode == None)
+  {
+    // Each point moves on its own: no neighbours needed.
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
+  }
   vtkInformation* mapInfo = inputVector[1]->GetInformationObject(0);
   if (mapInfo && mapInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
@@ -1498,6 +1529,7 @@ int vtkDisplacementMapFilter::RequestData(
   {
     // Nothing moves, so nothing changes: the input itself, bit for bit.
     output->ShallowCopy(input);
+    vtkSurfaceDetailGhosts::RemoveUnrequested(outputVector->GetInformationObject(0), output);
     return 1;
   }
   // One precision for all: float when every array read is float (as VTK's sources make them),
@@ -1551,6 +1583,7 @@ int vtkDisplacementMapFilter::RequestData(
   {
     run(double());
   }
+  vtkSurfaceDetailGhosts::RemoveUnrequested(outputVector->GetInformationObject(0), output);
   return 1;
 }
 

@@ -70,9 +70,11 @@
  * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
  * (vtkParametricSurfaceSource's GenerateDerivatives), they give P_s and P_t. They may be
  * taken with respect to parameters (u,v) of which the texture coordinates are an
- * axis-aligned affine function (the source's TextureRepeat and TextureOffset): the filter
- * fits s = o_s + r_s u, t = o_t + r_t v by least squares over a sample of edges and uses
- * P_s = dPdu / r_s, P_t = dPdv / r_t. Otherwise P_s and P_t are fitted
+ * axis-aligned affine function (the source's TextureRepeat and TextureOffset), s = o_s +
+ * r_s u, t = o_t + r_t v, and the filter uses P_s = dPdu / r_s, P_t = dPdv / r_t. r_s and r_t
+ * are read from the texture coordinates' vtkParametricSurfaceSource::TEXTURE_TRANSFORM key
+ * where the source set it; otherwise they are fitted by least squares over a sample of edges
+ * (an estimate, which can differ slightly from piece to piece). Otherwise P_s and P_t are fitted
  * per point by least squares to the position differences over the point's polygons against
  * their texture-coordinate differences. "dPdu", "dPdv", "dNdu" and "dNdv" pass through
  * unchanged: they describe the input surface (nobody asked for them to be recomputed).
@@ -101,12 +103,14 @@
  * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
  * recomputes the normals from the faces).
  *
- * Pieces: the filter works on whatever piece it gets, with as many points out as in; the
- * height map is always requested whole. Positions and Approximate normals from dPdu/dPdv
- * (and Exact normals from dNdu/dNdv too) are those of the whole surface, except at seam
- * points whose partners are in another piece (they are only merged within a piece); fitted
- * and Mesh normals at a piece's border see only that piece's polygons (as
- * vtkPolyDataNormals does), unless ghost levels are requested downstream. Threads:
+ * Pieces: the filter works on whatever piece it gets; the height map is always requested
+ * whole. Seams, fits and Mesh normals read a point's polygons, so with several pieces the
+ * filter asks its input for one ghost level more than its output was asked for, and removes
+ * the ghost cells again (with the ghost points only they use) when its output was asked for
+ * none. From an input that provides them (vtkParametricSurfaceSource does, across its v seam
+ * too), every point a piece owns then gets what the whole surface gives it. Without ghost
+ * cells, fitted and Mesh normals at a piece's border see only that piece's polygons (as
+ * vtkPolyDataNormals does) and seam partners in another piece are not merged. Threads:
  * vtkSMPTools, with results independent of the number of threads. Nothing is kept between
  * executions.
  *

@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailGhosts.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
@@ -1158,6 +1159,15 @@ void vtkMikkTSpaceTangents::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
+int vtkMikkTSpaceTangents::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkSurfaceDetailGhosts::RequestOneMoreLevel(
+    inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(0));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkMikkTSpaceTangents::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -1180,6 +1190,7 @@ int vtkMikkTSpaceTangents::RequestData(
   this->UpdateProgress(0.7);
   mikk.SplitPoints();
   mikk.Assemble(inPD, output);
+  vtkSurfaceDetailGhosts::RemoveUnrequested(outputVector->GetInformationObject(0), output);
   if (mikk.NonFinitePoints > 0)
   {
     vtkWarningMacro(<< mikk.NonFinitePoints

@@ -67,6 +67,11 @@
  * Missing normals are computed with vtkPolyDataNormals (no splitting, no reordering),
  * with a warning.
  *
+ * Pieces: a vertex's frame depends on the triangles around it, so with several pieces the
+ * filter asks its input for one ghost level more than its output was asked for, and removes
+ * the ghost cells again (with the ghost points only they use) when the output was asked for
+ * none; the points a piece owns then get the frames of the whole surface.
+ *
  * @sa vtkPolyDataTangents vtkPolyDataNormals
  */
 
@@ -100,6 +105,7 @@ protected:
   vtkMikkTSpaceTangents() = default;
   ~vtkMikkTSpaceTangents() override = default;
 
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// The checks of the input that make the filter stop with an error.
   bool CheckInput(vtkPolyData* input, vtkPolyData* output);

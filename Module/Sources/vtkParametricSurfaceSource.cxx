@@ -3,9 +3,11 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkParametricFunction.h"
@@ -19,7 +21,9 @@
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
+#include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -44,9 +48,11 @@ constexpr double LimitStep = 1e-4;
 struct Grid
 {
   vtkParametricFunction* Function = nullptr;
-  vtkIdType U = 1;       // cells per row (vtkIdType: U + 1 and the indexes below fit)
-  vtkIdType Row0 = 0;    // first point row of this piece
-  vtkIdType NumRows = 0; // point rows in this piece
+  vtkIdType U = 1; // cells per row (vtkIdType: U + 1 and the indexes below fit)
+  // The surface's row of each of this piece's point rows, in increasing order: the piece's
+  // own rows, the ghost rows next to them, and (for a function joined in v) the ghost rows
+  // across the v seam, which repeat the far end's points as the whole surface does.
+  std::vector<vtkIdType> Rows;
   double UMin = 0, UExtent = 1, VMin = 0, VExtent = 1;
   double Orientation = 1.0;   // +1: N = Du x Dv; -1: N = Dv x Du
   bool HasDerivatives = true; // false: differences of the function's points
@@ -411,7 +417,7 @@ struct PointWorker
     for (vtkIdType id = begin; id < end; ++id)
     {
       const vtkIdType col = id % rowLength;
-      const vtkIdType j = g.Row0 + id / rowLength;
+      const vtkIdType j = g.Rows[id / rowLength];
       double p[3], du[3], dv[3];
       g.EvaluatePoint(col, j, p, du, dv);
       const double sum = p[0] + p[1] + p[2] + du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2];
@@ -487,10 +493,13 @@ struct PointWorker
 
 // Two triangles per grid quad, counter-clockwise around the normal. Every row of quads has
 // the connectivity of the first shifted by a multiple of the row length, so each row is one
-// add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ...
+// add of a precomputed pattern; the offsets are the ramp 0, 3, 6, ... Cell row r lies between
+// point rows @a bottoms[r] and @a bottoms[r] + 1.
 template <typename Id>
-void BuildTriangles(vtkIdType numRows, vtkIdType U, bool flip, Id* offsets, Id* connectivity)
+void BuildTriangles(
+  const std::vector<vtkIdType>& bottoms, vtkIdType U, bool flip, Id* offsets, Id* connectivity)
 {
+  const vtkIdType numRows = static_cast<vtkIdType>(bottoms.size());
   const vtkIdType rowValues = 6 * U;
   std::vector<Id> pattern(rowValues);
   for (vtkIdType i = 0; i < U; ++i)
@@ -512,7 +521,7 @@ void BuildTriangles(vtkIdType numRows, vtkIdType U, bool flip, Id* offsets, Id* 
     {
       for (vtkIdType r = begin; r < end; ++r)
       {
-        const Id shift = static_cast<Id>(r * (U + 1));
+        const Id shift = static_cast<Id>(bottoms[r] * (U + 1));
         Id* out = connectivity + r * rowValues;
         for (vtkIdType k = 0; k < rowValues; ++k)
         {
@@ -543,10 +552,11 @@ bool Allocate(vtkDataArray* array, const char* name, int components, vtkIdType n
 
 // Null when the memory is not available.
 template <typename IdArray>
-vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, vtkIdType U, bool flip)
+vtkSmartPointer<vtkCellArray> MakeTriangles(
+  const std::vector<vtkIdType>& bottoms, vtkIdType U, bool flip)
 {
   using Id = typename IdArray::ValueType;
-  const vtkIdType numTriangles = 2 * numRows * U;
+  const vtkIdType numTriangles = 2 * static_cast<vtkIdType>(bottoms.size()) * U;
   vtkNew<IdArray> offsets;
   vtkNew<IdArray> connectivity;
   if (!Allocate(offsets, "offsets", 1, numTriangles + 1) ||
@@ -554,11 +564,87 @@ vtkSmartPointer<vtkCellArray> MakeTriangles(vtkIdType numRows, vtkIdType U, bool
   {
     return nullptr;
   }
-  BuildTriangles<Id>(numRows, U, flip, offsets->GetPointer(0), connectivity->GetPointer(0));
+  BuildTriangles<Id>(bottoms, U, flip, offsets->GetPointer(0), connectivity->GetPointer(0));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
   return cells;
 }
+
+// The rows of one piece: its own cell rows [Row0, Row1) of the V, up to GhostLevels more on
+// each side as ghost cells, and for a surface joined in v, the ghost cells that lie across the
+// v seam (taken from the far end of the surface, with that end's own points, so that a piece
+// holds a seam exactly as the whole surface does). Each point row belongs to one piece: the
+// first point row of a piece's cells is its own, the last one is the next piece's (the last
+// piece owns both of its ends).
+struct PieceRows
+{
+  vtkIdType V, Row0, Row1;
+  std::vector<vtkIdType> PointRows;   // the surface row of each point row, increasing
+  std::vector<vtkIdType> CellBottoms; // the point row below each cell row
+  std::vector<vtkIdType> CellRows;    // the surface row of each cell row
+
+  PieceRows(vtkIdType v, vtkIdType row0, vtkIdType row1, int ghostLevels, bool joinV)
+    : V(v)
+    , Row0(row0)
+    , Row1(row1)
+  {
+    const vtkIdType g = ghostLevels;
+    const vtkIdType lo = std::max<vtkIdType>(0, row0 - g), hi = std::min(v, row1 + g);
+    // Across the seam, never reaching the rows taken already: a piece at the start takes the
+    // last rows, a piece at the end the first rows.
+    const vtkIdType lastRows = joinV ? std::min(g - (row0 - lo), v - hi) : 0;
+    const vtkIdType firstRows = joinV ? std::min(g - (hi - row1), lo) : 0;
+    std::vector<char> want(v, 0);
+    std::fill(want.begin() + lo, want.begin() + hi, 1);
+    std::fill(want.begin(), want.begin() + firstRows, 1);
+    std::fill(want.end() - lastRows, want.end(), 1);
+    // Each run of consecutive cell rows [a, b) has the point rows a..b.
+    for (vtkIdType a = 0; a < v;)
+    {
+      if (!want[a])
+      {
+        ++a;
+        continue;
+      }
+      vtkIdType b = a;
+      const vtkIdType first = static_cast<vtkIdType>(this->PointRows.size());
+      while (b < v && want[b])
+      {
+        this->CellBottoms.push_back(first + (b - a));
+        this->CellRows.push_back(b);
+        ++b;
+      }
+      for (vtkIdType j = a; j <= b; ++j)
+      {
+        this->PointRows.push_back(j);
+      }
+      a = b;
+    }
+  }
+
+  // vtkGhostType arrays: the ghost cells and the points another piece owns.
+  void MarkGhosts(vtkIdType U, vtkPolyData* output) const
+  {
+    const vtkIdType rowLength = U + 1;
+    vtkUnsignedCharArray* points = output->AllocatePointGhostArray();
+    unsigned char* p = points->GetPointer(0);
+    for (size_t k = 0; k < this->PointRows.size(); ++k)
+    {
+      const vtkIdType j = this->PointRows[k];
+      const bool own =
+        (j >= this->Row0 && j < this->Row1) || (j == this->V && this->Row1 == this->V);
+      std::fill_n(p + k * rowLength, rowLength, own ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
+    }
+    vtkUnsignedCharArray* cells = output->AllocateCellGhostArray();
+    unsigned char* c = cells->GetPointer(0);
+    for (size_t r = 0; r < this->CellRows.size(); ++r)
+    {
+      const vtkIdType j = this->CellRows[r];
+      const bool own = j >= this->Row0 && j < this->Row1;
+      std::fill_n(c + r * 2 * U, 2 * U, own ? 0 : vtkDataSetAttributes::DUPLICATECELL);
+    }
+  }
+};
 
 enum class Outcome
 {
@@ -646,6 +732,8 @@ Outcome GeneratePoints(
   return Outcome::Done;
 }
 } // namespace
+
+vtkInformationKeyRestrictedMacro(vtkParametricSurfaceSource, TEXTURE_TRANSFORM, DoubleVector, 4);
 
 //------------------------------------------------------------------------------
 vtkParametricSurfaceSource::vtkParametricSurfaceSource()
@@ -794,14 +882,16 @@ int vtkParametricSurfaceSource::RequestData(
   {
     return 1; // a surplus piece is empty
   }
-  const vtkIdType cellRow0 = piece * V / numPieces;
-  const vtkIdType cellRow1 = (piece + 1) * V / numPieces;
+  const int ghostLevels = numPieces > 1
+    ? std::max(0, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()))
+    : 0;
+  const PieceRows rows(
+    V, piece * V / numPieces, (piece + 1) * V / numPieces, ghostLevels, function->GetJoinV() != 0);
 
   Grid g;
   g.Function = function;
   g.U = this->UResolution;
-  g.Row0 = cellRow0;
-  g.NumRows = cellRow1 - cellRow0 + 1;
+  g.Rows = rows.PointRows;
   g.UMin = umin;
   g.UExtent = umax - umin;
   g.VMin = vmin;
@@ -848,7 +938,7 @@ int vtkParametricSurfaceSource::RequestData(
       });
     const unsigned long tag = function->AddObserver(vtkCommand::ErrorEvent, onError);
     double p[3], du[3], dv[3];
-    g.Evaluate(g.UDomain[0], g.VDomain[cellRow0], p, du, dv);
+    g.Evaluate(g.UDomain[0], g.VDomain[g.Rows[0]], p, du, dv);
     function->RemoveObserver(tag);
     if (!message.empty())
     {
@@ -879,17 +969,18 @@ int vtkParametricSurfaceSource::RequestData(
           }
         }
       });
-    vtkSMPTools::For(cellRow0, cellRow1 + 1,
+    vtkSMPTools::For(0, static_cast<vtkIdType>(g.Rows.size()),
       [&g](vtkIdType begin, vtkIdType end)
       {
-        for (vtkIdType j = begin; j < end; ++j)
+        for (vtkIdType k = begin; k < end; ++k)
         {
+          const vtkIdType j = g.Rows[k];
           g.Separable->EvaluateVTerms(g.VDomain[j], g.VTerms.data() + j * g.NumVTerms);
         }
       });
   }
 
-  const vtkIdType numPoints = g.NumRows * rowLength;
+  const vtkIdType numPoints = static_cast<vtkIdType>(g.Rows.size()) * rowLength;
   vtkIdType arbitrary = 0;
   const Requested want{ this->GenerateNormals, this->GenerateTextureCoordinates,
     this->GenerateTangents, this->GenerateDerivatives };
@@ -917,13 +1008,13 @@ int vtkParametricSurfaceSource::RequestData(
                        "radius): their normals and tangents are arbitrary.");
   }
 
-  const vtkIdType numTriangles = 2 * (g.NumRows - 1) * U;
+  const vtkIdType numTriangles = 2 * static_cast<vtkIdType>(rows.CellBottoms.size()) * U;
   const bool flip = g.Orientation < 0.0;
   const bool fits32 = 3 * numTriangles < std::numeric_limits<vtkTypeInt32>::max() &&
     numPoints < std::numeric_limits<vtkTypeInt32>::max();
   vtkSmartPointer<vtkCellArray> triangles = fits32
-    ? MakeTriangles<vtkTypeInt32Array>(g.NumRows - 1, g.U, flip)
-    : MakeTriangles<vtkTypeInt64Array>(g.NumRows - 1, g.U, flip);
+    ? MakeTriangles<vtkTypeInt32Array>(rows.CellBottoms, g.U, flip)
+    : MakeTriangles<vtkTypeInt64Array>(rows.CellBottoms, g.U, flip);
   if (!triangles)
   {
     output->Initialize();
@@ -933,6 +1024,16 @@ int vtkParametricSurfaceSource::RequestData(
     return 0;
   }
   output->SetPolys(triangles);
+  if (this->GenerateTextureCoordinates && this->GenerateDerivatives)
+  {
+    const double transform[4] = { this->TextureRepeat[0], this->TextureOffset[0],
+      this->TextureRepeat[1], this->TextureOffset[1] };
+    output->GetPointData()->GetTCoords()->GetInformation()->Set(TEXTURE_TRANSFORM(), transform, 4);
+  }
+  if (ghostLevels > 0)
+  {
+    rows.MarkGhosts(U, output);
+  }
   return 1;
 }
 

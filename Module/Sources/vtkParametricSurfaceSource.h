@@ -52,8 +52,16 @@
  *
  * Pieces: the source splits the v rows among UPDATE_NUMBER_OF_PIECES pieces like
  * vtkSphereSource; the pieces together are exactly the serial surface (boundary rows are
- * repeated as points, cells are not). Work is done by vtkSMPTools and the result does not
- * depend on the number of threads.
+ * repeated as points, cells are not), and every point of a piece is bit for bit the serial
+ * one. With UPDATE_NUMBER_OF_GHOST_LEVELS g > 0, each piece also has up to g rows of ghost
+ * cells on each side, and for a function joined in v (GetJoinV(), e.g. vtkParametricDonut)
+ * the ghost rows of the first and last pieces continue across the v seam with the far end's
+ * own points (coincident with the piece's, as in the whole surface), so that filters that
+ * merge seams or read neighbours see at a piece's border what they see in the whole.
+ * vtkGhostType arrays mark the ghost cells (DUPLICATECELL) and the points another piece owns
+ * (DUPLICATEPOINT: a piece owns the first point row of its cells, and the last piece its last
+ * row too), so each point of the surface is owned by exactly one piece. Work is done by
+ * vtkSMPTools and the result does not depend on the number of threads.
  *
  * Speed: a vtkParametricSeparableFunction (all of SurfaceDetail's functions) is evaluated
  * from per-row and per-column terms, so trigonometry and profile evaluation are done once per
@@ -75,6 +83,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // For the function member
 
+class vtkInformationDoubleVectorKey;
 class vtkParametricFunction;
 
 class SURFACEDETAILSOURCES_EXPORT vtkParametricSurfaceSource : public vtkPolyDataAlgorithm
@@ -155,6 +164,16 @@ public:
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
+
+  /**
+   * Set on the information of the "TCoords" array when the derivative arrays are made too:
+   * (TextureRepeat[0], TextureOffset[0], TextureRepeat[1], TextureOffset[1]), the affine map
+   * from the parameters (u,v) of dPdu/dPdv to the texture coordinates. Filters that need
+   * derivatives in (s,t) (vtkDisplacementMapFilter) read it instead of estimating the map
+   * from the data, so that every piece of a surface uses the same one. A filter that makes
+   * new texture coordinates makes a new array, without the key.
+   */
+  static vtkInformationDoubleVectorKey* TEXTURE_TRANSFORM();
 
   /** Includes the function's modification time. */
   vtkMTimeType GetMTime() override;

@@ -7,6 +7,7 @@
 #include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkFloatArray.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -36,6 +37,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
@@ -242,6 +244,98 @@ TEST(ParametricSurfaceSource, PiecesTogetherAreTheSerialSurface)
     EXPECT_EQ(union_, serialCells); // no cell missing, none twice, same winding
     EXPECT_EQ(nonEmpty, std::min(numPieces, V));
   }
+}
+
+// Ghost levels: each piece gets g more rows of cells on each side, marked DUPLICATECELL, whose
+// points are the serial surface's own (across the v seam of a joined function, the far end's
+// points, at t = 1 next to the first piece's t = 0); every serial point is owned (not marked
+// DUPLICATEPOINT) by exactly one piece, and the pieces' own cells are the serial cells once.
+TEST(ParametricSurfaceSource, GhostLevelsAddMarkedNeighbourRows)
+{
+  vtkNew<vtkParametricDonut> donut; // joined in v
+  vtkNew<vtkParametricSphere> sphere;
+  const int U = 8, V = 12, numPieces = 3;
+  for (vtkParametricFunction* f :
+    { static_cast<vtkParametricFunction*>(donut), static_cast<vtkParametricFunction*>(sphere) })
+  {
+    auto serialSource = MakeSource(f, U, V);
+    serialSource->Update();
+    vtkPolyData* serial = serialSource->GetOutput();
+    std::map<Key, vtkIdType> index;
+    for (vtkIdType id = 0; id < serial->GetNumberOfPoints(); ++id)
+    {
+      index[PointKey(serial, id)] = id;
+    }
+    std::multiset<std::array<vtkIdType, 3>> serialCells;
+    vtkIdType npts;
+    const vtkIdType* pts;
+    for (vtkIdType c = 0; c < serial->GetNumberOfCells(); ++c)
+    {
+      serial->GetPolys()->GetCellAtId(c, npts, pts);
+      serialCells.insert(Canonical(pts[0], pts[1], pts[2]));
+    }
+    for (int ghostLevels : { 1, 2 })
+    {
+      SCOPED_TRACE(
+        std::string(f->GetClassName()) + ", ghost levels " + std::to_string(ghostLevels));
+      std::vector<int> owners(serial->GetNumberOfPoints(), 0);
+      std::multiset<std::array<vtkIdType, 3>> ownCells;
+      for (int piece = 0; piece < numPieces; ++piece)
+      {
+        auto source = MakeSource(f, U, V);
+        source->UpdatePiece(piece, numPieces, ghostLevels);
+        vtkPolyData* out = source->GetOutput();
+        vtkUnsignedCharArray* pointGhosts = out->GetPointGhostArray();
+        vtkUnsignedCharArray* cellGhosts = out->GetCellGhostArray();
+        ASSERT_NE(pointGhosts, nullptr);
+        ASSERT_NE(cellGhosts, nullptr);
+        std::vector<vtkIdType> toSerial(out->GetNumberOfPoints());
+        bool farEnd = false;
+        for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+        {
+          auto it = index.find(PointKey(out, id));
+          ASSERT_NE(it, index.end());
+          toSerial[id] = it->second;
+          for (int k = 0; k < 3; ++k)
+          {
+            ASSERT_EQ(out->GetPoints()->GetData()->GetComponent(id, k),
+              serial->GetPoints()->GetData()->GetComponent(it->second, k));
+          }
+          const bool ghost = pointGhosts->GetValue(id) & vtkDataSetAttributes::DUPLICATEPOINT;
+          owners[it->second] += ghost ? 0 : 1;
+          farEnd = farEnd || (piece == 0 && it->first.second == 1.0f);
+        }
+        // The joined donut's first piece reaches across its v seam to the far end's points.
+        EXPECT_EQ(farEnd, f == donut.Get() && piece == 0);
+        vtkIdType ghostCells = 0;
+        for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+        {
+          out->GetPolys()->GetCellAtId(c, npts, pts);
+          const auto cell = Canonical(toSerial[pts[0]], toSerial[pts[1]], toSerial[pts[2]]);
+          ASSERT_EQ(serialCells.count(cell), 1u);
+          if (cellGhosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL)
+          {
+            ++ghostCells;
+          }
+          else
+          {
+            ownCells.insert(cell);
+          }
+        }
+        // g rows of 2U triangles on each side; the sphere's first and last pieces end at a pole.
+        const bool end = piece == 0 || piece == numPieces - 1;
+        const int sides = f == donut.Get() || !end ? 2 : 1;
+        EXPECT_EQ(ghostCells, sides * ghostLevels * 2 * U);
+      }
+      EXPECT_EQ(std::count(owners.begin(), owners.end(), 1), serial->GetNumberOfPoints());
+      EXPECT_EQ(ownCells, serialCells);
+    }
+  }
+  // Without ghost levels nothing is marked (a piece is as vtkSphereSource makes one).
+  auto source = MakeSource(donut, U, V);
+  source->UpdatePiece(1, numPieces, 0);
+  EXPECT_EQ(source->GetOutput()->GetPointGhostArray(), nullptr);
+  EXPECT_EQ(source->GetOutput()->GetCellGhostArray(), nullptr);
 }
 
 TEST(ParametricSurfaceSource, ThreadCountDoesNotChangeTheResult)
