@@ -18,7 +18,8 @@ cmake --build "$build" --target SurfaceDetailStudy -j "${JOBS:-2}"
 mkdir -p "$out"
 {
   echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
-  lscpu | grep -E '^(Model name|CPU\(s\)|Thread\(s\) per core)' | sed 's/  */ /g'
+  lscpu | grep -E '^(Model name|CPU\(s\)|Thread\(s\) per core|CPU max MHz|BogoMIPS)' | sed 's/  */ /g'
+  echo "vector extensions: $(grep -o -w -E 'avx2|avx512f' /proc/cpuinfo | sort -u | tr '\n' ' ')"
   echo "command: scripts/study.sh $*"
 } > "$out/machine.txt"
 start=$(date +%s)

@@ -22,6 +22,7 @@ struct Row
   double PrepMs = 0;       // CPU filters run before rendering (median of repeats)
   double MeshKiB = 0, TextureKiB = 0;
   double RMSE = 0, PSNR = 0, SSIM = 1;
+  double InteriorRMSE = 0; // over the pixels both pictures cover: silhouettes left out
   bool OnFront = false; // on the (frame time, RMSE) Pareto front of its scene
 };
 
