@@ -824,6 +824,7 @@ void WriteRenderingCSV(const std::string& path, const std::vector<Row>& rows,
 void WriteRenderingTables(std::FILE* md, const std::vector<Row>& rows,
   const std::vector<Convergence>& convergence, const Options& options)
 {
+  std::fprintf(md, "\n## Every variant\n");
   for (const Convergence& c : convergence)
   {
     std::fprintf(md, "\n### %s\n\n", c.Scene.c_str());
@@ -878,6 +879,52 @@ std::string RendererName()
     }
   }
   return "unknown";
+}
+
+// Per scene and technique family: its fastest and its most accurate setting, and which of
+// its settings are on the front; the short form of the full tables, for BENCHMARKS.md.
+void WriteSummary(std::FILE* md, const std::vector<Row>& rows,
+  const std::vector<Convergence>& convergence)
+{
+  std::fprintf(md, "\n## Summary\n");
+  for (const Convergence& c : convergence)
+  {
+    std::fprintf(md,
+      "\n**%s** (truth against twice as fine: RMSE %.2f)\n\n| technique | fastest: setting, ms, "
+      "RMSE | most accurate: setting, ms, RMSE, SSIM | settings on the front |\n"
+      "|---|---|---|---|\n",
+      c.Scene.c_str(), c.Doubling.RMSE);
+    std::vector<std::string> families;
+    for (const Row& r : rows)
+    {
+      if (r.Scene == c.Scene && !r.Truth &&
+        std::find(families.begin(), families.end(), r.Family) == families.end())
+      {
+        families.push_back(r.Family);
+      }
+    }
+    for (const std::string& family : families)
+    {
+      const Row *fastest = nullptr, *best = nullptr;
+      std::string front;
+      for (const Row& r : rows)
+      {
+        if (r.Scene != c.Scene || r.Family != family || r.Truth)
+        {
+          continue;
+        }
+        fastest = !fastest || r.FrameMs < fastest->FrameMs ? &r : fastest;
+        best = !best || r.RMSE < best->RMSE ? &r : best;
+        if (r.OnFront)
+        {
+          front += (front.empty() ? "" : "; ") + r.Setting;
+        }
+      }
+      std::fprintf(md, "| %s | %s, %.1f, %.2f | %s, %.1f, %.2f, %.3f | %s |\n", family.c_str(),
+        fastest->Setting.c_str(), fastest->FrameMs, fastest->RMSE, best->Setting.c_str(),
+        best->FrameMs, best->RMSE, best->SSIM, front.empty() ? "none" : front.c_str());
+    }
+  }
 }
 
 std::vector<std::string> Split(const std::string& text)
@@ -965,7 +1012,7 @@ int main(int argc, char* argv[])
   {
     std::vector<Row> rows;
     std::vector<Convergence> convergence;
-    std::fprintf(md, "## Rendering\n\nOpenGL renderer:%s\n", RendererName().c_str());
+    std::fprintf(md, "# Rendering\n\nOpenGL renderer:%s\n", RendererName().c_str());
     for (const Scene& scene : AllScenes())
     {
       if (!options.Scenes.empty() &&
@@ -987,12 +1034,13 @@ int main(int argc, char* argv[])
         options.Out + "/" + scene.Name + ".png");
     }
     WriteRenderingCSV(options.Out + "/study-rendering.csv", rows, convergence);
+    WriteSummary(md, rows, convergence);
     WriteRenderingTables(md, rows, convergence, options);
   }
   if (options.Filters)
   {
     std::FILE* csv = std::fopen((options.Out + "/study-filters.csv").c_str(), "w");
-    std::fprintf(md, "\n## CPU filters\n");
+    std::fprintf(md, "\n# CPU filters\n");
     RunFilterStudies(csv, md, options.Repeats);
     std::fclose(csv);
   }

@@ -128,7 +128,7 @@ std::vector<Closed> ClosedForms()
 void SourceStudy(std::FILE* csv, std::FILE* md, int repeats)
 {
   std::fprintf(md,
-    "\n### vtkParametricSurfaceSource: resolution against position and normal error\n\n"
+    "\n## vtkParametricSurfaceSource: resolution against position and normal error\n\n"
     "| surface | U x V | triangles | time ms | max distance at centroids | max shading-normal "
     "error (deg) | mean facet-normal error (deg) |\n|---|---|---|---|---|---|---|\n");
   for (const Closed& surface : ClosedForms())
@@ -232,7 +232,7 @@ void DisplacedNormal(double s, double t, double n[3])
 void DisplacementStudy(std::FILE* csv, std::FILE* md, int repeats)
 {
   std::fprintf(md,
-    "\n### vtkDisplacementMapFilter: NormalMode against normal error\n\n"
+    "\n## vtkDisplacementMapFilter: NormalMode against normal error\n\n"
     "Unit sphere, Scale %.2f, Midlevel 0.5, a smooth analytic height field in a 1024x512 float "
     "image (cubic interpolation). Vertex normals against the displaced surface's own normal, "
     "vertices within 0.02 of a pole in t left out (the parameterisation is singular there).\n\n"
@@ -319,7 +319,7 @@ void NormalMapStudy(std::FILE* csv, std::FILE* md, int repeats)
 {
   const double k = 0.05;
   std::fprintf(md,
-    "\n### vtkHeightMapToNormalMap: Scheme against slope error\n\n"
+    "\n## vtkHeightMapToNormalMap: Scheme against slope error\n\n"
     "Strength %.2f on a periodic analytic height field (slopes up to about 21 degrees), Wrap "
     "Repeat. The decoded normal at each texel centre against (-k dh/ds, -k dh/dt, 1).\n\n"
     "| Scheme | size | output | time ms | mean error (deg) | max error (deg) |\n"
