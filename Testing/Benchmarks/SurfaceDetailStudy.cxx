@@ -54,14 +54,12 @@
 #include <vtkWindowToImageFilter.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <iostream>
-#include <map>
-#include <memory>
 #include <sstream>
 
 namespace
@@ -115,9 +113,13 @@ BrickTextures::Layout Bricks(double mortar, double bevel)
 
 std::vector<Scene> AllScenes()
 {
-  auto rectangle = [] { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricRectangle>::New()); };
-  auto sphere = [] { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricSphere>::New()); };
-  auto donut = [] { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricDonut>::New()); };
+  auto rectangle = [] {
+    return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricRectangle>::New());
+  };
+  auto sphere = []
+  { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricSphere>::New()); };
+  auto donut = []
+  { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricDonut>::New()); };
   // Smooth bevels on the wall (a dense mesh converges), hard ones on the torus.
   return {
     { "wall-head-on", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12, Height::Bricks,
@@ -585,9 +587,8 @@ Errors Compare(const std::vector<unsigned char>& a, const std::vector<unsigned c
   e.RMSE = Metrics::RMSE(a.data(), b.data(), pixels, &object);
   e.InteriorRMSE = Metrics::RMSE(a.data(), b.data(), pixels, &interior);
   e.PSNR = Metrics::PSNR(e.RMSE);
-  e.SSIM = Metrics::MeanSSIM(
-    Metrics::Luminance(a.data(), size, size), Metrics::Luminance(b.data(), size, size), size,
-    size, &object);
+  e.SSIM = Metrics::MeanSSIM(Metrics::Luminance(a.data(), size, size),
+    Metrics::Luminance(b.data(), size, size), size, size, &object);
   return e;
 }
 
@@ -657,8 +658,8 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
   Variant truthVariant{ "truth", "", Kind::Mesh };
   truthVariant.Resolution[0] = scene.Dense[0];
   truthVariant.Resolution[1] = scene.Dense[1];
-  truthVariant.Setting = std::to_string(scene.Dense[0]) + "x" + std::to_string(scene.Dense[1]) +
-    ", Exact (reference)";
+  truthVariant.Setting =
+    std::to_string(scene.Dense[0]) + "x" + std::to_string(scene.Dense[1]) + ", Exact (reference)";
 
   // The truth at twice the resolution, drawn once and let go: it is the largest mesh here.
   std::vector<unsigned char> doubled;
@@ -805,16 +806,14 @@ void WriteRenderingCSV(const std::string& path, const std::vector<Row>& rows,
     "mesh_kib,detail_texture_kib,rmse,psnr_db,ssim,rmse_interior,pareto_front\n");
   for (const Row& r : rows)
   {
-    std::fprintf(csv,
-      "%s,%s,\"%s\",%.3f,%.3f,%.3f,%.1f,%.2f,%.0f,%.0f,%.4f,%.3f,%.5f,%.4f,%s\n",
+    std::fprintf(csv, "%s,%s,\"%s\",%.3f,%.3f,%.3f,%.1f,%.2f,%.0f,%.0f,%.4f,%.3f,%.5f,%.4f,%s\n",
       r.Scene.c_str(), r.Family.c_str(), r.Setting.c_str(), r.FrameMs, r.FrameQ1, r.FrameQ3,
-      r.FirstFrameMs, r.PrepMs, r.MeshKiB, r.TextureKiB, r.RMSE, r.Truth ? 999.0 : r.PSNR,
-      r.SSIM, r.InteriorRMSE, r.Truth ? "reference" : (r.OnFront ? "front" : "dominated"));
+      r.FirstFrameMs, r.PrepMs, r.MeshKiB, r.TextureKiB, r.RMSE, r.Truth ? 999.0 : r.PSNR, r.SSIM,
+      r.InteriorRMSE, r.Truth ? "reference" : (r.OnFront ? "front" : "dominated"));
   }
   for (const Convergence& c : convergence)
   {
-    std::fprintf(csv,
-      "%s,convergence,\"truth %dx%d against %dx%d\",,,,,,,,%.4f,%.3f,%.5f,%.4f,\n",
+    std::fprintf(csv, "%s,convergence,\"truth %dx%d against %dx%d\",,,,,,,,%.4f,%.3f,%.5f,%.4f,\n",
       c.Scene.c_str(), c.Dense[0], c.Dense[1], 2 * c.Dense[0], 2 * c.Dense[1], c.Doubling.RMSE,
       c.Doubling.PSNR, c.Doubling.SSIM, c.Doubling.InteriorRMSE);
   }
@@ -852,10 +851,10 @@ void WriteRenderingTables(std::FILE* md, const std::vector<Row>& rows,
     {
       std::fprintf(md, "| %s | %s | %s | %s | %s | %.0f | %.0f | %s | %s | %s | %s | %s |\n",
         r->Family.c_str(), r->Setting.c_str(), Fixed(r->FrameMs, 1).c_str(),
-        Fixed(r->FirstFrameMs, 0).c_str(), Fixed(r->PrepMs, 1).c_str(), r->MeshKiB,
-        r->TextureKiB, r->Truth ? "0" : Fixed(r->RMSE, 2).c_str(),
-        r->Truth ? "inf" : Fixed(r->PSNR, 1).c_str(), Fixed(r->SSIM, 4).c_str(),
-        Fixed(r->InteriorRMSE, 2).c_str(), r->Truth ? "reference" : (r->OnFront ? "**front**" : ""));
+        Fixed(r->FirstFrameMs, 0).c_str(), Fixed(r->PrepMs, 1).c_str(), r->MeshKiB, r->TextureKiB,
+        r->Truth ? "0" : Fixed(r->RMSE, 2).c_str(), r->Truth ? "inf" : Fixed(r->PSNR, 1).c_str(),
+        Fixed(r->SSIM, 4).c_str(), Fixed(r->InteriorRMSE, 2).c_str(),
+        r->Truth ? "reference" : (r->OnFront ? "**front**" : ""));
     }
   }
   std::fprintf(md, "\n%d interleaved frames per variant after 3 warm-up rounds, %dx%d window.\n",
@@ -883,8 +882,8 @@ std::string RendererName()
 
 // Per scene and technique family: its fastest and its most accurate setting, and which of
 // its settings are on the front; the short form of the full tables, for BENCHMARKS.md.
-void WriteSummary(std::FILE* md, const std::vector<Row>& rows,
-  const std::vector<Convergence>& convergence)
+void WriteSummary(
+  std::FILE* md, const std::vector<Row>& rows, const std::vector<Convergence>& convergence)
 {
   std::fprintf(md, "\n## Summary\n");
   for (const Convergence& c : convergence)
@@ -1016,8 +1015,7 @@ int main(int argc, char* argv[])
     for (const Scene& scene : AllScenes())
     {
       if (!options.Scenes.empty() &&
-        std::find(options.Scenes.begin(), options.Scenes.end(), scene.Name) ==
-          options.Scenes.end())
+        std::find(options.Scenes.begin(), options.Scenes.end(), scene.Name) == options.Scenes.end())
       {
         continue;
       }

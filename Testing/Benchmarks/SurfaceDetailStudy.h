@@ -14,16 +14,16 @@ namespace SurfaceDetailStudy
 struct Row
 {
   std::string Scene;
-  std::string Family;  // what the plot colours by
-  std::string Setting; // the settings within the family
-  bool Truth = false;  // the reference itself: timed, never judged
+  std::string Family;                           // what the plot colours by
+  std::string Setting;                          // the settings within the family
+  bool Truth = false;                           // the reference itself: timed, never judged
   double FrameMs = 0, FrameQ1 = 0, FrameQ3 = 0; // median and quartiles of the timed frames
-  double FirstFrameMs = 0; // the first frame: shader compilation and uploads
-  double PrepMs = 0;       // CPU filters run before rendering (median of repeats)
+  double FirstFrameMs = 0;                      // the first frame: shader compilation and uploads
+  double PrepMs = 0; // CPU filters run before rendering (median of repeats)
   double MeshKiB = 0, TextureKiB = 0;
   double RMSE = 0, PSNR = 0, SSIM = 1;
   double InteriorRMSE = 0; // over the pixels both pictures cover: silhouettes left out
-  bool OnFront = false; // on the (frame time, RMSE) Pareto front of its scene
+  bool OnFront = false;    // on the (frame time, RMSE) Pareto front of its scene
 };
 
 // Marks the rows (Truth excluded) that no other row beats in both frame time and RMSE

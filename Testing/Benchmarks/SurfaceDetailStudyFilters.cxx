@@ -22,7 +22,6 @@
 #include <vtkParametricSphere.h>
 #include <vtkParametricSurfaceSource.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -57,7 +56,8 @@ double AngleDegrees(const double a[3], const double b[3])
   vtkMath::Normalize(na);
   vtkMath::Normalize(nb);
   return vtkMath::DegreesFromRadians(std::atan2(
-    [&] {
+    [&]
+    {
       double c[3];
       vtkMath::Cross(na, nb, c);
       return vtkMath::Norm(c);
@@ -91,10 +91,9 @@ struct Closed
 
 std::vector<Closed> ClosedForms()
 {
-  Closed sphere{ "sphere R=1", [] {
-                  return vtkSmartPointer<vtkParametricFunction>(
-                    vtkSmartPointer<vtkParametricSphere>::New());
-                },
+  Closed sphere{ "sphere R=1",
+    []
+    { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricSphere>::New()); },
     [](const double p[3], double n[3])
     {
       const double r = vtkMath::Norm(p);
@@ -105,10 +104,9 @@ std::vector<Closed> ClosedForms()
       return r - 1.0;
     },
     2 };
-  Closed donut{ "donut R=1 r=0.4", [] {
-                 return vtkSmartPointer<vtkParametricFunction>(
-                   vtkSmartPointer<vtkParametricDonut>::New());
-               },
+  Closed donut{ "donut R=1 r=0.4",
+    []
+    { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricDonut>::New()); },
     [](const double p[3], double n[3])
     {
       const double rho = std::hypot(p[0], p[1]);
@@ -175,11 +173,12 @@ void SourceStudy(std::FILE* csv, std::FILE* md, int repeats)
           facet.Add(AngleDegrees(f, truth));
         }
       }
-      std::fprintf(md, "| %s | %dx%d | %lld | %.2f | %.2e | %.3f | %.3f |\n",
-        surface.Name.c_str(), u, v, static_cast<long long>(mesh->GetNumberOfCells()), ms,
-        distance.Max, shading.Max, facet.Mean());
-      std::fprintf(csv, "source,%s,default flags,%dx%d,%.3f,max_centroid_distance,%.4e,"
-                        "max_shading_normal_deg,%.4f,mean_facet_normal_deg,%.4f\n",
+      std::fprintf(md, "| %s | %dx%d | %lld | %.2f | %.2e | %.3f | %.3f |\n", surface.Name.c_str(),
+        u, v, static_cast<long long>(mesh->GetNumberOfCells()), ms, distance.Max, shading.Max,
+        facet.Mean());
+      std::fprintf(csv,
+        "source,%s,default flags,%dx%d,%.3f,max_centroid_distance,%.4e,"
+        "max_shading_normal_deg,%.4f,mean_facet_normal_deg,%.4f\n",
         surface.Name.c_str(), u, v, ms, distance.Max, shading.Max, facet.Mean());
     }
   }
@@ -236,7 +235,8 @@ void DisplacementStudy(std::FILE* csv, std::FILE* md, int repeats)
     "Unit sphere, Scale %.2f, Midlevel 0.5, a smooth analytic height field in a 1024x512 float "
     "image (cubic interpolation). Vertex normals against the displaced surface's own normal, "
     "vertices within 0.02 of a pole in t left out (the parameterisation is singular there).\n\n"
-    "| NormalMode | U x V | time ms | mean error (deg) | max error (deg) |\n|---|---|---|---|---|\n",
+    "| NormalMode | U x V | time ms | mean error (deg) | max error (deg) "
+    "|\n|---|---|---|---|---|\n",
     DisplacementScale);
   const int w = 1024, h = 512;
   vtkNew<vtkImageData> heights;
@@ -338,7 +338,8 @@ void NormalMapStudy(std::FILE* csv, std::FILE* md, int repeats)
       for (int i = 0; i < size; ++i)
       {
         double hs, ht;
-        hv[j * size + i] = static_cast<float>(FlatHeight((i + 0.5) / size, (j + 0.5) / size, hs, ht));
+        hv[j * size + i] =
+          static_cast<float>(FlatHeight((i + 0.5) / size, (j + 0.5) / size, hs, ht));
         double* n = &truth[3 * (j * size + i)];
         n[0] = -k * hs;
         n[1] = -k * ht;
@@ -370,8 +371,8 @@ void NormalMapStudy(std::FILE* csv, std::FILE* md, int repeats)
           error.Add(AngleDegrees(n, &truth[3 * p]));
         }
         const char* output = type == VTK_FLOAT ? "float" : "uchar";
-        std::fprintf(md, "| %s | %d | %s | %.2f | %.4f | %.4f |\n", names[scheme], size, output,
-          ms, error.Mean(), error.Max);
+        std::fprintf(md, "| %s | %d | %s | %.2f | %.4f | %.4f |\n", names[scheme], size, output, ms,
+          error.Mean(), error.Max);
         std::fprintf(csv,
           "normal map,periodic field,\"%s, %s\",%dx%d,%.3f,mean_normal_deg,%.5f,max_normal_deg,"
           "%.5f,,\n",
@@ -384,8 +385,9 @@ void NormalMapStudy(std::FILE* csv, std::FILE* md, int repeats)
 
 void RunFilterStudies(std::FILE* csv, std::FILE* md, int repeats)
 {
-  std::fprintf(csv, "study,subject,setting,resolution,time_ms_median,error1,value1,error2,"
-                    "value2,error3,value3\n");
+  std::fprintf(csv,
+    "study,subject,setting,resolution,time_ms_median,error1,value1,error2,"
+    "value2,error3,value3\n");
   const int timed = std::max(repeats, 5);
   SourceStudy(csv, md, timed);
   DisplacementStudy(csv, md, timed);

@@ -21,7 +21,6 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 
 namespace SurfaceDetailStudy
@@ -96,8 +95,8 @@ void PlotScene(const std::string& title, const std::vector<const Row*>& rows,
       front.push_back(r);
     }
   }
-  std::sort(front.begin(), front.end(),
-    [](const Row* a, const Row* b) { return a->FrameMs < b->FrameMs; });
+  std::sort(
+    front.begin(), front.end(), [](const Row* a, const Row* b) { return a->FrameMs < b->FrameMs; });
   // The front as a staircase: each point's error holds until a faster-to-reach better one.
   vtkSmartPointer<vtkTable> line = MakeTable("Pareto front");
   for (size_t k = 0; k < front.size(); ++k)

@@ -7,7 +7,8 @@
 // SSIM follows the paper's weighted form (its equations 14-16): a window of weights w summing
 // to one, local mean mu = sum w x, variance sigma^2 = sum w (x - mu)^2, covariance likewise,
 // C1 = (K1 L)^2 and C2 = (K2 L)^2 with K1 = 0.01, K2 = 0.03, L = 255, and
-//   SSIM = (2 mu_a mu_b + C1)(2 sigma_ab + C2) / ((mu_a^2 + mu_b^2 + C1)(sigma_a^2 + sigma_b^2 + C2)).
+//   SSIM = (2 mu_a mu_b + C1)(2 sigma_ab + C2) / ((mu_a^2 + mu_b^2 + C1)(sigma_a^2 + sigma_b^2 +
+//   C2)).
 // Windows: the paper's 11x11 circular Gaussian with sigma 1.5, or a uniform 8x8 square. The
 // mean SSIM is taken over the pixels whose window lies wholly inside the image (the paper's
 // "valid" region) and, when a mask is given, that the mask selects.

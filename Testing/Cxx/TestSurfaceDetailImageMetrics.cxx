@@ -15,8 +15,8 @@ namespace
 {
 namespace M = SurfaceDetailImageMetrics;
 
-std::vector<double> RandomTexture(int width, int height, unsigned seed, double low = 40.0,
-  double high = 215.0)
+std::vector<double> RandomTexture(
+  int width, int height, unsigned seed, double low = 40.0, double high = 215.0)
 {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> level(low, high);
