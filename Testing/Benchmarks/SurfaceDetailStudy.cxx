@@ -1,0 +1,1047 @@
+// Run time against error for every way of showing surface detail, scene by scene.
+//
+// Each scene (a brick wall head-on and at 70 degrees, a bumpy sphere, a torus with sharp
+// bricks) has a ground truth: the surface displaced by vtkDisplacementMapFilter (Scale =
+// depth, Midlevel 1, Exact normals) on a dense mesh, drawn by VTK's plain mapper; the same
+// truth at twice the resolution shows how far it is from converged. Against it every
+// technique at several settings: displaced meshes (resolutions x NormalModes), normal mapping
+// from the height map, bump mapping (forward, central, tangent free), parallax, relief
+// mapping at several (linear, binary) step pairs with and without self-shadowing, and the
+// coarse mesh with no detail at all. For each: median frame time, first frame, CPU
+// preparation (the filters that make its mesh and maps), memory of its mesh and detail
+// textures, and the image error over the object's pixels (RMSE, PSNR, SSIM).
+//
+// Frame times: every variant of a scene is an actor of one renderer, shown one at a time and
+// interleaved frame by frame, so that a shared machine's load falls on all alike; each frame
+// is Render + WaitForCompletion. Then the CPU filter studies run (SurfaceDetailStudyFilters).
+//
+// Usage: SurfaceDetailStudy --out <folder> [--rounds N] [--size N] [--repeats N]
+//          [--scenes wall-head-on,wall-70,sphere-bumps,torus-sharp] [--no-filters] [--no-render]
+//          [--images <folder>]
+// Writes <folder>/study-rendering.csv, study-filters.csv, study-tables.md and <scene>.png (the
+// plots); with --images, every rendered picture as <scene>-<variant>.png, for looking at.
+
+#include "SurfaceDetailStudy.h"
+
+#include "BrickTextures.h"
+#include "SurfaceDetailImageMetrics.h"
+#include "vtkSurfaceDetailMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkDisplacementMapFilter.h>
+#include <vtkHeightMapToNormalMap.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPNGWriter.h>
+#include <vtkParametricDonut.h>
+#include <vtkParametricRectangle.h>
+#include <vtkParametricSphere.h>
+#include <vtkParametricSurfaceSource.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <sstream>
+
+namespace
+{
+using namespace SurfaceDetailStudy;
+namespace Metrics = SurfaceDetailImageMetrics;
+using SDM = vtkSurfaceDetailMapper;
+using Clock = std::chrono::steady_clock;
+
+const double Background[3] = { 0.18, 0.2, 0.24 };
+
+double MsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// ---- Scenes -------------------------------------------------------------------------------
+
+enum class Height
+{
+  Bricks,
+  Bumps
+};
+
+struct Scene
+{
+  std::string Name;
+  std::function<vtkSmartPointer<vtkParametricFunction>()> Function;
+  double Repeat[2];
+  int Coarse[2]; // the mesh the mapping techniques draw on
+  int Dense[2];  // the truth; twice this is its convergence check
+  double Depth;  // the relief's depth = the displacement's Scale, object units
+  Height Field;
+  BrickTextures::Layout Bricks;
+  // The camera, from the default one fitted to the mesh: Tilt (an elevation) first, then
+  // Azimuth and Elevation.
+  double Tilt, Azimuth, Elevation, Zoom;
+  // Place the light by the surface's normal (+z) rather than by the camera, so that both
+  // walls are lit alike and the grazing view is not also grazing light.
+  bool LightByNormal;
+};
+
+BrickTextures::Layout Bricks(double mortar, double bevel)
+{
+  BrickTextures::Layout layout;
+  layout.Size = 128;
+  layout.Mortar = mortar;
+  layout.Bevel = bevel;
+  return layout;
+}
+
+std::vector<Scene> AllScenes()
+{
+  auto rectangle = [] {
+    return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricRectangle>::New());
+  };
+  auto sphere = []
+  { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricSphere>::New()); };
+  auto donut = []
+  { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricDonut>::New()); };
+  // Smooth bevels on the wall (a dense mesh converges), hard ones on the torus.
+  return {
+    { "wall-head-on", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12, Height::Bricks,
+      Bricks(0.01, 0.04), 0, 0, 0, 1.15, true },
+    { "wall-70", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12, Height::Bricks,
+      Bricks(0.01, 0.04), 0, 70, 0, 1.15, true },
+    { "sphere-bumps", sphere, { 4, 2 }, { 64, 32 }, { 1024, 512 }, 0.08, Height::Bumps,
+      Bricks(0.01, 0.04), 0, 40, 20, 1.3, false },
+    { "torus-sharp", donut, { 6, 2 }, { 96, 32 }, { 1536, 512 }, 0.04, Height::Bricks,
+      Bricks(0.012, 0.012), -55, 40, 20, 1.3, false },
+  };
+}
+
+// Round bumps, 3 x 3 per texture square, smooth everywhere: h in [0,1].
+double Bump(double s, double t)
+{
+  const double k = 2.0 * vtkMath::Pi() * 3.0;
+  return 0.25 * (1.0 - std::cos(k * s)) * (1.0 - std::cos(k * t));
+}
+
+vtkSmartPointer<vtkImageData> Heights(const Scene& scene)
+{
+  if (scene.Field == Height::Bricks)
+  {
+    return BrickTextures::Heights(scene.Bricks);
+  }
+  const int n = 128;
+  auto image = BrickTextures::MakeImage(scene.Bricks, VTK_FLOAT, 1);
+  auto* h = static_cast<float*>(image->GetScalarPointer());
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      h[j * n + i] = static_cast<float>(Bump((i + 0.5) / n, (j + 0.5) / n));
+    }
+  }
+  return image;
+}
+
+// Bricks: their own colours. Bumps: sand on top, slate in the hollows, so that a colour
+// drawn at the wrong place (no parallax) shows in the error as well as the shading.
+vtkSmartPointer<vtkImageData> Colours(const Scene& scene)
+{
+  if (scene.Field == Height::Bricks)
+  {
+    return BrickTextures::Colours(scene.Bricks);
+  }
+  const int n = 128;
+  auto image = BrickTextures::MakeImage(scene.Bricks, VTK_UNSIGNED_CHAR, 3);
+  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
+  const double top[3] = { 222, 196, 140 }, hollow[3] = { 70, 84, 104 };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double h = Bump((i + 0.5) / n, (j + 0.5) / n);
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[3 * (j * n + i) + c] = static_cast<unsigned char>(hollow[c] + h * (top[c] - hollow[c]));
+      }
+    }
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+vtkSmartPointer<vtkPolyData> Tessellate(
+  const Scene& scene, const int resolution[2], bool tangents, bool derivatives)
+{
+  vtkNew<vtkParametricSurfaceSource> source;
+  source->SetParametricFunction(scene.Function());
+  source->SetUResolution(resolution[0]);
+  source->SetVResolution(resolution[1]);
+  source->SetTextureRepeat(scene.Repeat[0], scene.Repeat[1]);
+  source->SetGenerateTangents(tangents);
+  source->SetGenerateDerivatives(derivatives);
+  source->Update();
+  return source->GetOutput();
+}
+
+// What a renderer needs of a mesh, and nothing else, so that memory compares fairly: points,
+// triangles, normals, texture coordinates and (when asked) the tangent frame.
+vtkSmartPointer<vtkPolyData> Trim(vtkPolyData* mesh, bool tangents)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(mesh->GetPoints());
+  out->SetPolys(mesh->GetPolys());
+  out->GetPointData()->SetNormals(mesh->GetPointData()->GetNormals());
+  out->GetPointData()->SetTCoords(mesh->GetPointData()->GetTCoords());
+  if (tangents)
+  {
+    out->GetPointData()->AddArray(mesh->GetPointData()->GetArray("Tangents"));
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> Displace(
+  const Scene& scene, vtkImageData* heights, const int resolution[2], int normalMode)
+{
+  vtkNew<vtkDisplacementMapFilter> displace;
+  displace->SetInputData(
+    Tessellate(scene, resolution, false, normalMode == vtkDisplacementMapFilter::Exact));
+  displace->SetInputData(1, heights);
+  displace->SetScale(scene.Depth);
+  displace->SetMidlevel(1.0);
+  displace->SetWrapToRepeat();
+  displace->SetInterpolationToLinear();
+  displace->SetNormalMode(normalMode);
+  displace->Update();
+  return Trim(displace->GetOutput(), false);
+}
+
+// The mean length on the surface of one unit of texture coordinate: normal and bump maps
+// are maps of z = k h over the unit texture square, so k = depth / this.
+double MeanTextureSide(const Scene& scene)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Tessellate(scene, scene.Coarse, false, true);
+  vtkDataArray* dPdu = mesh->GetPointData()->GetArray("dPdu");
+  vtkDataArray* dPdv = mesh->GetPointData()->GetArray("dPdv");
+  double sum = 0;
+  for (vtkIdType id = 0; id < dPdu->GetNumberOfTuples(); ++id)
+  {
+    sum += vtkMath::Norm(dPdu->GetTuple3(id)) / scene.Repeat[0] +
+      vtkMath::Norm(dPdv->GetTuple3(id)) / scene.Repeat[1];
+  }
+  return sum / (2.0 * dPdu->GetNumberOfTuples());
+}
+
+vtkSmartPointer<vtkImageData> NormalMap(
+  vtkImageData* heights, double strength, int scheme, bool relief)
+{
+  vtkNew<vtkHeightMapToNormalMap> maps;
+  maps->SetInputData(heights);
+  maps->SetStrength(strength);
+  maps->SetScheme(scheme);
+  maps->SetWrapToRepeat();
+  maps->SetOutputRelief(relief);
+  maps->Update();
+  return maps->GetOutput();
+}
+
+// ---- Variants -----------------------------------------------------------------------------
+
+enum class Kind
+{
+  Plain, // the coarse mesh, no detail
+  Mesh,  // a displaced mesh
+  Normal,
+  Bump,
+  Parallax,
+  Relief
+};
+
+struct Variant
+{
+  std::string Family, Setting;
+  Kind What;
+  int Resolution[2] = { 0, 0 }; // Mesh: the tessellation
+  int NormalMode = vtkDisplacementMapFilter::Exact;
+  int Scheme = vtkHeightMapToNormalMap::Central; // Normal
+  int Differences = SDM::Central;                // Bump
+  bool TangentFree = false;
+  bool WithNormalMap = true; // Parallax: shade with the normal map, else the height's bumps
+  int Linear = 32, Binary = 8;
+  bool Adaptive = false, Shadows = false;
+  bool FromHeights = false; // Relief: depth and normals from the height map, no relief map
+};
+
+const char* NormalModeName(int mode)
+{
+  static const char* names[] = { "None", "Approximate", "Exact", "Mesh" };
+  return names[mode];
+}
+
+std::vector<Variant> Variants(const Scene& scene)
+{
+  std::vector<Variant> variants;
+  variants.push_back({ "no detail", "coarse mesh, plain mapper", Kind::Plain });
+  for (int mode : { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+         vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh })
+  {
+    // The finest is a quarter of the truth's resolution, so that the truth stays well
+    // ahead of what it judges.
+    for (int divisor : { 32, 16, 8, 4 })
+    {
+      Variant v{ std::string("mesh ") + NormalModeName(mode), "", Kind::Mesh };
+      v.Resolution[0] = scene.Dense[0] / divisor;
+      v.Resolution[1] = scene.Dense[1] / divisor;
+      v.NormalMode = mode;
+      v.Setting = std::to_string(v.Resolution[0]) + "x" + std::to_string(v.Resolution[1]);
+      variants.push_back(v);
+    }
+  }
+  // A normal map baked from the displaced mesh (vtkNormalMapBaker) belongs here beside the
+  // ones made from the height map; the baker is not part of this branch yet.
+  Variant normal{ "normal map", "from heights, Central", Kind::Normal };
+  variants.push_back(normal);
+  normal.Setting = "from heights, Forward";
+  normal.Scheme = vtkHeightMapToNormalMap::Forward;
+  variants.push_back(normal);
+  Variant bump{ "bump", "Forward", Kind::Bump };
+  bump.Differences = SDM::Forward;
+  variants.push_back(bump);
+  bump.Setting = "Central";
+  bump.Differences = SDM::Central;
+  variants.push_back(bump);
+  bump.Setting = "Central, TangentFree";
+  bump.TangentFree = true;
+  variants.push_back(bump);
+  Variant parallax{ "parallax", "normal map shading", Kind::Parallax };
+  variants.push_back(parallax);
+  parallax.Setting = "bump shading";
+  parallax.WithNormalMap = false;
+  variants.push_back(parallax);
+  for (bool shadows : { false, true })
+  {
+    const std::vector<std::pair<int, int>> pairs = shadows
+      ? std::vector<std::pair<int, int>>{ { 16, 4 }, { 32, 8 }, { 64, 8 } }
+      : std::vector<std::pair<int, int>>{ { 8, 4 }, { 16, 4 }, { 16, 8 }, { 32, 8 }, { 64, 8 } };
+    for (const auto& pair : pairs)
+    {
+      Variant relief{ shadows ? "relief + shadows" : "relief", "", Kind::Relief };
+      relief.Linear = pair.first;
+      relief.Binary = pair.second;
+      relief.Shadows = shadows;
+      relief.Setting = std::to_string(pair.first) + " + " + std::to_string(pair.second);
+      variants.push_back(relief);
+    }
+    Variant adaptive{ shadows ? "relief + shadows" : "relief", "adaptive, at most 32 + 8",
+      Kind::Relief };
+    adaptive.Adaptive = true;
+    adaptive.Shadows = shadows;
+    variants.push_back(adaptive);
+  }
+  Variant fromHeights{ "relief", "32 + 8, from the height map", Kind::Relief };
+  fromHeights.FromHeights = true;
+  variants.push_back(fromHeights);
+  return variants;
+}
+
+// What the CPU makes for a variant before anything is drawn.
+struct Prepared
+{
+  vtkSmartPointer<vtkPolyData> Mesh;
+  vtkSmartPointer<vtkImageData> Map; // normal or relief map, when the variant uses one
+};
+
+Prepared Prepare(const Scene& scene, const Variant& v, vtkImageData* heights, double strength)
+{
+  Prepared p;
+  switch (v.What)
+  {
+    case Kind::Plain:
+      p.Mesh = Trim(Tessellate(scene, scene.Coarse, false, false), false);
+      break;
+    case Kind::Mesh:
+      p.Mesh = Displace(scene, heights, v.Resolution, v.NormalMode);
+      break;
+    case Kind::Bump:
+      p.Mesh = Trim(Tessellate(scene, scene.Coarse, !v.TangentFree, false), !v.TangentFree);
+      break;
+    case Kind::Normal:
+    case Kind::Parallax:
+    case Kind::Relief:
+    {
+      const bool map = (v.What != Kind::Parallax || v.WithNormalMap) && !v.FromHeights;
+      p.Mesh = Trim(Tessellate(scene, scene.Coarse, map, false), map);
+      if (map)
+      {
+        p.Map = NormalMap(heights, strength, v.Scheme, v.What == Kind::Relief);
+      }
+      break;
+    }
+  }
+  return p;
+}
+
+vtkSmartPointer<vtkActor> MakeActor(const Scene& scene, const Variant& v, const Prepared& p,
+  vtkTexture* colours, vtkTexture* heights, double strength)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetTexture(colours);
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(0.85);
+  actor->GetProperty()->SetSpecular(0.2);
+  actor->GetProperty()->SetSpecularPower(30);
+  if (v.What == Kind::Plain || v.What == Kind::Mesh)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(p.Mesh);
+    actor->SetMapper(mapper);
+    return actor;
+  }
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  mapper->SetInputData(p.Mesh);
+  mapper->SetDepthScale(scene.Depth);
+  mapper->SetBumpScale(strength);
+  switch (v.What)
+  {
+    case Kind::Normal:
+      mapper->SetTechniqueToNormalMapping();
+      mapper->SetNormalMap(MakeTexture(p.Map));
+      break;
+    case Kind::Bump:
+      mapper->SetTechniqueToBumpMapping();
+      mapper->SetHeightMap(heights);
+      mapper->SetDifferences(v.Differences);
+      mapper->SetTangentFree(v.TangentFree);
+      break;
+    case Kind::Parallax:
+      mapper->SetTechniqueToParallaxMapping();
+      mapper->SetHeightMap(heights);
+      if (p.Map)
+      {
+        mapper->SetNormalMap(MakeTexture(p.Map));
+      }
+      break;
+    default:
+      mapper->SetTechniqueToReliefMapping();
+      if (p.Map)
+      {
+        mapper->SetReliefMap(MakeTexture(p.Map));
+      }
+      else
+      {
+        mapper->SetHeightMap(heights);
+      }
+      mapper->SetLinearSearchSteps(v.Linear);
+      mapper->SetBinarySearchSteps(v.Binary);
+      mapper->SetAdaptiveSteps(v.Adaptive);
+      mapper->SetSelfShadowing(v.Shadows);
+      break;
+  }
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+double KiB(vtkDataObject* data)
+{
+  return data ? static_cast<double>(data->GetActualMemorySize()) : 0.0;
+}
+
+// ---- The view and the pictures -------------------------------------------------------------
+
+struct View
+{
+  vtkNew<vtkCamera> Camera;
+  double LightPosition[3];
+  double Centre[3];
+};
+
+// A camera fitted to the coarse surface, turned by the scene's angles, and a positional light
+// above, right of and in front of it; every picture of a scene uses them.
+void FitView(const Scene& scene, View& view)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Tessellate(scene, scene.Coarse, false, false);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->ResetCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->Elevation(scene.Tilt); // the donut is z up: seen from the side
+  camera->OrthogonalizeViewUp();
+  camera->Azimuth(scene.Azimuth);
+  camera->Elevation(scene.Elevation);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCamera();
+  camera->Zoom(scene.Zoom);
+  double bounds[6], up[3], front[3], right[3];
+  mesh->GetBounds(bounds);
+  const double size = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+    std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  camera->GetViewUp(up);
+  camera->GetDirectionOfProjection(front);
+  vtkMath::Cross(front, up, right);
+  if (scene.LightByNormal)
+  {
+    const double x[3] = { 1, 0, 0 }, y[3] = { 0, 1, 0 }, z[3] = { 0, 0, -1 };
+    std::copy_n(x, 3, right);
+    std::copy_n(y, 3, up);
+    std::copy_n(z, 3, front);
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    view.Centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+    view.LightPosition[k] = view.Centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
+  }
+  // One clipping range for every picture of the scene.
+  double range[2];
+  camera->GetClippingRange(range);
+  camera->SetClippingRange(0.5 * range[0], 2.0 * range[1]);
+  view.Camera->DeepCopy(camera);
+}
+
+std::vector<unsigned char> Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  return std::vector<unsigned char>(
+    pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+}
+
+void SavePNG(const std::vector<unsigned char>& rgb, int size, const std::string& folder,
+  const std::string& name)
+{
+  if (folder.empty())
+  {
+    return;
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(rgb.begin(), rgb.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((folder + "/" + name + ".png").c_str());
+  writer->Write();
+}
+
+bool IsBackground(const unsigned char* p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (std::abs(p[c] - 255.0 * Background[c]) > 1.5)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+struct Errors
+{
+  double RMSE, PSNR, SSIM, InteriorRMSE;
+};
+
+// Over the pixels where either picture shows the object.
+Errors Compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b, int size)
+{
+  const size_t pixels = static_cast<size_t>(size) * size;
+  std::vector<bool> object(pixels), interior(pixels);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    const bool inA = !IsBackground(&a[3 * p]), inB = !IsBackground(&b[3 * p]);
+    object[p] = inA || inB;
+    interior[p] = inA && inB;
+  }
+  Errors e;
+  e.RMSE = Metrics::RMSE(a.data(), b.data(), pixels, &object);
+  e.InteriorRMSE = Metrics::RMSE(a.data(), b.data(), pixels, &interior);
+  e.PSNR = Metrics::PSNR(e.RMSE);
+  e.SSIM = Metrics::MeanSSIM(Metrics::Luminance(a.data(), size, size),
+    Metrics::Luminance(b.data(), size, size), size, size, &object);
+  return e;
+}
+
+std::string FileName(std::string text)
+{
+  for (char& c : text)
+  {
+    if (!std::isalnum(static_cast<unsigned char>(c)))
+    {
+      c = '-';
+    }
+  }
+  return text;
+}
+
+struct Options
+{
+  std::string Out;
+  std::string Images; // empty: no pictures saved
+  int Rounds = 31;
+  int Size = 512;
+  int Repeats = 3;
+  std::vector<std::string> Scenes;
+  bool Render = true, Filters = true;
+};
+
+struct Convergence
+{
+  std::string Scene;
+  int Dense[2];
+  Errors Doubling;
+  double SmallestRMSE;
+  std::string Smallest;
+};
+
+// Measures every variant of @a scene; appends their rows to @a rows.
+Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row>& rows)
+{
+  const int size = options.Size;
+  std::cout << "== " << scene.Name << std::endl;
+  View view;
+  FitView(scene, view);
+  vtkSmartPointer<vtkImageData> heightImage = Heights(scene);
+  vtkSmartPointer<vtkTexture> colours = MakeTexture(Colours(scene));
+  vtkSmartPointer<vtkTexture> heights = MakeTexture(heightImage);
+  const double strength = scene.Depth / MeanTextureSide(scene);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(Background[0], Background[1], Background[2]);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOn();
+  light->SetConeAngle(180);
+  light->SetPosition(view.LightPosition);
+  light->SetFocalPoint(view.Centre);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->DeepCopy(view.Camera);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(size, size);
+  window->AddRenderer(renderer);
+  window->Render();
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+
+  Variant truthVariant{ "truth", "", Kind::Mesh };
+  truthVariant.Resolution[0] = scene.Dense[0];
+  truthVariant.Resolution[1] = scene.Dense[1];
+  truthVariant.Setting =
+    std::to_string(scene.Dense[0]) + "x" + std::to_string(scene.Dense[1]) + ", Exact (reference)";
+
+  // The truth at twice the resolution, drawn once and let go: it is the largest mesh here.
+  std::vector<unsigned char> doubled;
+  {
+    Variant twice = truthVariant;
+    twice.Resolution[0] *= 2;
+    twice.Resolution[1] *= 2;
+    Prepared p = Prepare(scene, twice, heightImage, strength);
+    vtkSmartPointer<vtkActor> actor = MakeActor(scene, twice, p, colours, heights, strength);
+    renderer->AddActor(actor);
+    window->Render();
+    doubled = Grab(window);
+    renderer->RemoveActor(actor);
+  }
+
+  std::vector<Variant> variants = Variants(scene);
+  variants.insert(variants.begin(), truthVariant);
+  const size_t first = rows.size();
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (const Variant& v : variants)
+  {
+    Row row;
+    row.Scene = scene.Name;
+    row.Family = v.Family;
+    row.Setting = v.Setting;
+    row.Truth = &v == &variants.front();
+    std::vector<double> prep;
+    Prepared p;
+    for (int r = 0; r < options.Repeats; ++r)
+    {
+      const auto start = Clock::now();
+      p = Prepare(scene, v, heightImage, strength);
+      prep.push_back(MsSince(start));
+    }
+    row.PrepMs = Median(prep);
+    row.MeshKiB = KiB(p.Mesh);
+    if (v.What == Kind::Normal || v.What == Kind::Relief || v.What == Kind::Parallax)
+    {
+      row.TextureKiB = KiB(p.Map);
+    }
+    if (v.What == Kind::Bump || v.What == Kind::Parallax || v.FromHeights)
+    {
+      row.TextureKiB += KiB(heightImage);
+    }
+    actors.push_back(MakeActor(scene, v, p, colours, heights, strength));
+    actors.back()->VisibilityOff();
+    renderer->AddActor(actors.back());
+    rows.push_back(row);
+  }
+
+  auto frame = [&](size_t shown)
+  {
+    for (size_t k = 0; k < actors.size(); ++k)
+    {
+      actors[k]->SetVisibility(k == shown);
+    }
+    const auto start = Clock::now();
+    window->Render();
+    glWindow->WaitForCompletion();
+    return MsSince(start);
+  };
+  for (size_t k = 0; k < actors.size(); ++k)
+  {
+    rows[first + k].FirstFrameMs = frame(k);
+  }
+  for (int warmup = 0; warmup < 2; ++warmup)
+  {
+    for (size_t k = 0; k < actors.size(); ++k)
+    {
+      frame(k);
+    }
+  }
+  std::vector<std::vector<double>> times(actors.size());
+  for (int r = 0; r < options.Rounds; ++r)
+  {
+    for (size_t k = 0; k < actors.size(); ++k)
+    {
+      times[k].push_back(frame(k));
+    }
+  }
+
+  const std::string& images = options.Images;
+  frame(0);
+  const std::vector<unsigned char> truth = Grab(window);
+  SavePNG(truth, size, images, scene.Name + "-truth");
+  SavePNG(doubled, size, images, scene.Name + "-truth-doubled");
+  Convergence convergence{ scene.Name, { scene.Dense[0], scene.Dense[1] },
+    Compare(doubled, truth, size), 1e300, "" };
+  std::vector<Row*> judged;
+  for (size_t k = 0; k < actors.size(); ++k)
+  {
+    Row& row = rows[first + k];
+    row.FrameMs = Median(times[k]);
+    row.FrameQ1 = Quantile(times[k], 0.25);
+    row.FrameQ3 = Quantile(times[k], 0.75);
+    if (k > 0)
+    {
+      frame(k);
+      const std::vector<unsigned char> picture = Grab(window);
+      const Errors e = Compare(picture, truth, size);
+      row.RMSE = e.RMSE;
+      row.PSNR = e.PSNR;
+      row.SSIM = e.SSIM;
+      row.InteriorRMSE = e.InteriorRMSE;
+      SavePNG(picture, size, images, scene.Name + "-" + FileName(row.Family + "-" + row.Setting));
+      if (row.RMSE < convergence.SmallestRMSE)
+      {
+        convergence.SmallestRMSE = row.RMSE;
+        convergence.Smallest = row.Family + ", " + row.Setting;
+      }
+    }
+    else
+    {
+      row.PSNR = Metrics::PSNR(0.0);
+    }
+    judged.push_back(&row);
+    std::cout << row.Family << ", " << row.Setting << ": " << row.FrameMs << " ms, RMSE "
+              << row.RMSE << ", SSIM " << row.SSIM << std::endl;
+  }
+  MarkParetoFront(judged);
+  std::cout << "truth against twice as fine: RMSE " << convergence.Doubling.RMSE << ", SSIM "
+            << convergence.Doubling.SSIM << "; smallest error judged " << convergence.SmallestRMSE
+            << " (" << convergence.Smallest << ")" << std::endl;
+  return convergence;
+}
+
+// ---- Output -------------------------------------------------------------------------------
+
+std::string Fixed(double value, int digits)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(digits);
+  text << value;
+  return text.str();
+}
+
+void WriteRenderingCSV(const std::string& path, const std::vector<Row>& rows,
+  const std::vector<Convergence>& convergence)
+{
+  std::FILE* csv = std::fopen(path.c_str(), "w");
+  std::fprintf(csv,
+    "scene,family,setting,frame_ms_median,frame_ms_q1,frame_ms_q3,first_frame_ms,prep_ms,"
+    "mesh_kib,detail_texture_kib,rmse,psnr_db,ssim,rmse_interior,pareto_front\n");
+  for (const Row& r : rows)
+  {
+    std::fprintf(csv, "%s,%s,\"%s\",%.3f,%.3f,%.3f,%.1f,%.2f,%.0f,%.0f,%.4f,%.3f,%.5f,%.4f,%s\n",
+      r.Scene.c_str(), r.Family.c_str(), r.Setting.c_str(), r.FrameMs, r.FrameQ1, r.FrameQ3,
+      r.FirstFrameMs, r.PrepMs, r.MeshKiB, r.TextureKiB, r.RMSE, r.Truth ? 999.0 : r.PSNR, r.SSIM,
+      r.InteriorRMSE, r.Truth ? "reference" : (r.OnFront ? "front" : "dominated"));
+  }
+  for (const Convergence& c : convergence)
+  {
+    std::fprintf(csv, "%s,convergence,\"truth %dx%d against %dx%d\",,,,,,,,%.4f,%.3f,%.5f,%.4f,\n",
+      c.Scene.c_str(), c.Dense[0], c.Dense[1], 2 * c.Dense[0], 2 * c.Dense[1], c.Doubling.RMSE,
+      c.Doubling.PSNR, c.Doubling.SSIM, c.Doubling.InteriorRMSE);
+  }
+  std::fclose(csv);
+}
+
+void WriteRenderingTables(std::FILE* md, const std::vector<Row>& rows,
+  const std::vector<Convergence>& convergence, const Options& options)
+{
+  std::fprintf(md, "\n## Every variant\n");
+  for (const Convergence& c : convergence)
+  {
+    std::fprintf(md, "\n### %s\n\n", c.Scene.c_str());
+    std::fprintf(md,
+      "Truth %dx%d against %dx%d: RMSE %.2f, PSNR %.1f dB, SSIM %.4f. Smallest error judged: "
+      "RMSE %.2f (%s): %s.\n\n",
+      c.Dense[0], c.Dense[1], 2 * c.Dense[0], 2 * c.Dense[1], c.Doubling.RMSE, c.Doubling.PSNR,
+      c.Doubling.SSIM, c.SmallestRMSE, c.Smallest.c_str(),
+      c.Doubling.RMSE < c.SmallestRMSE ? "converged" : "NOT converged");
+    std::vector<const Row*> sorted;
+    for (const Row& r : rows)
+    {
+      if (r.Scene == c.Scene)
+      {
+        sorted.push_back(&r);
+      }
+    }
+    std::sort(sorted.begin(), sorted.end(),
+      [](const Row* a, const Row* b) { return a->FrameMs < b->FrameMs; });
+    std::fprintf(md,
+      "| technique | setting | frame ms (median) | first frame ms | prep ms | mesh KiB | "
+      "texture KiB | RMSE | PSNR dB | SSIM | interior RMSE | front |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const Row* r : sorted)
+    {
+      std::fprintf(md, "| %s | %s | %s | %s | %s | %.0f | %.0f | %s | %s | %s | %s | %s |\n",
+        r->Family.c_str(), r->Setting.c_str(), Fixed(r->FrameMs, 1).c_str(),
+        Fixed(r->FirstFrameMs, 0).c_str(), Fixed(r->PrepMs, 1).c_str(), r->MeshKiB, r->TextureKiB,
+        r->Truth ? "0" : Fixed(r->RMSE, 2).c_str(), r->Truth ? "inf" : Fixed(r->PSNR, 1).c_str(),
+        Fixed(r->SSIM, 4).c_str(), Fixed(r->InteriorRMSE, 2).c_str(),
+        r->Truth ? "reference" : (r->OnFront ? "**front**" : ""));
+    }
+  }
+  std::fprintf(md, "\n%d interleaved frames per variant after 3 warm-up rounds, %dx%d window.\n",
+    options.Rounds, options.Size, options.Size);
+}
+
+// The OpenGL renderer's own name (llvmpipe and its vector width, or a GPU), for the record.
+std::string RendererName()
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(8, 8);
+  window->Render();
+  std::istringstream report(window->ReportCapabilities());
+  std::string line;
+  while (std::getline(report, line))
+  {
+    if (line.find("renderer string") != std::string::npos)
+    {
+      return line.substr(line.find(':') + 1);
+    }
+  }
+  return "unknown";
+}
+
+// Per scene and technique family: its fastest and its most accurate setting, and which of
+// its settings are on the front; the short form of the full tables, for BENCHMARKS.md.
+void WriteSummary(
+  std::FILE* md, const std::vector<Row>& rows, const std::vector<Convergence>& convergence)
+{
+  std::fprintf(md, "\n## Summary\n");
+  for (const Convergence& c : convergence)
+  {
+    std::fprintf(md,
+      "\n**%s** (truth against twice as fine: RMSE %.2f)\n\n| technique | fastest: setting, ms, "
+      "RMSE | most accurate: setting, ms, RMSE, SSIM | settings on the front |\n"
+      "|---|---|---|---|\n",
+      c.Scene.c_str(), c.Doubling.RMSE);
+    std::vector<std::string> families;
+    for (const Row& r : rows)
+    {
+      if (r.Scene == c.Scene && !r.Truth &&
+        std::find(families.begin(), families.end(), r.Family) == families.end())
+      {
+        families.push_back(r.Family);
+      }
+    }
+    for (const std::string& family : families)
+    {
+      const Row *fastest = nullptr, *best = nullptr;
+      std::string front;
+      for (const Row& r : rows)
+      {
+        if (r.Scene != c.Scene || r.Family != family || r.Truth)
+        {
+          continue;
+        }
+        fastest = !fastest || r.FrameMs < fastest->FrameMs ? &r : fastest;
+        best = !best || r.RMSE < best->RMSE ? &r : best;
+        if (r.OnFront)
+        {
+          front += (front.empty() ? "" : "; ") + r.Setting;
+        }
+      }
+      std::fprintf(md, "| %s | %s, %.1f, %.2f | %s, %.1f, %.2f, %.3f | %s |\n", family.c_str(),
+        fastest->Setting.c_str(), fastest->FrameMs, fastest->RMSE, best->Setting.c_str(),
+        best->FrameMs, best->RMSE, best->SSIM, front.empty() ? "none" : front.c_str());
+    }
+  }
+}
+
+std::vector<std::string> Split(const std::string& text)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, ','))
+  {
+    parts.push_back(part);
+  }
+  return parts;
+}
+
+bool ParseOptions(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--no-filters")
+    {
+      options.Filters = false;
+    }
+    else if (arg == "--no-render")
+    {
+      options.Render = false;
+    }
+    else if (arg == "--out" && hasValue)
+    {
+      options.Out = argv[++i];
+    }
+    else if (arg == "--images" && hasValue)
+    {
+      options.Images = argv[++i];
+    }
+    else if (arg == "--rounds" && hasValue)
+    {
+      options.Rounds = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (arg == "--size" && hasValue)
+    {
+      options.Size = std::max(64, std::atoi(argv[++i]));
+    }
+    else if (arg == "--repeats" && hasValue)
+    {
+      options.Repeats = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (arg == "--scenes" && hasValue)
+    {
+      options.Scenes = Split(argv[++i]);
+    }
+    else
+    {
+      std::cerr << "unknown or incomplete option " << arg << "\n";
+      return false;
+    }
+  }
+  return !options.Out.empty();
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseOptions(argc, argv, options))
+  {
+    std::cerr << "Usage: " << argv[0]
+              << " --out <folder> [--rounds N] [--size N] [--repeats N] [--scenes a,b,...]"
+                 " [--no-filters] [--no-render]\n";
+    return 1;
+  }
+  vtksys::SystemTools::MakeDirectory(options.Out);
+  if (!options.Images.empty())
+  {
+    vtksys::SystemTools::MakeDirectory(options.Images);
+  }
+  std::FILE* md = std::fopen((options.Out + "/study-tables.md").c_str(), "w");
+  if (!md)
+  {
+    std::cerr << "cannot write to " << options.Out << "\n";
+    return 1;
+  }
+  if (options.Render)
+  {
+    std::vector<Row> rows;
+    std::vector<Convergence> convergence;
+    std::fprintf(md, "# Rendering\n\nOpenGL renderer:%s\n", RendererName().c_str());
+    for (const Scene& scene : AllScenes())
+    {
+      if (!options.Scenes.empty() &&
+        std::find(options.Scenes.begin(), options.Scenes.end(), scene.Name) == options.Scenes.end())
+      {
+        continue;
+      }
+      convergence.push_back(RunScene(scene, options, rows));
+      std::vector<const Row*> sceneRows;
+      for (const Row& r : rows)
+      {
+        if (r.Scene == scene.Name)
+        {
+          sceneRows.push_back(&r);
+        }
+      }
+      PlotScene(scene.Name, sceneRows, convergence.back().Doubling.RMSE,
+        options.Out + "/" + scene.Name + ".png");
+    }
+    WriteRenderingCSV(options.Out + "/study-rendering.csv", rows, convergence);
+    WriteSummary(md, rows, convergence);
+    WriteRenderingTables(md, rows, convergence, options);
+  }
+  if (options.Filters)
+  {
+    std::FILE* csv = std::fopen((options.Out + "/study-filters.csv").c_str(), "w");
+    std::fprintf(md, "\n# CPU filters\n");
+    RunFilterStudies(csv, md, options.Repeats);
+    std::fclose(csv);
+  }
+  std::fclose(md);
+  return 0;
+}
