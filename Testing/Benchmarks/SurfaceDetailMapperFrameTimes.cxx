@@ -13,31 +13,29 @@
 //   the surface shading to outweigh a frame's fixed cost). --scene: a sphere filling most of
 //   the window (default), or a wall seen head-on filling all of it.
 
+#include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
-#include <vtkHeightMapToNormalMap.h>
 #include <vtkParametricRectangle.h>
 #include <vtkParametricSphere.h>
 #include <vtkParametricSurfaceSource.h>
-#include <vtkPointData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -72,11 +70,7 @@ vtkSmartPointer<vtkTexture> Texture(int comps, bool asFloat)
       }
     }
   }
-  auto texture = vtkSmartPointer<vtkTexture>::New();
-  texture->SetInputData(image);
-  texture->InterpolateOn();
-  texture->RepeatOn();
-  return texture;
+  return SurfaceDetailTruthScenes::RepeatedTexture(image);
 }
 
 struct Variant
@@ -100,11 +94,7 @@ vtkSmartPointer<vtkTexture> ReliefTexture(double depth, double textureSide)
   relief->SetStrength(depth / textureSide);
   relief->OutputReliefOn();
   relief->Update();
-  auto texture = vtkSmartPointer<vtkTexture>::New();
-  texture->SetInputData(relief->GetOutput());
-  texture->InterpolateOn();
-  texture->RepeatOn();
-  return texture;
+  return SurfaceDetailTruthScenes::RepeatedTexture(relief->GetOutput());
 }
 
 vtkSmartPointer<vtkActor> MakeActor(
@@ -141,20 +131,6 @@ vtkSmartPointer<vtkActor> MakeActor(
   return actor;
 }
 
-// The pixels of the current frame.
-std::vector<unsigned char> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  return std::vector<unsigned char>(
-    pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
-}
-
 // RMSE (levels) over the pixels where either image differs from the background pixel.
 double SurfaceRMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
 {
@@ -162,7 +138,8 @@ double SurfaceRMSE(const std::vector<unsigned char>& a, const std::vector<unsign
   size_t count = 0;
   for (size_t p = 0; p + 2 < a.size(); p += 3)
   {
-    const bool background = std::equal(&a[p], &a[p] + 3, &a[0]) && std::equal(&b[p], &b[p] + 3, &a[0]);
+    const bool background =
+      std::equal(&a[p], &a[p] + 3, &a[0]) && std::equal(&b[p], &b[p] + 3, &a[0]);
     if (background)
     {
       continue;
@@ -291,7 +268,7 @@ int main(int argc, char* argv[])
   };
   const double plain = quantile(times[0], 0.5);
   frame(reference);
-  const std::vector<unsigned char> best = Grab(window);
+  const std::vector<unsigned char> best = SurfaceDetailTruthScenes::GrabRGB(window);
   std::printf("| Variant | median frame (ms) | quartiles (ms) | ratio to plain | relief RMSE |\n");
   std::printf("|---|---|---|---|---|\n");
   for (size_t k = 0; k < variants.size(); ++k)
@@ -302,14 +279,14 @@ int main(int argc, char* argv[])
     if (variants[k].Technique == relief && !variants[k].Shadows && k != reference)
     {
       frame(k);
-      std::printf(" %.2f |\n", SurfaceRMSE(Grab(window), best));
+      std::printf(" %.2f |\n", SurfaceRMSE(SurfaceDetailTruthScenes::GrabRGB(window), best));
     }
     else
     {
       std::printf("  |\n");
     }
   }
-  std::printf("\n%d interleaved frames per variant, %dx%d, scene %s\n", rounds, size, size,
-    scene.c_str());
+  std::printf(
+    "\n%d interleaved frames per variant, %dx%d, scene %s\n", rounds, size, size, scene.c_str());
   return 0;
 }

@@ -1,12 +1,13 @@
 // Rendering torture: normal, bump, parallax and relief mapping (with self-shadowing and
-// depth correction, from a relief map and from the height map alone) seen at grazing angles (85 to 89.9
-// degrees from the normal) and with the camera very close to the surface. Each picture is
+// depth correction, from a relief map and from the height map alone) seen at grazing angles (85
+// to 89.9 degrees from the normal) and with the camera very close to the surface. Each picture is
 // compared with the plain mapper's picture of the same scene: no pixel may leave the plain
 // silhouette (the detail moves shading and texture lookups, never geometry), and no pixel
 // inside it may be black where the plain one is not (a NaN or a zero-length normal reaching the
 // framebuffer shows as black; the material's ambient term keeps every lit or unlit pixel
 // above black otherwise).
 
+#include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
@@ -17,15 +18,12 @@
 #include <vtkNew.h>
 #include <vtkParametricRectangle.h>
 #include <vtkParametricSurfaceSource.h>
-#include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <gtest/gtest.h>
 
@@ -57,15 +55,6 @@ vtkSmartPointer<vtkImageData> Heights()
   return image;
 }
 
-vtkSmartPointer<vtkTexture> Texture(vtkImageData* image)
-{
-  auto texture = vtkSmartPointer<vtkTexture>::New();
-  texture->SetInputData(image);
-  texture->InterpolateOn();
-  texture->RepeatOn();
-  return texture;
-}
-
 // The RGB pixels of one rendering of the wall, with the camera at @a angle degrees from its
 // normal and @a distance wall sizes from its centre; technique "plain" is vtkPolyDataMapper.
 std::vector<unsigned char> Render(const std::string& technique, double angle, double distance)
@@ -93,8 +82,8 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
   else
   {
     auto detail = vtkSmartPointer<vtkSurfaceDetailMapper>::New();
-    detail->SetNormalMap(Texture(normals->GetOutput()));
-    detail->SetHeightMap(Texture(heights));
+    detail->SetNormalMap(SurfaceDetailTruthScenes::RepeatedTexture(normals->GetOutput()));
+    detail->SetHeightMap(SurfaceDetailTruthScenes::RepeatedTexture(heights));
     detail->SetBumpScale(0.05);
     detail->SetDepthScale(0.1);
     if (technique == "normal")
@@ -121,7 +110,7 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
         relief->SetStrength(0.05);
         relief->OutputReliefOn();
         relief->Update();
-        detail->SetReliefMap(Texture(relief->GetOutput()));
+        detail->SetReliefMap(SurfaceDetailTruthScenes::RepeatedTexture(relief->GetOutput()));
       }
       else
       {
@@ -156,26 +145,12 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
   window->SetSize(Size, Size);
   window->AddRenderer(renderer);
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  return std::vector<unsigned char>(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * Size * Size);
+  return SurfaceDetailTruthScenes::GrabRGB(window);
 }
 
 bool IsBackground(const unsigned char* p)
 {
-  for (int c = 0; c < 3; ++c)
-  {
-    if (std::abs(p[c] - 255.0 * Background[c]) > 1.5)
-    {
-      return false;
-    }
-  }
-  return true;
+  return SurfaceDetailTruthScenes::IsBackground(p, Background);
 }
 
 bool IsBlack(const unsigned char* p)

@@ -12,26 +12,23 @@
 // Errors are over the pixels the object covers in either picture; every figure is printed.
 
 #include "BrickTextures.h"
+#include "SurfaceDetailImageMetrics.h"
+#include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkDataArray.h>
-#include <vtkDisplacementMapFilter.h>
 #include <vtkFloatArray.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
-#include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkPNGWriter.h>
 #include <vtkParametricDonut.h>
 #include <vtkParametricRectangle.h>
 #include <vtkParametricSphere.h>
-#include <vtkParametricSurfaceSource.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkPNGWriter.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
@@ -39,8 +36,6 @@
 #include <vtkSmartPointer.h>
 #include <vtkSphereSource.h>
 #include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <gtest/gtest.h>
 
@@ -54,8 +49,8 @@
 
 namespace
 {
+using namespace SurfaceDetailTruthScenes;
 constexpr int Size = 300;
-const double Background[3] = { 0.18, 0.2, 0.24 };
 
 // Smoother bricks than the regression scenes' (wider bevels), so that a displaced mesh a
 // few times finer than the texels converges.
@@ -70,22 +65,8 @@ BrickTextures::Layout TruthBricks()
 
 vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
 {
-  auto texture = vtkSmartPointer<vtkTexture>::New();
-  texture->SetInputData(image);
-  texture->InterpolateOn();
-  texture->RepeatOn();
-  return texture;
+  return RepeatedTexture(image);
 }
-
-struct Surface
-{
-  std::string Name;
-  std::function<vtkSmartPointer<vtkParametricFunction>()> Function;
-  double Repeat[2];
-  int Coarse[2]; // resolution of the relief-mapped mesh
-  int Dense[2];  // resolution of the truth; twice this is the convergence check
-  double Depth;  // DepthScale = the displacement's Scale, object units
-};
 
 Surface Wall()
 {
@@ -101,50 +82,16 @@ Surface Ball()
 
 Surface Ring()
 {
-  return { "torus", [] { return vtkSmartPointer<vtkParametricDonut>::New(); }, { 6, 2 },
-    { 96, 32 }, { 1536, 512 }, 0.04 };
+  return { "torus", [] { return vtkSmartPointer<vtkParametricDonut>::New(); }, { 6, 2 }, { 96, 32 },
+    { 1536, 512 }, 0.04 };
 }
 
-vtkSmartPointer<vtkPolyData> Tessellate(const Surface& surface, const int resolution[2])
+// Every surface seen obliquely from above right; the donut (z up) from the side.
+void FitView(const Surface& surface, View& view)
 {
-  vtkNew<vtkParametricSurfaceSource> source;
-  source->SetParametricFunction(surface.Function());
-  source->SetUResolution(resolution[0]);
-  source->SetVResolution(resolution[1]);
-  source->SetTextureRepeat(surface.Repeat[0], surface.Repeat[1]);
-  source->GenerateTangentsOn();
-  source->GenerateDerivativesOn();
-  source->Update();
-  return source->GetOutput();
-}
-
-// The truth: the surface displaced by the relief's depth (Midlevel 1: the top is the mesh).
-vtkSmartPointer<vtkPolyData> Displaced(const Surface& surface, const int resolution[2])
-{
-  vtkNew<vtkDisplacementMapFilter> displace;
-  displace->SetInputData(Tessellate(surface, resolution));
-  displace->SetInputData(1, BrickTextures::Heights(TruthBricks()));
-  displace->SetScale(surface.Depth);
-  displace->SetMidlevel(1.0);
-  displace->SetWrapToRepeat();
-  displace->SetInterpolationToLinear();
-  displace->SetNormalModeToExact();
-  displace->Update();
-  return displace->GetOutput();
-}
-
-// The mean length on the surface of one unit of texture coordinate, both directions.
-double MeanTextureSide(vtkPolyData* mesh, const Surface& surface)
-{
-  vtkDataArray* dPdu = mesh->GetPointData()->GetArray("dPdu");
-  vtkDataArray* dPdv = mesh->GetPointData()->GetArray("dPdv");
-  double sum = 0;
-  for (vtkIdType id = 0; id < dPdu->GetNumberOfTuples(); ++id)
-  {
-    sum += vtkMath::Norm(dPdu->GetTuple3(id)) / surface.Repeat[0] +
-      vtkMath::Norm(dPdv->GetTuple3(id)) / surface.Repeat[1];
-  }
-  return sum / (2.0 * dPdu->GetNumberOfTuples());
+  ViewAngles angles;
+  angles.Tilt = surface.Name == "torus" ? -55 : 0;
+  SurfaceDetailTruthScenes::FitView(surface, angles, view);
 }
 
 enum class Look
@@ -178,7 +125,7 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   if (look == Look::Truth)
   {
     vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(Displaced(surface, surface.Dense));
+    mapper->SetInputData(Displaced(surface, BrickTextures::Heights(TruthBricks()), surface.Dense));
     actor->SetMapper(mapper);
     return actor;
   }
@@ -188,7 +135,7 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
   vtkNew<vtkHeightMapToNormalMap> maps;
   maps->SetInputData(heights);
-  maps->SetStrength(surface.Depth / MeanTextureSide(mesh, surface));
+  maps->SetStrength(surface.Depth / MeanTextureSide(surface));
   maps->SetSchemeToCentral();
   maps->SetWrap(vtkHeightMapToNormalMap::Repeat);
   maps->SetOutputRelief(look == Look::Relief);
@@ -215,93 +162,27 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   return actor;
 }
 
-// The view of one scene: a camera fitted to the coarse surface, seen obliquely, and a
-// positional light above, right of and in front of it. Every picture of a scene uses it.
-struct View
-{
-  vtkNew<vtkCamera> Camera;
-  double LightPosition[3];
-  double Centre[3];
-};
-
-void FitView(const Surface& surface, View& view)
-{
-  vtkSmartPointer<vtkPolyData> mesh = Tessellate(surface, surface.Coarse);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->ResetCamera();
-  vtkCamera* camera = renderer->GetActiveCamera();
-  if (surface.Name == "torus")
-  {
-    camera->Elevation(-55); // the donut is z up: from the side, a little above
-    camera->OrthogonalizeViewUp();
-  }
-  camera->Azimuth(40);
-  camera->Elevation(20);
-  camera->OrthogonalizeViewUp();
-  renderer->ResetCamera();
-  camera->Zoom(1.3);
-  double bounds[6], up[3], front[3], right[3];
-  mesh->GetBounds(bounds);
-  const double size = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
-    std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
-  camera->GetViewUp(up);
-  camera->GetDirectionOfProjection(front);
-  vtkMath::Cross(front, up, right);
-  for (int k = 0; k < 3; ++k)
-  {
-    view.Centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-    view.LightPosition[k] = view.Centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
-  }
-  // One clipping range for every picture of the scene, so that depths compare.
-  double range[2];
-  camera->GetClippingRange(range);
-  camera->SetClippingRange(0.5 * range[0], 2.0 * range[1]);
-  view.Camera->DeepCopy(camera);
-}
-
 struct Picture
 {
   std::vector<unsigned char> RGB;
   std::vector<float> Z;
 };
 
-void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors,
-  Picture& picture, bool withDepth = false)
+void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors, Picture& picture,
+  bool withDepth = false)
 {
   vtkNew<vtkRenderer> renderer;
   for (const auto& actor : actors)
   {
     renderer->AddActor(actor);
   }
-  renderer->SetBackground(Background[0], Background[1], Background[2]);
-  renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOn();
-  light->SetConeAngle(180);
-  light->SetPosition(view.LightPosition);
-  light->SetFocalPoint(view.Centre);
-  renderer->AddLight(light);
-  renderer->GetActiveCamera()->DeepCopy(view.Camera);
-
+  SetUpRenderer(renderer, view);
   vtkNew<vtkRenderWindow> window;
   window->SetMultiSamples(0);
   window->SetSize(Size, Size);
   window->AddRenderer(renderer);
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  picture.RGB.assign(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * Size * Size);
+  picture.RGB = GrabRGB(window);
   if (withDepth)
   {
     picture.Z.resize(Size * Size);
@@ -311,38 +192,12 @@ void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors
   }
 }
 
-bool IsBackground(const unsigned char* p)
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    if (std::abs(p[c] - 255.0 * Background[c]) > 1.5)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 // Root mean square difference (levels, over R, G, B) over the pixels where either picture
 // shows the object.
 double ObjectRMSE(const Picture& a, const Picture& b)
 {
-  double sum = 0;
-  long count = 0;
-  for (int p = 0; p < Size * Size; ++p)
-  {
-    if (IsBackground(&a.RGB[3 * p]) && IsBackground(&b.RGB[3 * p]))
-    {
-      continue;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = a.RGB[3 * p + c] - b.RGB[3 * p + c];
-      sum += d * d;
-    }
-    ++count;
-  }
-  return count ? std::sqrt(sum / (3.0 * count)) : 0.0;
+  const std::vector<bool> object = ObjectPixels(a.RGB, b.RGB);
+  return SurfaceDetailImageMetrics::RMSE(a.RGB.data(), b.RGB.data(), object.size(), &object);
 }
 
 // With SURFACEDETAIL_TRUTH_PICTURES=<folder>, the pictures side by side, to look at.
@@ -425,8 +280,8 @@ void PixelToWorld(const View& view, int i, int j, double z, double world[3])
   vtkNew<vtkMatrix4x4> inverse;
   inverse->DeepCopy(view.Camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0));
   inverse->Invert();
-  const double ndc[4] = { 2.0 * (i + 0.5) / Size - 1.0, 2.0 * (j + 0.5) / Size - 1.0,
-    2.0 * z - 1.0, 1.0 };
+  const double ndc[4] = { 2.0 * (i + 0.5) / Size - 1.0, 2.0 * (j + 0.5) / Size - 1.0, 2.0 * z - 1.0,
+    1.0 };
   double p[4];
   inverse->MultiplyPoint(ndc, p);
   for (int k = 0; k < 3; ++k)
@@ -563,8 +418,8 @@ TEST(SurfaceDetailRelief, SelfShadowsWhereTheDisplacedWallIsInShadow)
     }
   }
   std::cout << "Shadow mask from the displaced wall: " << inShadow << " pixels in shadow, "
-            << darkened << " of them darkened by self-shadowing; " << inLight
-            << " lit pixels, " << unchanged << " of them unchanged\n";
+            << darkened << " of them darkened by self-shadowing; " << inLight << " lit pixels, "
+            << unchanged << " of them unchanged\n";
   ASSERT_GT(inShadow, 500) << "the scene must have shadows to judge";
   EXPECT_GT(darkened, 0.8 * inShadow);
   EXPECT_GT(unchanged, 0.95 * inLight);
@@ -603,7 +458,8 @@ TEST(SurfaceDetailRelief, DepthCorrectionMeetsGeometryLikeTheDisplacedWall)
   const Surface wall = Wall();
   View view;
   FitView(wall, view);
-  auto sphere = [] {
+  auto sphere = []
+  {
     vtkNew<vtkSphereSource> source;
     source->SetCenter(0.0, 1.75, 0.0);
     source->SetRadius(0.8);
@@ -740,13 +596,7 @@ TEST(SurfaceDetailRelief, HeadlightCastsNoVisibleShadow)
     window->SetSize(Size, Size);
     window->AddRenderer(renderer);
     window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGB();
-    grab->Update();
-    auto* pixels =
-      vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-    picture->RGB.assign(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * Size * Size);
+    picture->RGB = GrabRGB(window);
   }
   EXPECT_LE(MaxDifference(lit, shadowed), 2);
 }
