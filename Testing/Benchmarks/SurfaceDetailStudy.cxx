@@ -5,10 +5,12 @@
 // depth, Midlevel 1, Exact normals) on a dense mesh, drawn by VTK's plain mapper; the same
 // truth at twice the resolution shows how far it is from converged. Against it every
 // technique at several settings: displaced meshes (resolutions x NormalModes), normal mapping
-// from the height map, bump mapping (forward, central, tangent free), parallax, relief
+// from the height map and baked (vtkNormalMapBaker) from a displaced mesh at half the truth's
+// resolution, bump mapping (forward, central, tangent free), parallax, relief
 // mapping at several (linear, binary) step pairs with and without self-shadowing, and the
 // coarse mesh with no detail at all. For each: median frame time, first frame, CPU
-// preparation (the filters that make its mesh and maps), memory of its mesh and detail
+// preparation (the filters that make its mesh and maps; the height map and the detailed mesh
+// a map is baked from are inputs, not preparation), memory of its mesh and detail
 // textures, and the image error over the object's pixels (RMSE, PSNR, SSIM).
 //
 // Frame times: every variant of a scene is an actor of one renderer, shown one at a time and
@@ -25,23 +27,21 @@
 
 #include "BrickTextures.h"
 #include "SurfaceDetailImageMetrics.h"
+#include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
-#include <vtkDataArray.h>
 #include <vtkDisplacementMapFilter.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
-#include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkNormalMapBaker.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPNGWriter.h>
 #include <vtkParametricDonut.h>
 #include <vtkParametricRectangle.h>
 #include <vtkParametricSphere.h>
-#include <vtkParametricSurfaceSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -50,8 +50,6 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <cctype>
@@ -65,11 +63,10 @@
 namespace
 {
 using namespace SurfaceDetailStudy;
+using namespace SurfaceDetailTruthScenes;
 namespace Metrics = SurfaceDetailImageMetrics;
 using SDM = vtkSurfaceDetailMapper;
 using Clock = std::chrono::steady_clock;
-
-const double Background[3] = { 0.18, 0.2, 0.24 };
 
 double MsSince(Clock::time_point start)
 {
@@ -84,23 +81,24 @@ enum class Height
   Bumps
 };
 
-struct Scene
+// A surface, its height field and colours, and how it is seen.
+struct Scene : Surface
 {
-  std::string Name;
-  std::function<vtkSmartPointer<vtkParametricFunction>()> Function;
-  double Repeat[2];
-  int Coarse[2]; // the mesh the mapping techniques draw on
-  int Dense[2];  // the truth; twice this is its convergence check
-  double Depth;  // the relief's depth = the displacement's Scale, object units
   Height Field;
   BrickTextures::Layout Bricks;
-  // The camera, from the default one fitted to the mesh: Tilt (an elevation) first, then
-  // Azimuth and Elevation.
-  double Tilt, Azimuth, Elevation, Zoom;
-  // Place the light by the surface's normal (+z) rather than by the camera, so that both
-  // walls are lit alike and the grazing view is not also grazing light.
-  bool LightByNormal;
+  ViewAngles Angles;
 };
+
+ViewAngles Seen(double tilt, double azimuth, double elevation, double zoom, bool lightByNormal)
+{
+  ViewAngles angles;
+  angles.Tilt = tilt;
+  angles.Azimuth = azimuth;
+  angles.Elevation = elevation;
+  angles.Zoom = zoom;
+  angles.LightByNormal = lightByNormal;
+  return angles;
+}
 
 BrickTextures::Layout Bricks(double mortar, double bevel)
 {
@@ -122,14 +120,14 @@ std::vector<Scene> AllScenes()
   { return vtkSmartPointer<vtkParametricFunction>(vtkSmartPointer<vtkParametricDonut>::New()); };
   // Smooth bevels on the wall (a dense mesh converges), hard ones on the torus.
   return {
-    { "wall-head-on", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12, Height::Bricks,
-      Bricks(0.01, 0.04), 0, 0, 0, 1.15, true },
-    { "wall-70", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12, Height::Bricks,
-      Bricks(0.01, 0.04), 0, 70, 0, 1.15, true },
-    { "sphere-bumps", sphere, { 4, 2 }, { 64, 32 }, { 1024, 512 }, 0.08, Height::Bumps,
-      Bricks(0.01, 0.04), 0, 40, 20, 1.3, false },
-    { "torus-sharp", donut, { 6, 2 }, { 96, 32 }, { 1536, 512 }, 0.04, Height::Bricks,
-      Bricks(0.012, 0.012), -55, 40, 20, 1.3, false },
+    { { "wall-head-on", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12 }, Height::Bricks,
+      Bricks(0.01, 0.04), Seen(0, 0, 0, 1.15, true) },
+    { { "wall-70", rectangle, { 2, 2 }, { 16, 16 }, { 512, 512 }, 0.12 }, Height::Bricks,
+      Bricks(0.01, 0.04), Seen(0, 70, 0, 1.15, true) },
+    { { "sphere-bumps", sphere, { 4, 2 }, { 64, 32 }, { 1024, 512 }, 0.08 }, Height::Bumps,
+      Bricks(0.01, 0.04), Seen(0, 40, 20, 1.3, false) },
+    { { "torus-sharp", donut, { 6, 2 }, { 96, 32 }, { 1536, 512 }, 0.04 }, Height::Bricks,
+      Bricks(0.012, 0.012), Seen(-55, 40, 20, 1.3, false) },
   };
 }
 
@@ -185,29 +183,6 @@ vtkSmartPointer<vtkImageData> Colours(const Scene& scene)
   return image;
 }
 
-vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
-{
-  auto texture = vtkSmartPointer<vtkTexture>::New();
-  texture->SetInputData(image);
-  texture->InterpolateOn();
-  texture->RepeatOn();
-  return texture;
-}
-
-vtkSmartPointer<vtkPolyData> Tessellate(
-  const Scene& scene, const int resolution[2], bool tangents, bool derivatives)
-{
-  vtkNew<vtkParametricSurfaceSource> source;
-  source->SetParametricFunction(scene.Function());
-  source->SetUResolution(resolution[0]);
-  source->SetVResolution(resolution[1]);
-  source->SetTextureRepeat(scene.Repeat[0], scene.Repeat[1]);
-  source->SetGenerateTangents(tangents);
-  source->SetGenerateDerivatives(derivatives);
-  source->Update();
-  return source->GetOutput();
-}
-
 // What a renderer needs of a mesh, and nothing else, so that memory compares fairly: points,
 // triangles, normals, texture coordinates and (when asked) the tangent frame.
 vtkSmartPointer<vtkPolyData> Trim(vtkPolyData* mesh, bool tangents)
@@ -227,33 +202,7 @@ vtkSmartPointer<vtkPolyData> Trim(vtkPolyData* mesh, bool tangents)
 vtkSmartPointer<vtkPolyData> Displace(
   const Scene& scene, vtkImageData* heights, const int resolution[2], int normalMode)
 {
-  vtkNew<vtkDisplacementMapFilter> displace;
-  displace->SetInputData(
-    Tessellate(scene, resolution, false, normalMode == vtkDisplacementMapFilter::Exact));
-  displace->SetInputData(1, heights);
-  displace->SetScale(scene.Depth);
-  displace->SetMidlevel(1.0);
-  displace->SetWrapToRepeat();
-  displace->SetInterpolationToLinear();
-  displace->SetNormalMode(normalMode);
-  displace->Update();
-  return Trim(displace->GetOutput(), false);
-}
-
-// The mean length on the surface of one unit of texture coordinate: normal and bump maps
-// are maps of z = k h over the unit texture square, so k = depth / this.
-double MeanTextureSide(const Scene& scene)
-{
-  vtkSmartPointer<vtkPolyData> mesh = Tessellate(scene, scene.Coarse, false, true);
-  vtkDataArray* dPdu = mesh->GetPointData()->GetArray("dPdu");
-  vtkDataArray* dPdv = mesh->GetPointData()->GetArray("dPdv");
-  double sum = 0;
-  for (vtkIdType id = 0; id < dPdu->GetNumberOfTuples(); ++id)
-  {
-    sum += vtkMath::Norm(dPdu->GetTuple3(id)) / scene.Repeat[0] +
-      vtkMath::Norm(dPdv->GetTuple3(id)) / scene.Repeat[1];
-  }
-  return sum / (2.0 * dPdu->GetNumberOfTuples());
+  return Trim(Displaced(scene, heights, resolution, normalMode), false);
 }
 
 vtkSmartPointer<vtkImageData> NormalMap(
@@ -269,6 +218,73 @@ vtkSmartPointer<vtkImageData> NormalMap(
   return maps->GetOutput();
 }
 
+// A baked map covers the surface once: the texture square is the whole [0,1] x [0,1], so
+// the coarse mesh that carries it has its texture repeated once and the colours, tiled to
+// the scene's repeat, are one image of the same extent.
+Surface Atlas(const Scene& scene)
+{
+  Surface atlas = scene;
+  atlas.Repeat[0] = atlas.Repeat[1] = 1.0;
+  return atlas;
+}
+
+vtkSmartPointer<vtkImageData> Tiled(vtkImageData* image, const double repeat[2])
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  const int comps = image->GetNumberOfScalarComponents();
+  const int nu = static_cast<int>(repeat[0]), nv = static_cast<int>(repeat[1]);
+  auto tiled = vtkSmartPointer<vtkImageData>::New();
+  tiled->SetDimensions(nu * dims[0], nv * dims[1], 1);
+  tiled->AllocateScalars(image->GetScalarType(), comps);
+  const auto* in = static_cast<const unsigned char*>(image->GetScalarPointer());
+  auto* out = static_cast<unsigned char*>(tiled->GetScalarPointer());
+  const size_t row = static_cast<size_t>(dims[0]) * comps * image->GetScalarSize();
+  for (int j = 0; j < nv * dims[1]; ++j)
+  {
+    for (int k = 0; k < nu; ++k)
+    {
+      std::copy_n(in + (j % dims[1]) * row, row, out + (j * nu + k) * row);
+    }
+  }
+  return tiled;
+}
+
+// The scene's own texture resolution (texels per texture square) over the whole atlas.
+vtkSmartPointer<vtkImageData> Bake(
+  const Scene& scene, vtkPolyData* coarse, vtkPolyData* detailed, int texelsPerSquare)
+{
+  vtkNew<vtkNormalMapBaker> baker;
+  baker->SetInputData(0, coarse);
+  baker->SetInputData(1, detailed);
+  baker->SetTextureSize(static_cast<int>(scene.Repeat[0] * texelsPerSquare),
+    static_cast<int>(scene.Repeat[1] * texelsPerSquare));
+  // The displaced surface lies between the coarse one and Depth below it.
+  baker->SetMaxRayDistance(1.5 * scene.Depth);
+  baker->SetMargin(4);
+  baker->Update();
+  return baker->GetOutput();
+}
+
+vtkSmartPointer<vtkTexture> AtlasTexture(vtkImageData* image)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->EdgeClampOn();
+  return texture;
+}
+
+// What every variant of a scene starts from; none of it is counted as preparation.
+struct Inputs
+{
+  vtkSmartPointer<vtkImageData> HeightImage;
+  vtkSmartPointer<vtkTexture> Heights, Colours;
+  vtkSmartPointer<vtkTexture> AtlasColours; // for baked maps
+  vtkSmartPointer<vtkPolyData> Detailed;    // the model a map is baked from
+  double Strength;                          // of normal and bump maps from the height map
+};
+
 // ---- Variants -----------------------------------------------------------------------------
 
 enum class Kind
@@ -276,6 +292,7 @@ enum class Kind
   Plain, // the coarse mesh, no detail
   Mesh,  // a displaced mesh
   Normal,
+  Baked, // normal mapping with a map baked from a displaced mesh
   Bump,
   Parallax,
   Relief
@@ -293,7 +310,8 @@ struct Variant
   bool WithNormalMap = true; // Parallax: shade with the normal map, else the height's bumps
   int Linear = 32, Binary = 8;
   bool Adaptive = false, Shadows = false;
-  bool FromHeights = false; // Relief: depth and normals from the height map, no relief map
+  bool FromHeights = false;  // Relief: depth and normals from the height map, no relief map
+  int TexelsPerSquare = 128; // Baked
 };
 
 const char* NormalModeName(int mode)
@@ -321,13 +339,18 @@ std::vector<Variant> Variants(const Scene& scene)
       variants.push_back(v);
     }
   }
-  // A normal map baked from the displaced mesh (vtkNormalMapBaker) belongs here beside the
-  // ones made from the height map; the baker is not part of this branch yet.
   Variant normal{ "normal map", "from heights, Central", Kind::Normal };
   variants.push_back(normal);
   normal.Setting = "from heights, Forward";
   normal.Scheme = vtkHeightMapToNormalMap::Forward;
   variants.push_back(normal);
+  for (int texels : { 128, 256 })
+  {
+    Variant baked{ "normal map", "", Kind::Baked };
+    baked.TexelsPerSquare = texels;
+    baked.Setting = "baked, " + std::to_string(texels) + " texels per square";
+    variants.push_back(baked);
+  }
   Variant bump{ "bump", "Forward", Kind::Bump };
   bump.Differences = SDM::Forward;
   variants.push_back(bump);
@@ -375,7 +398,7 @@ struct Prepared
   vtkSmartPointer<vtkImageData> Map; // normal or relief map, when the variant uses one
 };
 
-Prepared Prepare(const Scene& scene, const Variant& v, vtkImageData* heights, double strength)
+Prepared Prepare(const Scene& scene, const Variant& v, const Inputs& in)
 {
   Prepared p;
   switch (v.What)
@@ -384,7 +407,7 @@ Prepared Prepare(const Scene& scene, const Variant& v, vtkImageData* heights, do
       p.Mesh = Trim(Tessellate(scene, scene.Coarse, false, false), false);
       break;
     case Kind::Mesh:
-      p.Mesh = Displace(scene, heights, v.Resolution, v.NormalMode);
+      p.Mesh = Displace(scene, in.HeightImage, v.Resolution, v.NormalMode);
       break;
     case Kind::Bump:
       p.Mesh = Trim(Tessellate(scene, scene.Coarse, !v.TangentFree, false), !v.TangentFree);
@@ -397,19 +420,23 @@ Prepared Prepare(const Scene& scene, const Variant& v, vtkImageData* heights, do
       p.Mesh = Trim(Tessellate(scene, scene.Coarse, map, false), map);
       if (map)
       {
-        p.Map = NormalMap(heights, strength, v.Scheme, v.What == Kind::Relief);
+        p.Map = NormalMap(in.HeightImage, in.Strength, v.Scheme, v.What == Kind::Relief);
       }
       break;
     }
+    case Kind::Baked:
+      p.Mesh = Trim(Tessellate(Atlas(scene), scene.Coarse, true, false), true);
+      p.Map = Bake(scene, p.Mesh, in.Detailed, v.TexelsPerSquare);
+      break;
   }
   return p;
 }
 
-vtkSmartPointer<vtkActor> MakeActor(const Scene& scene, const Variant& v, const Prepared& p,
-  vtkTexture* colours, vtkTexture* heights, double strength)
+vtkSmartPointer<vtkActor> MakeActor(
+  const Scene& scene, const Variant& v, const Prepared& p, const Inputs& in)
 {
   auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetTexture(colours);
+  actor->SetTexture(v.What == Kind::Baked ? in.AtlasColours : in.Colours);
   actor->GetProperty()->SetAmbient(0.15);
   actor->GetProperty()->SetDiffuse(0.85);
   actor->GetProperty()->SetSpecular(0.2);
@@ -424,36 +451,40 @@ vtkSmartPointer<vtkActor> MakeActor(const Scene& scene, const Variant& v, const 
   vtkNew<vtkSurfaceDetailMapper> mapper;
   mapper->SetInputData(p.Mesh);
   mapper->SetDepthScale(scene.Depth);
-  mapper->SetBumpScale(strength);
+  mapper->SetBumpScale(in.Strength);
   switch (v.What)
   {
     case Kind::Normal:
       mapper->SetTechniqueToNormalMapping();
-      mapper->SetNormalMap(MakeTexture(p.Map));
+      mapper->SetNormalMap(RepeatedTexture(p.Map));
+      break;
+    case Kind::Baked:
+      mapper->SetTechniqueToNormalMapping();
+      mapper->SetNormalMap(AtlasTexture(p.Map));
       break;
     case Kind::Bump:
       mapper->SetTechniqueToBumpMapping();
-      mapper->SetHeightMap(heights);
+      mapper->SetHeightMap(in.Heights);
       mapper->SetDifferences(v.Differences);
       mapper->SetTangentFree(v.TangentFree);
       break;
     case Kind::Parallax:
       mapper->SetTechniqueToParallaxMapping();
-      mapper->SetHeightMap(heights);
+      mapper->SetHeightMap(in.Heights);
       if (p.Map)
       {
-        mapper->SetNormalMap(MakeTexture(p.Map));
+        mapper->SetNormalMap(RepeatedTexture(p.Map));
       }
       break;
     default:
       mapper->SetTechniqueToReliefMapping();
       if (p.Map)
       {
-        mapper->SetReliefMap(MakeTexture(p.Map));
+        mapper->SetReliefMap(RepeatedTexture(p.Map));
       }
       else
       {
-        mapper->SetHeightMap(heights);
+        mapper->SetHeightMap(in.Heights);
       }
       mapper->SetLinearSearchSteps(v.Linear);
       mapper->SetBinarySearchSteps(v.Binary);
@@ -472,72 +503,6 @@ double KiB(vtkDataObject* data)
 
 // ---- The view and the pictures -------------------------------------------------------------
 
-struct View
-{
-  vtkNew<vtkCamera> Camera;
-  double LightPosition[3];
-  double Centre[3];
-};
-
-// A camera fitted to the coarse surface, turned by the scene's angles, and a positional light
-// above, right of and in front of it; every picture of a scene uses them.
-void FitView(const Scene& scene, View& view)
-{
-  vtkSmartPointer<vtkPolyData> mesh = Tessellate(scene, scene.Coarse, false, false);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->ResetCamera();
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->Elevation(scene.Tilt); // the donut is z up: seen from the side
-  camera->OrthogonalizeViewUp();
-  camera->Azimuth(scene.Azimuth);
-  camera->Elevation(scene.Elevation);
-  camera->OrthogonalizeViewUp();
-  renderer->ResetCamera();
-  camera->Zoom(scene.Zoom);
-  double bounds[6], up[3], front[3], right[3];
-  mesh->GetBounds(bounds);
-  const double size = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
-    std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
-  camera->GetViewUp(up);
-  camera->GetDirectionOfProjection(front);
-  vtkMath::Cross(front, up, right);
-  if (scene.LightByNormal)
-  {
-    const double x[3] = { 1, 0, 0 }, y[3] = { 0, 1, 0 }, z[3] = { 0, 0, -1 };
-    std::copy_n(x, 3, right);
-    std::copy_n(y, 3, up);
-    std::copy_n(z, 3, front);
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    view.Centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-    view.LightPosition[k] = view.Centre[k] + size * (0.5 * right[k] + 0.5 * up[k] - 1.5 * front[k]);
-  }
-  // One clipping range for every picture of the scene.
-  double range[2];
-  camera->GetClippingRange(range);
-  camera->SetClippingRange(0.5 * range[0], 2.0 * range[1]);
-  view.Camera->DeepCopy(camera);
-}
-
-std::vector<unsigned char> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  return std::vector<unsigned char>(
-    pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
-}
-
 void SavePNG(const std::vector<unsigned char>& rgb, int size, const std::string& folder,
   const std::string& name)
 {
@@ -555,18 +520,6 @@ void SavePNG(const std::vector<unsigned char>& rgb, int size, const std::string&
   writer->Write();
 }
 
-bool IsBackground(const unsigned char* p)
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    if (std::abs(p[c] - 255.0 * Background[c]) > 1.5)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 struct Errors
 {
   double RMSE, PSNR, SSIM, InteriorRMSE;
@@ -576,13 +529,7 @@ struct Errors
 Errors Compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b, int size)
 {
   const size_t pixels = static_cast<size_t>(size) * size;
-  std::vector<bool> object(pixels), interior(pixels);
-  for (size_t p = 0; p < pixels; ++p)
-  {
-    const bool inA = !IsBackground(&a[3 * p]), inB = !IsBackground(&b[3 * p]);
-    object[p] = inA || inB;
-    interior[p] = inA && inB;
-  }
+  const std::vector<bool> object = ObjectPixels(a, b), interior = ObjectPixels(a, b, true);
   Errors e;
   e.RMSE = Metrics::RMSE(a.data(), b.data(), pixels, &object);
   e.InteriorRMSE = Metrics::RMSE(a.data(), b.data(), pixels, &interior);
@@ -630,23 +577,20 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
   const int size = options.Size;
   std::cout << "== " << scene.Name << std::endl;
   View view;
-  FitView(scene, view);
-  vtkSmartPointer<vtkImageData> heightImage = Heights(scene);
-  vtkSmartPointer<vtkTexture> colours = MakeTexture(Colours(scene));
-  vtkSmartPointer<vtkTexture> heights = MakeTexture(heightImage);
-  const double strength = scene.Depth / MeanTextureSide(scene);
+  FitView(scene, scene.Angles, view);
+  Inputs in;
+  in.HeightImage = Heights(scene);
+  in.Heights = RepeatedTexture(in.HeightImage);
+  vtkSmartPointer<vtkImageData> colours = Colours(scene);
+  in.Colours = RepeatedTexture(colours);
+  in.AtlasColours = AtlasTexture(Tiled(colours, scene.Repeat));
+  // Half the truth's resolution: finer than any displaced mesh judged, and not the truth.
+  const int detailed[2] = { scene.Dense[0] / 2, scene.Dense[1] / 2 };
+  in.Detailed = Displaced(scene, in.HeightImage, detailed);
+  in.Strength = scene.Depth / MeanTextureSide(scene);
 
   vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(Background[0], Background[1], Background[2]);
-  renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOn();
-  light->SetConeAngle(180);
-  light->SetPosition(view.LightPosition);
-  light->SetFocalPoint(view.Centre);
-  renderer->AddLight(light);
-  renderer->GetActiveCamera()->DeepCopy(view.Camera);
+  SetUpRenderer(renderer, view);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
@@ -667,11 +611,11 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
     Variant twice = truthVariant;
     twice.Resolution[0] *= 2;
     twice.Resolution[1] *= 2;
-    Prepared p = Prepare(scene, twice, heightImage, strength);
-    vtkSmartPointer<vtkActor> actor = MakeActor(scene, twice, p, colours, heights, strength);
+    Prepared p = Prepare(scene, twice, in);
+    vtkSmartPointer<vtkActor> actor = MakeActor(scene, twice, p, in);
     renderer->AddActor(actor);
     window->Render();
-    doubled = Grab(window);
+    doubled = GrabRGB(window);
     renderer->RemoveActor(actor);
   }
 
@@ -691,20 +635,17 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
     for (int r = 0; r < options.Repeats; ++r)
     {
       const auto start = Clock::now();
-      p = Prepare(scene, v, heightImage, strength);
+      p = Prepare(scene, v, in);
       prep.push_back(MsSince(start));
     }
     row.PrepMs = Median(prep);
     row.MeshKiB = KiB(p.Mesh);
-    if (v.What == Kind::Normal || v.What == Kind::Relief || v.What == Kind::Parallax)
-    {
-      row.TextureKiB = KiB(p.Map);
-    }
+    row.TextureKiB = KiB(p.Map);
     if (v.What == Kind::Bump || v.What == Kind::Parallax || v.FromHeights)
     {
-      row.TextureKiB += KiB(heightImage);
+      row.TextureKiB += KiB(in.HeightImage);
     }
-    actors.push_back(MakeActor(scene, v, p, colours, heights, strength));
+    actors.push_back(MakeActor(scene, v, p, in));
     actors.back()->VisibilityOff();
     renderer->AddActor(actors.back());
     rows.push_back(row);
@@ -743,7 +684,7 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
 
   const std::string& images = options.Images;
   frame(0);
-  const std::vector<unsigned char> truth = Grab(window);
+  const std::vector<unsigned char> truth = GrabRGB(window);
   SavePNG(truth, size, images, scene.Name + "-truth");
   SavePNG(doubled, size, images, scene.Name + "-truth-doubled");
   Convergence convergence{ scene.Name, { scene.Dense[0], scene.Dense[1] },
@@ -758,7 +699,7 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
     if (k > 0)
     {
       frame(k);
-      const std::vector<unsigned char> picture = Grab(window);
+      const std::vector<unsigned char> picture = GrabRGB(window);
       const Errors e = Compare(picture, truth, size);
       row.RMSE = e.RMSE;
       row.PSNR = e.PSNR;
