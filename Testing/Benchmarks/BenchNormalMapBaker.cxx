@@ -6,10 +6,16 @@
 // Then the same rays, a sample of them, through VTK's locators (vtkStaticCellLocator,
 // vtkModifiedBSPTree) as the baker would have to cast them: one segment each way, the nearer
 // hit kept; the build of each locator is timed apart. See BENCHMARKS.md.
+//
+// With SURFACEDETAIL_BAKE_MESHES=<folder> set, nothing is timed: the coarse and the detailed
+// mesh are written there as coarse.obj and detailed.obj (positions, texture coordinates and
+// normals), so that another baker can be timed on exactly this pair
+// (scripts/bench-blender-bake.sh, Testing/Benchmarks/BlenderBake.py).
 #include "NormalMapBakerTestFrames.h"
 
 #include "vtkNormalMapBaker.h"
 
+#include <vtkCellArray.h>
 #include <vtkGenericCell.h>
 #include <vtkModifiedBSPTree.h>
 #include <vtkSMPTools.h>
@@ -18,7 +24,10 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
+#include <iomanip>
+#include <iostream>
 #include <string>
 
 namespace
@@ -161,6 +170,48 @@ void BM_VTKLocator(benchmark::State& state)
   state.counters["rays_per_s"] = static_cast<double>(frames.size()) / castSeconds;
   state.counters["hit_fraction"] = static_cast<double>(hits) / frames.size();
 }
+
+// A Wavefront OBJ of a triangle mesh with per-point texture coordinates and normals, every
+// face marked smooth so that importers interpolate the normals. Written here rather than by
+// vtkOBJWriter: Debian's VTK::IOGeometry links JsonCpp::JsonCpp, a target that a find_package
+// here, below the project's top-level one, does not make visible to it.
+bool WriteOBJ(vtkPolyData* mesh, const std::string& fileName)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  std::ofstream file(fileName);
+  if (!normals || !tcoords || !file)
+  {
+    std::cerr << "Could not write " << fileName << "\n";
+    return false;
+  }
+  file << std::setprecision(9);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3], n[3], t[2];
+    mesh->GetPoint(i, p);
+    normals->GetTuple(i, n);
+    tcoords->GetTuple(i, t);
+    file << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << "\nvt " << t[0] << ' ' << t[1] << "\nvn "
+         << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
+  }
+  file << "s 1\n";
+  vtkCellArray* polys = mesh->GetPolys();
+  for (vtkIdType cell = 0; cell < polys->GetNumberOfCells(); ++cell)
+  {
+    vtkIdType count;
+    const vtkIdType* ids;
+    polys->GetCellAtId(cell, count, ids);
+    file << 'f';
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      const vtkIdType id = ids[k] + 1; // OBJ counts from 1
+      file << ' ' << id << '/' << id << '/' << id;
+    }
+    file << '\n';
+  }
+  return static_cast<bool>(file);
+}
 } // namespace
 
 BENCHMARK(BM_NormalMapBaker)
@@ -177,4 +228,22 @@ BENCHMARK_TEMPLATE(BM_VTKLocator, vtkModifiedBSPTree)
   ->UseRealTime()
   ->Iterations(1);
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv)
+{
+  if (const char* folder = std::getenv("SURFACEDETAIL_BAKE_MESHES"))
+  {
+    const std::string prefix = std::string(folder) + "/";
+    return WriteOBJ(CoarseTorus(), prefix + "coarse.obj") &&
+        WriteOBJ(DetailedTorus(), prefix + "detailed.obj")
+      ? EXIT_SUCCESS
+      : EXIT_FAILURE;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+  {
+    return EXIT_FAILURE;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return EXIT_SUCCESS;
+}
