@@ -182,6 +182,8 @@ int main(int argc, char* argv[])
     { "BumpMapping, TangentFree", SDM::BumpMapping, true },
     { "ParallaxMapping", SDM::ParallaxMapping },
     { "ReliefMapping (default: adaptive, at most 32 + 8)", relief },
+    // One linear step and no binary search: what relief costs besides its search.
+    { "ReliefMapping, fixed 1 + 0", relief, false, 1, false, 0 },
     { "ReliefMapping, fixed 8 + 8", relief, false, 8, false },
     { "ReliefMapping, fixed 16 + 8", relief, false, 16, false },
     { "ReliefMapping, fixed 32 + 8", relief, false, 32, false },
