@@ -15,9 +15,9 @@
 
 #include "vtkNormalMapBaker.h"
 
-#include <vtkCellArray.h>
 #include <vtkGenericCell.h>
 #include <vtkModifiedBSPTree.h>
+#include <vtkOBJWriter.h>
 #include <vtkSMPTools.h>
 #include <vtkStaticCellLocator.h>
 
@@ -26,8 +26,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
-#include <iomanip>
-#include <iostream>
 #include <string>
 
 namespace
@@ -171,46 +169,13 @@ void BM_VTKLocator(benchmark::State& state)
   state.counters["hit_fraction"] = static_cast<double>(hits) / frames.size();
 }
 
-// A Wavefront OBJ of a triangle mesh with per-point texture coordinates and normals, every
-// face marked smooth so that importers interpolate the normals. Written here rather than by
-// vtkOBJWriter: Debian's VTK::IOGeometry links JsonCpp::JsonCpp, a target that a find_package
-// here, below the project's top-level one, does not make visible to it.
+// A Wavefront OBJ of the mesh with its texture coordinates and normals.
 bool WriteOBJ(vtkPolyData* mesh, const std::string& fileName)
 {
-  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
-  std::ofstream file(fileName);
-  if (!normals || !tcoords || !file)
-  {
-    std::cerr << "Could not write " << fileName << "\n";
-    return false;
-  }
-  file << std::setprecision(9);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3], n[3], t[2];
-    mesh->GetPoint(i, p);
-    normals->GetTuple(i, n);
-    tcoords->GetTuple(i, t);
-    file << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << "\nvt " << t[0] << ' ' << t[1] << "\nvn "
-         << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
-  }
-  file << "s 1\n";
-  vtkCellArray* polys = mesh->GetPolys();
-  for (vtkIdType cell = 0; cell < polys->GetNumberOfCells(); ++cell)
-  {
-    vtkIdType count;
-    const vtkIdType* ids;
-    polys->GetCellAtId(cell, count, ids);
-    file << 'f';
-    for (vtkIdType k = 0; k < count; ++k)
-    {
-      const vtkIdType id = ids[k] + 1; // OBJ counts from 1
-      file << ' ' << id << '/' << id << '/' << id;
-    }
-    file << '\n';
-  }
-  return static_cast<bool>(file);
+  vtkNew<vtkOBJWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(fileName.c_str());
+  return writer->Write() == 1;
 }
 } // namespace
 
