@@ -34,6 +34,7 @@
 #include <vtkDisplacementMapFilter.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
+#include <vtkImageWrapPad.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkNormalMapBaker.h>
@@ -232,22 +233,12 @@ vtkSmartPointer<vtkImageData> Tiled(vtkImageData* image, const double repeat[2])
 {
   int dims[3];
   image->GetDimensions(dims);
-  const int comps = image->GetNumberOfScalarComponents();
-  const int nu = static_cast<int>(repeat[0]), nv = static_cast<int>(repeat[1]);
-  auto tiled = vtkSmartPointer<vtkImageData>::New();
-  tiled->SetDimensions(nu * dims[0], nv * dims[1], 1);
-  tiled->AllocateScalars(image->GetScalarType(), comps);
-  const auto* in = static_cast<const unsigned char*>(image->GetScalarPointer());
-  auto* out = static_cast<unsigned char*>(tiled->GetScalarPointer());
-  const size_t row = static_cast<size_t>(dims[0]) * comps * image->GetScalarSize();
-  for (int j = 0; j < nv * dims[1]; ++j)
-  {
-    for (int k = 0; k < nu; ++k)
-    {
-      std::copy_n(in + (j % dims[1]) * row, row, out + (j * nu + k) * row);
-    }
-  }
-  return tiled;
+  vtkNew<vtkImageWrapPad> tile;
+  tile->SetInputData(image);
+  tile->SetOutputWholeExtent(0, static_cast<int>(repeat[0] * dims[0]) - 1, 0,
+    static_cast<int>(repeat[1] * dims[1]) - 1, 0, 0);
+  tile->Update();
+  return tile->GetOutput();
 }
 
 // The scene's own texture resolution (texels per texture square) over the whole atlas.

@@ -63,11 +63,6 @@ BrickTextures::Layout TruthBricks()
   return layout;
 }
 
-vtkSmartPointer<vtkTexture> MakeTexture(vtkImageData* image)
-{
-  return RepeatedTexture(image);
-}
-
 Surface Wall()
 {
   return { "wall", [] { return vtkSmartPointer<vtkParametricRectangle>::New(); }, { 2, 2 },
@@ -117,7 +112,7 @@ vtkSmartPointer<vtkActor> SurfaceActor(
     surface.Depth = options.Depth;
   }
   auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetTexture(MakeTexture(BrickTextures::Colours(TruthBricks())));
+  actor->SetTexture(RepeatedTexture(BrickTextures::Colours(TruthBricks())));
   actor->GetProperty()->SetAmbient(0.15);
   actor->GetProperty()->SetDiffuse(0.85);
   actor->GetProperty()->SetSpecular(0.2);
@@ -147,15 +142,15 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   {
     case Look::Normal:
       mapper->SetTechniqueToNormalMapping();
-      mapper->SetNormalMap(MakeTexture(maps->GetOutput()));
+      mapper->SetNormalMap(RepeatedTexture(maps->GetOutput()));
       break;
     case Look::Relief:
       mapper->SetTechniqueToReliefMapping();
-      mapper->SetReliefMap(MakeTexture(maps->GetOutput()));
+      mapper->SetReliefMap(RepeatedTexture(maps->GetOutput()));
       break;
     default:
       mapper->SetTechniqueToReliefMapping();
-      mapper->SetHeightMap(MakeTexture(heights));
+      mapper->SetHeightMap(RepeatedTexture(heights));
       break;
   }
   actor->SetMapper(mapper);
@@ -511,7 +506,7 @@ vtkSmartPointer<vtkActor> WallActor(const std::function<void(vtkSurfaceDetailMap
   configure(mapper);
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  actor->SetTexture(MakeTexture(BrickTextures::Colours(TruthBricks())));
+  actor->SetTexture(RepeatedTexture(BrickTextures::Colours(TruthBricks())));
   actor->GetProperty()->SetAmbient(0.15);
   actor->GetProperty()->SetDiffuse(0.85);
   actor->GetProperty()->SetSpecular(0.2);
@@ -559,7 +554,7 @@ TEST(SurfaceDetailRelief, FlatReliefIsTheMesh)
       [&](vtkSurfaceDetailMapper* mapper)
       {
         mapper->SetTechniqueToReliefMapping();
-        mapper->SetHeightMap(MakeTexture(top));
+        mapper->SetHeightMap(RepeatedTexture(top));
         mapper->SelfShadowingOn();
         mapper->DepthCorrectionOn();
       }) },
@@ -579,7 +574,7 @@ TEST(SurfaceDetailRelief, HeadlightCastsNoVisibleShadow)
       [&](vtkSurfaceDetailMapper* mapper)
       {
         mapper->SetTechniqueToReliefMapping();
-        mapper->SetReliefMap(MakeTexture(ReliefMap(Wall().Depth / 2.0)));
+        mapper->SetReliefMap(RepeatedTexture(ReliefMap(Wall().Depth / 2.0)));
         mapper->SetSelfShadowing(shadows);
       });
   };
@@ -614,7 +609,7 @@ TEST(SurfaceDetailRelief, ReliefBelowAPixelIsNormalMapping)
       [&](vtkSurfaceDetailMapper* mapper)
       {
         mapper->SetTechniqueToReliefMapping();
-        mapper->SetReliefMap(MakeTexture(map));
+        mapper->SetReliefMap(RepeatedTexture(map));
         mapper->SetDepthScale(depth);
         mapper->SelfShadowingOn();
       });
@@ -625,7 +620,7 @@ TEST(SurfaceDetailRelief, ReliefBelowAPixelIsNormalMapping)
       [&](vtkSurfaceDetailMapper* mapper)
       {
         mapper->SetTechniqueToNormalMapping();
-        mapper->SetNormalMap(MakeTexture(map));
+        mapper->SetNormalMap(RepeatedTexture(map));
       }) },
     normal);
   Draw(view, { relief(1e-4) }, shallow); // the wall is 4 units wide on 300 pixels
