@@ -253,6 +253,9 @@ protected:
   // The input tangents that the output re-orthogonalises, or null (None mode, or none).
   vtkDataArray* InputTangents(vtkPolyData* input);
 
+  // Reports cells that name points the input does not have.
+  void ReportBadPointIds(vtkIdType numPts);
+
   double Scale = 1.0;
   double Midlevel = 0.0;
   int Component = 0;

@@ -1,0 +1,625 @@
+/**
+ * @file   vtkDisplacementNormals.h
+ * @brief  Private: the normals of vtkDisplacementMapFilter's displaced surface, in its
+ *         normal modes (Approximate, Exact, Mesh), and the tangents made orthogonal to them.
+ *
+ * Everything is computed in double precision, reading and writing the arrays as raw values of
+ * R (float or double): the formulas point by point, the normalisations over blocks of points.
+ * The class description of vtkDisplacementMapFilter states the formulas; the comments here say
+ * how they are evaluated.
+ *
+ * Part of SurfaceDetail::Filters; not installed.
+ */
+#ifndef vtkDisplacementNormals_h
+#define vtkDisplacementNormals_h
+
+#include "vtkDisplacementPolygons.h"
+#include "vtkDisplacementSampling.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkParametricSurfaceSource.h"
+#include "vtkSurfaceDetailConventions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace vtkDisplacement
+{
+/// The input surface's point arrays as raw values of R; absent arrays are null.
+template <typename R>
+struct Surface
+{
+  vtkIdType NumPoints = 0;
+  const R* Points = nullptr;
+  const R* Normals = nullptr;
+  const R* TCoords = nullptr;
+  int TCoordsNC = 2;
+  const R* DPdu = nullptr; // with DPdv, or null: P_s and P_t are then fitted
+  const R* DPdv = nullptr;
+  const R* DNdu = nullptr; // with DNdv, Exact only, or null: n_s and n_t are then fitted
+  const R* DNdv = nullptr;
+  const R* Tangents = nullptr; // re-orthogonalised to the new normals, or null
+  int TangentsNC = 4;
+  double DerivativeScale[2] = { 1.0, 1.0 }; // P_s = dPdu * [0], P_t = dPdv * [1]
+};
+
+/// The arrays the filter writes; Normals and Tangents are null where none are made.
+template <typename R>
+struct Output
+{
+  R* Points = nullptr;
+  R* Normals = nullptr;
+  R* Tangents = nullptr;
+};
+
+/// NaN becomes 0 and infinity the largest double.
+inline double Finite(double x)
+{
+  if (std::isnan(x))
+  {
+    return 0.0;
+  }
+  return std::min(
+    std::max(x, -std::numeric_limits<double>::max()), std::numeric_limits<double>::max());
+}
+
+/// Whether a length is positive and finite.
+inline bool Usable(double length)
+{
+  return length > 0.0 && length <= std::numeric_limits<double>::max();
+}
+
+/// Loads the 3-vector @a i of @a a, times @a scale.
+template <typename R>
+void Load3(const R* a, vtkIdType i, double scale, double v[3])
+{
+  v[0] = scale * a[3 * i];
+  v[1] = scale * a[3 * i + 1];
+  v[2] = scale * a[3 * i + 2];
+}
+
+/// The passes work on blocks of points, each quantity of the block held as an array
+/// ("lanes"). The square roots and divisions that make vectors unit then run in loops of
+/// independent points, which the processor overlaps (and the compiler vectorises), where one
+/// point after another would wait for each result in turn.
+using Lanes = double[Block];
+
+/// Scales each vector @a v to unit length where its length is Usable and marks @a ok; leaves
+/// it as it is elsewhere.
+inline void MakeUnit(int count, Lanes v[3], bool ok[Block])
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const double length = std::sqrt(v[0][k] * v[0][k] + v[1][k] * v[1][k] + v[2][k] * v[2][k]);
+    ok[k] = Usable(length);
+    const double inv = 1.0 / (ok[k] ? length : 1.0);
+    v[0][k] *= inv;
+    v[1][k] *= inv;
+    v[2][k] *= inv;
+  }
+}
+
+/// The unit input normals @a n of the points @a ids, zero where one has no direction.
+template <typename R>
+void UnitNormals(const Surface<R>& in, const vtkIdType* ids, int count, Lanes n[3])
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const R* v = in.Normals + 3 * ids[k];
+    n[0][k] = v[0];
+    n[1][k] = v[1];
+    n[2][k] = v[2];
+  }
+  bool ok[Block];
+  MakeUnit(count, n, ok);
+  for (int k = 0; k < count; ++k)
+  {
+    n[0][k] = ok[k] ? n[0][k] : 0.0;
+    n[1][k] = ok[k] ? n[1][k] : 0.0;
+    n[2][k] = ok[k] ? n[2][k] : 0.0;
+  }
+}
+
+/// Removes from @a v its part along the unit (or zero) @a n.
+inline void Across(const double n[3], double v[3])
+{
+  const double along = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+  v[0] -= along * n[0];
+  v[1] -= along * n[1];
+  v[2] -= along * n[2];
+}
+
+/// What the analytic modes know at a point: P_s, P_t and (Exact) n_s, n_t.
+struct PointDerivatives
+{
+  double Ps[3] = {}, Pt[3] = {}, Ns[3] = {}, Nt[3] = {};
+};
+
+/// The larger magnitude of the components of @a v.
+inline double Largest(const double v[3])
+{
+  return std::max(std::max(std::abs(v[0]), std::abs(v[1])), std::abs(v[2]));
+}
+
+/// Where the products in Direction overflow: the same direction from vectors divided by their
+/// largest coefficient (only the direction matters).
+inline void RescaledCross(double qs[3], double qt[3], double m[3])
+{
+  const double ls = Largest(qs), lt = Largest(qt);
+  for (int j = 0; j < 3; ++j)
+  {
+    qs[j] /= ls;
+    qt[j] /= lt;
+  }
+  vtkSurfaceDetail::Cross(qs, qt, m);
+}
+
+/**
+ * The direction @a m of a point's displaced normal from its unit input normal @a n, its
+ * displacement @a d and slopes @a ds, @a dt: the seed's formula (Approximate), or (Exact) the
+ * cross product of the displaced surface's derivatives. P_s and P_t count only across n (n
+ * defines the tangent plane), so that a map without slope gives back n itself, and the result
+ * is oriented by n . (P_s x P_t), whatever the orientation of the parameterisation. Where
+ * P_s x P_t vanishes (a singular point of the parameterisation) the input normal is kept.
+ */
+template <bool Exact>
+void Direction(const double n[3], PointDerivatives& b, double d, double ds, double dt, double m[3])
+{
+  Across(n, b.Ps);
+  Across(n, b.Pt);
+  double base[3];
+  vtkSurfaceDetail::Cross(b.Ps, b.Pt, base);
+  const double area = vtkSurfaceDetail::Dot(n, base);
+  // |area| > 1e-10 |P_s| |P_t|, squared where the squares are finite (|area| <= |P_s| |P_t|).
+  const double ss = vtkSurfaceDetail::Dot(b.Ps, b.Ps), tt = vtkSurfaceDetail::Dot(b.Pt, b.Pt);
+  const bool regular = std::isfinite(ss * tt)
+    ? area * area > 1e-20 * (ss * tt)
+    : std::abs(area) > 1e-10 * std::sqrt(ss) * std::sqrt(tt);
+  if (!regular || !std::isfinite(area))
+  {
+    m[0] = n[0];
+    m[1] = n[1];
+    m[2] = n[2];
+    return;
+  }
+  const double sign = area < 0.0 ? -1.0 : 1.0;
+  double qs[3], qt[3];
+  if (Exact)
+  {
+    // (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t)
+    Across(n, b.Ns);
+    Across(n, b.Nt);
+    for (int j = 0; j < 3; ++j)
+    {
+      qs[j] = Finite(sign * (b.Ps[j] + ds * n[j] + d * b.Ns[j]));
+      qt[j] = Finite(b.Pt[j] + dt * n[j] + d * b.Nt[j]);
+    }
+  }
+  else
+  {
+    // (n . (P_s x P_t)) n + d_s (n x P_t) - d_t (n x P_s)
+    double nxPs[3], nxPt[3];
+    vtkSurfaceDetail::Cross(n, b.Ps, nxPs);
+    vtkSurfaceDetail::Cross(n, b.Pt, nxPt);
+    for (int j = 0; j < 3; ++j)
+    {
+      m[j] = sign * (area * n[j] + ds * nxPt[j] - dt * nxPs[j]);
+    }
+    if (std::isfinite(vtkSurfaceDetail::Dot(m, m)))
+    {
+      return;
+    }
+    // Huge slopes: the same sum of n, n x P_t and n x P_s with coefficients made small.
+    qs[0] = sign * area;
+    qs[1] = sign * ds;
+    qs[2] = -sign * dt;
+    const double l = Largest(qs);
+    for (int j = 0; j < 3; ++j)
+    {
+      m[j] = (qs[0] / l) * n[j] + (qs[1] / l) * nxPt[j] + (qs[2] / l) * nxPs[j];
+    }
+    return;
+  }
+  vtkSurfaceDetail::Cross(qs, qt, m);
+  if (!std::isfinite(vtkSurfaceDetail::Dot(m, m)))
+  {
+    RescaledCross(qs, qt, m);
+  }
+}
+
+/**
+ * Normalises the directions @a m of the points @a ids and writes them as their normals (the
+ * unit input normal @a n where a direction is degenerate, +z where that is zero too), then
+ * their tangents re-orthogonalised to them with the handedness kept.
+ */
+template <typename R>
+void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, const vtkIdType* ids,
+  int count, const Lanes n[3], Lanes m[3])
+{
+  bool ok[Block];
+  MakeUnit(count, m, ok);
+  for (int k = 0; k < count; ++k)
+  {
+    const bool none = n[0][k] == 0.0 && n[1][k] == 0.0 && n[2][k] == 0.0;
+    m[0][k] = ok[k] ? m[0][k] : n[0][k];
+    m[1][k] = ok[k] ? m[1][k] : n[1][k];
+    m[2][k] = ok[k] ? m[2][k] : (none ? 1.0 : n[2][k]);
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    R* normal = out.Normals + 3 * ids[k];
+    normal[0] = static_cast<R>(m[0][k]);
+    normal[1] = static_cast<R>(m[1][k]);
+    normal[2] = static_cast<R>(m[2][k]);
+  }
+  if (!out.Tangents)
+  {
+    return;
+  }
+  const int nc = in.TangentsNC;
+  Lanes t[3];
+  for (int k = 0; k < count; ++k)
+  {
+    const R* ti = in.Tangents + nc * ids[k];
+    const double along = m[0][k] * ti[0] + m[1][k] * ti[1] + m[2][k] * ti[2];
+    t[0][k] = ti[0] - along * m[0][k];
+    t[1][k] = ti[1] - along * m[1][k];
+    t[2][k] = ti[2] - along * m[2][k];
+  }
+  MakeUnit(count, t, ok);
+  for (int k = 0; k < count; ++k)
+  {
+    R* tangent = out.Tangents + nc * ids[k];
+    if (!ok[k])
+    {
+      // No direction left across the normal: any unit vector orthogonal to it.
+      const double mk[3] = { m[0][k], m[1][k], m[2][k] }, zero[3] = { 0.0, 0.0, 0.0 };
+      double frame[4];
+      vtkSurfaceDetail::MakeTangentFrame(mk, zero, zero, frame);
+      t[0][k] = frame[0];
+      t[1][k] = frame[1];
+      t[2][k] = frame[2];
+    }
+    tangent[0] = static_cast<R>(t[0][k]);
+    tangent[1] = static_cast<R>(t[1][k]);
+    tangent[2] = static_cast<R>(t[2][k]);
+    if (nc == 4)
+    {
+      tangent[3] = in.Tangents[4 * ids[k] + 3];
+    }
+  }
+}
+
+/// Each point's polygons, for the derivatives fitted to a point's neighbours and Mesh normals.
+template <typename Id>
+struct Neighbours
+{
+  const Polygons<Id>* Polys = nullptr;
+  const PointCells<Id>* Links = nullptr;
+};
+
+/**
+ * The least-squares fit of the derivatives in (s,t) at point @a i of the points (P_s, P_t,
+ * @a wantP) and of the normals (n_s, n_t, @a wantN): it minimises
+ * sum |f_j - f_i - f_s ds - f_t dt|^2 over the neighbours j in the point's polygons, each
+ * counted once per polygon it shares with the point. On a regular grid this is a central
+ * difference. The normals are fitted as they are stored and the result divided by |n_i|:
+ * across n_i (where Direction uses it) that is the derivative of the unit normal. Where the
+ * texture coordinates around the point do not span two directions, or (P) a neighbour sits at
+ * the point with other texture coordinates (a pole: p(s,t) is singular there), the
+ * derivatives are 0 and the normal falls back on the input's.
+ */
+template <typename R, typename Id>
+void Fit(const Surface<R>& in, const Neighbours<Id>& near, vtkIdType i, bool wantP, bool wantN,
+  PointDerivatives& b)
+{
+  const R* tc = in.TCoords;
+  const vtkIdType tnc = in.TCoordsNC;
+  const double s = tc[tnc * i], t = tc[tnc * i + 1];
+  double p[3], n[3];
+  Load3(in.Points, i, 1.0, p);
+  Load3(in.Normals, i, 1.0, n);
+  double ss = 0.0, st = 0.0, tt = 0.0, bp[6] = {}, bn[6] = {};
+  double nearest = std::numeric_limits<double>::max(), farthest = 0.0;
+  for (const Id* cell = near.Links->Begin(i); cell != near.Links->End(i); ++cell)
+  {
+    const Id* ids = near.Polys->Points(*cell);
+    const vtkIdType size = near.Polys->Size(*cell);
+    for (vtkIdType c = 0; c < size; ++c)
+    {
+      const vtkIdType j = ids[c];
+      if (j == i)
+      {
+        continue;
+      }
+      const double ds = tc[tnc * j] - s, dt = tc[tnc * j + 1] - t;
+      ss += ds * ds;
+      st += ds * dt;
+      tt += dt * dt;
+      if (wantP)
+      {
+        double d[3];
+        Load3(in.Points, j, 1.0, d);
+        for (int q = 0; q < 3; ++q)
+        {
+          d[q] -= p[q];
+          bp[q] += ds * d[q];
+          bp[3 + q] += dt * d[q];
+        }
+        const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        nearest = std::min(nearest, d2);
+        farthest = std::max(farthest, d2);
+      }
+      if (wantN)
+      {
+        double d[3];
+        Load3(in.Normals, j, 1.0, d);
+        for (int q = 0; q < 3; ++q)
+        {
+          d[q] -= n[q];
+          bn[q] += ds * d[q];
+          bn[3 + q] += dt * d[q];
+        }
+      }
+    }
+  }
+  const double det = ss * tt - st * st;
+  const bool spans = det > 1e-12 * (ss + tt) * (ss + tt);
+  const bool distinct = spans && !(nearest <= 1e-16 * farthest);
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const bool unit = spans && Usable(length);
+  for (int q = 0; q < 3; ++q)
+  {
+    if (wantP)
+    {
+      b.Ps[q] = distinct ? (tt * bp[q] - st * bp[3 + q]) / det : 0.0;
+      b.Pt[q] = distinct ? (ss * bp[3 + q] - st * bp[q]) / det : 0.0;
+    }
+    if (wantN)
+    {
+      b.Ns[q] = unit ? (tt * bn[q] - st * bn[3 + q]) / (det * length) : 0.0;
+      b.Nt[q] = unit ? (ss * bn[3 + q] - st * bn[q]) / (det * length) : 0.0;
+    }
+  }
+}
+
+/**
+ * P_s, P_t and (Exact) n_s, n_t of point @a i: from dPdu/dPdv (and dNdu/dNdv) scaled by the
+ * map from their parameters to the texture coordinates, else fitted to the neighbours.
+ */
+template <typename R, typename Id>
+void Derivatives(
+  const Surface<R>& in, const Neighbours<Id>& near, vtkIdType i, bool exact, PointDerivatives& b)
+{
+  const bool wantP = !in.DPdu, wantN = exact && !in.DNdu;
+  if (wantP || wantN)
+  {
+    Fit(in, near, i, wantP, wantN, b);
+  }
+  if (!wantP)
+  {
+    Load3(in.DPdu, i, in.DerivativeScale[0], b.Ps);
+    Load3(in.DPdv, i, in.DerivativeScale[1], b.Pt);
+  }
+  if (exact && !wantN)
+  {
+    Load3(in.DNdu, i, in.DerivativeScale[0], b.Ns);
+    Load3(in.DNdv, i, in.DerivativeScale[1], b.Nt);
+  }
+}
+
+/**
+ * dPdu and dPdv may be derivatives with respect to parameters (u,v) of which the texture
+ * coordinates are an axis-aligned affine function, s = o_s + r_s u, t = o_t + r_t v
+ * (vtkParametricSurfaceSource's TextureRepeat and TextureOffset). Estimates r_s and r_t by
+ * least squares over up to 4096 edges spread over the polygons: each edge's (du, dv) solves
+ * dP ~ dPdu du + dPdv dv, against its (ds, dt). Sets 1/r (so dP/ds = dPdu / r_s); exactly
+ * 1 when the fit is within its own error of it (0.1%, or twice the O(h^2) chord bias estimated
+ * from how far the derivatives turn along the edges: float positions and that bias would
+ * otherwise perturb the untransformed case) or cannot be made. Edges whose texture
+ * coordinates are not finite are left out.
+ */
+template <typename R, typename Id>
+void EstimateDerivativeScale(const Polygons<Id>& polys, Surface<R>& c)
+{
+  auto get = [](const R* a, vtkIdType i, double v[3])
+  {
+    v[0] = a[3 * i];
+    v[1] = a[3 * i + 1];
+    v[2] = a[3 * i + 2];
+  };
+  double su = 0.0, uu = 0.0, tv = 0.0, vv = 0.0, biasU = 0.0, biasV = 0.0;
+  const vtkIdType stride = std::max<vtkIdType>(1, polys.Count / 4096);
+  for (vtkIdType cell = 0; cell < polys.Count; cell += stride)
+  {
+    if (polys.Size(cell) < 2)
+    {
+      continue;
+    }
+    const vtkIdType i = polys.Points(cell)[0], j = polys.Points(cell)[1];
+    // The mean of the two ends' derivatives: exact for quadratic p, so the fit has no
+    // first-order bias from the surface's curvature.
+    double pi[3], pj[3], a[3], b[3], aj[3], bj[3], ta[3], tb[3];
+    get(c.Points, i, pi);
+    get(c.Points, j, pj);
+    get(c.DPdu, i, a);
+    get(c.DPdv, i, b);
+    get(c.DPdu, j, aj);
+    get(c.DPdv, j, bj);
+    for (int k = 0; k < 3; ++k)
+    {
+      ta[k] = aj[k] - a[k];
+      tb[k] = bj[k] - b[k];
+      a[k] = 0.5 * (a[k] + aj[k]);
+      b[k] = 0.5 * (b[k] + bj[k]);
+    }
+    const double dp[3] = { pj[0] - pi[0], pj[1] - pi[1], pj[2] - pi[2] };
+    const double aa = vtkSurfaceDetail::Dot(a, a), ab = vtkSurfaceDetail::Dot(a, b),
+                 bb = vtkSurfaceDetail::Dot(b, b);
+    const double det = aa * bb - ab * ab;
+    if (!(det > 1e-12 * (aa + bb) * (aa + bb)))
+    {
+      continue;
+    }
+    double du = (bb * vtkSurfaceDetail::Dot(a, dp) - ab * vtkSurfaceDetail::Dot(b, dp)) / det;
+    double dv = (aa * vtkSurfaceDetail::Dot(b, dp) - ab * vtkSurfaceDetail::Dot(a, dp)) / det;
+    // The chord of an arc that turns its tangent by phi is tan(phi/2) / (phi/2) = 1 + phi^2/12
+    // times the mean tangent's step, so (du, dv) comes out that much long: a bias of order h^2,
+    // which the correction leaves at order h^4 (exact to that order for constant-speed curves
+    // such as the parametric circles of a sphere or torus).
+    double turn[3], step[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      turn[k] = ta[k] * du + tb[k] * dv;
+      step[k] = a[k] * du + b[k] * dv;
+    }
+    const double step2 = vtkSurfaceDetail::Dot(step, step);
+    double bias = 0.0;
+    if (step2 > 0.0)
+    {
+      bias = vtkSurfaceDetail::Dot(turn, turn) / (12.0 * step2);
+      du /= 1.0 + bias;
+      dv /= 1.0 + bias;
+    }
+    const double ds = c.TCoords[c.TCoordsNC * j] - c.TCoords[c.TCoordsNC * i];
+    const double dt = c.TCoords[c.TCoordsNC * j + 1] - c.TCoords[c.TCoordsNC * i + 1];
+    if (!std::isfinite(ds * du + dt * dv + du * du + dv * dv))
+    {
+      continue;
+    }
+    su += ds * du;
+    uu += du * du;
+    tv += dt * dv;
+    vv += dv * dv;
+    biasU += bias * du * du;
+    biasV += bias * dv * dv;
+  }
+  const double r[2] = { uu > 0.0 ? su / uu : 1.0, vv > 0.0 ? tv / vv : 1.0 };
+  // Within the estimate's own error of 1, r is 1: the common case of texture coordinates that
+  // are the parameters, whose derivatives are then used as given.
+  const double tolerance[2] = { std::max(1e-3, uu > 0.0 ? 2.0 * biasU / uu : 0.0),
+    std::max(1e-3, vv > 0.0 ? 2.0 * biasV / vv : 0.0) };
+  for (int k = 0; k < 2; ++k)
+  {
+    const bool useful =
+      r[k] != 0.0 && std::isfinite(1.0 / r[k]) && std::abs(r[k] - 1.0) > tolerance[k];
+    c.DerivativeScale[k] = useful ? 1.0 / r[k] : 1.0;
+  }
+}
+
+/// The map from dPdu/dPdv's parameters to the texture coordinates as vtkParametricSurfaceSource
+/// declares it on them: exact, and the same in every piece, where an estimate depends on the
+/// polygons at hand. False where it is not declared or not usable.
+template <typename R>
+bool DeclaredDerivativeScale(vtkDataArray* tcoords, Surface<R>& c)
+{
+  vtkInformationDoubleVectorKey* key = vtkParametricSurfaceSource::TEXTURE_TRANSFORM();
+  vtkInformation* info = tcoords->HasInformation() ? tcoords->GetInformation() : nullptr;
+  if (!info || !info->Has(key) || info->Length(key) != 4)
+  {
+    return false;
+  }
+  const double* transform = info->Get(key);
+  const double repeat[2] = { transform[0], transform[2] };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!std::isfinite(1.0 / repeat[k]) || repeat[k] == 0.0)
+    {
+      return false;
+    }
+  }
+  c.DerivativeScale[0] = 1.0 / repeat[0];
+  c.DerivativeScale[1] = 1.0 / repeat[1];
+  return true;
+}
+
+/**
+ * Mesh normals: each point's normal is the sum of the normals of its displaced polygons,
+ * area-weighted (a fan of cross products from corner 0) and each oriented as its input
+ * normals (the input polygon's normal against the sum of its points' input normals: Orient,
+ * found first for each polygon). The polygons are read through the point's links in
+ * increasing order, so the bits depend neither on the threads nor on the pieces; a displaced
+ * polygon's normal is computed for each of its points, which needs no array of polygon
+ * normals.
+ */
+template <typename R, typename Id>
+struct MeshNormals
+{
+  const Surface<R>& In;
+  const Neighbours<Id>& Near;
+  const R* Moved;
+  std::vector<signed char> Signs;
+
+  static void FanSum(const R* pts, const Id* ids, vtkIdType n, double sum[3])
+  {
+    if (n < 3)
+    {
+      return; // no area, and an empty polygon's ids are not there to read
+    }
+    double p0[3];
+    Load3(pts, ids[0], 1.0, p0);
+    for (vtkIdType k = 1; k + 1 < n; ++k)
+    {
+      double a[3], c[3], x[3];
+      Load3(pts, ids[k], 1.0, a);
+      Load3(pts, ids[k + 1], 1.0, c);
+      for (int q = 0; q < 3; ++q)
+      {
+        a[q] -= p0[q];
+        c[q] -= p0[q];
+      }
+      vtkSurfaceDetail::Cross(a, c, x);
+      sum[0] += x[0];
+      sum[1] += x[1];
+      sum[2] += x[2];
+    }
+  }
+
+  // The orientation of every polygon against its points' input normals.
+  void Orient()
+  {
+    const Polygons<Id>& polys = *this->Near.Polys;
+    this->Signs.resize(polys.Count);
+    vtkSMPTools::For(0, polys.Count,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType cell = begin; cell < end; ++cell)
+        {
+          const Id* ids = polys.Points(cell);
+          const vtkIdType n = polys.Size(cell);
+          double before[3] = { 0.0, 0.0, 0.0 }, normals[3] = { 0.0, 0.0, 0.0 };
+          FanSum(this->In.Points, ids, n, before);
+          for (vtkIdType k = 0; k < n; ++k)
+          {
+            const R* nk = this->In.Normals + 3 * ids[k];
+            normals[0] += nk[0];
+            normals[1] += nk[1];
+            normals[2] += nk[2];
+          }
+          this->Signs[cell] = vtkSurfaceDetail::Dot(before, normals) < 0.0 ? -1 : 1;
+        }
+      });
+  }
+
+  // The unnormalised normal @a m of point @a i.
+  void Sum(vtkIdType i, double m[3]) const
+  {
+    const Polygons<Id>& polys = *this->Near.Polys;
+    m[0] = m[1] = m[2] = 0.0;
+    for (const Id* cell = this->Near.Links->Begin(i); cell != this->Near.Links->End(i); ++cell)
+    {
+      double moved[3] = { 0.0, 0.0, 0.0 };
+      FanSum(this->Moved, polys.Points(*cell), polys.Size(*cell), moved);
+      const double sign = this->Signs[*cell];
+      m[0] += sign * moved[0];
+      m[1] += sign * moved[1];
+      m[2] += sign * moved[2];
+    }
+  }
+};
+} // namespace vtkDisplacement
+
+#endif
+// VTK-HeaderTest-Exclude: vtkDisplacementNormals.h
