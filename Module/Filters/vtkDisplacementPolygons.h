@@ -182,12 +182,14 @@ struct PointCells
     }
     offsets[numPts] = numPts > 0 ? offsets[numPts - 1] : 0;
     // ... and filling each list from its end moves that mark back to where the list starts.
+    // Each chunk is filled from its last cell down, so that a list comes out in increasing
+    // order wherever a point's cells are in one chunk.
     this->Cells.reset(new Id[offsets[numPts]]);
     Id* cells = this->Cells.get();
     chunks.Scatter(
       [&](vtkIdType begin, vtkIdType end)
       {
-        for (vtkIdType cell = begin; cell < end; ++cell)
+        for (vtkIdType cell = end - 1; cell >= begin; --cell)
         {
           for (const Id* id = polys.Points(cell); id != polys.Points(cell + 1); ++id)
           {
@@ -195,14 +197,24 @@ struct PointCells
           }
         }
       });
-    // Each list in increasing order, as in any piece of the same mesh whose cells keep their
-    // order: sums over a list then give a point the same bits in a piece as in the whole.
+    // Every list in increasing order, as in any piece of the same mesh whose cells keep their
+    // order: sums over a list then give a point the same bits in a piece as in the whole. Only
+    // lists that cross a chunk's border are out of order, so insertion sort does little.
     vtkSMPTools::For(0, numPts,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          std::sort(cells + offsets[i], cells + offsets[i + 1]);
+          for (Id* a = cells + offsets[i] + 1; a < cells + offsets[i + 1]; ++a)
+          {
+            const Id value = *a;
+            Id* b = a;
+            for (; b > cells + offsets[i] && *(b - 1) > value; --b)
+            {
+              *b = *(b - 1);
+            }
+            *b = value;
+          }
         }
       });
   }
