@@ -907,12 +907,16 @@ int vtkNormalMapBaker::RequestInformation(
 {
   const int W = std::max(this->TextureSize[0], 0), H = std::max(this->TextureSize[1], 0);
   const int extent[6] = { 0, W - 1, 0, H - 1, 0, W > 0 && H > 0 ? 0 : -1 };
+  // Without BakeHeight the height map is not made: its port says so with an empty extent, so
+  // that a filter downstream does not expect a W x H image.
+  const int none[6] = { 0, -1, 0, -1, 0, -1 };
   const double spacing[3] = { W > 0 ? 1.0 / W : 1.0, H > 0 ? 1.0 / H : 1.0, 1.0 };
   const double origin[3] = { 0.5 * spacing[0], 0.5 * spacing[1], 0.0 };
   for (int port = 0; port < 2; ++port)
   {
     vtkInformation* info = outputVector->GetInformationObject(port);
-    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(),
+      port == 1 && !this->BakeHeight ? none : extent, 6);
     info->Set(vtkDataObject::SPACING(), spacing, 3);
     info->Set(vtkDataObject::ORIGIN(), origin, 3);
   }

@@ -19,12 +19,15 @@
 #include <vtkExecutive.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
+#include <vtkImageShiftScale.h>
+#include <vtkInformation.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkSurfaceDetailConventions.h>
 
 #include <gtest/gtest.h>
@@ -333,6 +336,37 @@ TEST(NormalMapBaker, TiltedPlaneExactly)
   // Face normals when the detailed mesh has no point normals: the layers' are +z.
   EXPECT_LT(
     AngleDeg(Decode(baker->GetOutput()->GetPointData()->GetScalars(), 0), { 0, 0, 1 }), 1e-4);
+}
+
+// The height map is an optional output: with BakeHeight off, port 1's information must say
+// that it is empty, or a downstream image filter sized from the information reads a W x H image
+// that is not there (vtkImageShiftScale crashed on it).
+TEST(NormalMapBaker, HeightOutputIsEmptyWhenNotBaked)
+{
+  vtkNew<vtkNormalMapBaker> baker;
+  baker->SetInputData(0, Square(3, 0, 0, 0, true));
+  baker->SetInputData(1, Square(5, 0, 0, 0.02, true));
+  baker->SetTextureSize(16, 8);
+  baker->SetMaxRayDistance(0.1);
+  vtkNew<vtkImageShiftScale> shift;
+  shift->SetInputConnection(baker->GetOutputPort(1));
+  shift->SetScale(2.0);
+  for (const bool height : { false, true, false })
+  {
+    SCOPED_TRACE(height ? "BakeHeight on" : "BakeHeight off");
+    baker->SetBakeHeight(height);
+    shift->Update();
+    int extent[6];
+    baker->GetOutputInformation(1)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+    EXPECT_EQ(extent[1] - extent[0] + 1, height ? 16 : 0);
+    EXPECT_EQ(extent[3] - extent[2] + 1, height ? 8 : 0);
+    EXPECT_EQ(shift->GetOutput()->GetNumberOfPoints(), height ? 16 * 8 : 0);
+    EXPECT_EQ(baker->GetOutput()->GetNumberOfPoints(), 16 * 8);
+    if (height)
+    {
+      EXPECT_NEAR(shift->GetOutput()->GetPointData()->GetScalars()->GetComponent(0, 0), 0.04, 1e-6);
+    }
+  }
 }
 
 TEST(NormalMapBaker, SameOutputForAnyNumberOfThreads)
