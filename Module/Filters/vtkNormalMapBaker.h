@@ -137,7 +137,8 @@ public:
 
   ///@{
   /**
-   * Off (default): output port 1 is an empty image. On: it holds the baked heights.
+   * Off (default): output port 1 is an empty image, and its information says so (an empty
+   * whole extent). On: it holds the baked heights.
    */
   vtkSetMacro(BakeHeight, bool);
   vtkGetMacro(BakeHeight, bool);
