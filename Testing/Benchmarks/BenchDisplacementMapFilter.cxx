@@ -22,6 +22,7 @@
 #include "vtkDisplacementMapFilter.h"
 
 #include <vtkDataArray.h>
+#include <vtkExecutive.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkImageInterpolator.h>
@@ -150,6 +151,7 @@ void BM_DisplacementMapFilter(benchmark::State& state)
   int k = 0;
   for (auto _ : state)
   {
+    BenchmarkMemory::BeginIteration(state, !reexecute, [&] { filter->GetOutput()->ReleaseData(); });
     if (reexecute)
     {
       // A Scale slider: a new Scale each time, the mesh untouched.
@@ -208,6 +210,18 @@ void BM_VTKChain(benchmark::State& state)
   vtkPolyData* out = nullptr;
   for (auto _ : state)
   {
+    BenchmarkMemory::BeginIteration(state, true,
+      [&]
+      {
+        for (vtkAlgorithm* a : { static_cast<vtkAlgorithm*>(warp),
+               static_cast<vtkAlgorithm*>(normals), static_cast<vtkAlgorithm*>(tangents) })
+        {
+          if (vtkDataObject* o = a->GetExecutive()->GetOutputData(0))
+          {
+            o->ReleaseData();
+          }
+        }
+      });
     interpolator->Initialize(pad->GetOutput());
     interpolator->Update();
     const vtkIdType n = c.Mesh->GetNumberOfPoints();
@@ -262,6 +276,14 @@ void BM_Floor(benchmark::State& state)
   allocate();
   for (auto _ : state)
   {
+    BenchmarkMemory::BeginIteration(state, fresh,
+      [&]
+      {
+        for (auto& a : arrays)
+        {
+          a = nullptr;
+        }
+      });
     if (fresh)
     {
       allocate();
@@ -317,6 +339,13 @@ void BM_FusedKernel(benchmark::State& state)
   vtkSmartPointer<vtkFloatArray> outPoints, outNormals, outTangents;
   for (auto _ : state)
   {
+    BenchmarkMemory::BeginIteration(state, true,
+      [&]
+      {
+        outPoints = nullptr;
+        outNormals = nullptr;
+        outTangents = nullptr;
+      });
     outPoints = vtkSmartPointer<vtkFloatArray>::New();
     outNormals = vtkSmartPointer<vtkFloatArray>::New();
     outTangents = vtkSmartPointer<vtkFloatArray>::New();
@@ -365,7 +394,8 @@ void BM_FusedKernel(benchmark::State& state)
             m[k] = area * nn[k] + ds * (nn[k1] * pt[k2] - nn[k2] * pt[k1]) -
               dt * (nn[k1] * ps[k2] - nn[k2] * ps[k1]);
           }
-          const double inv = (area < 0 ? -1.0 : 1.0) / std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+          const double inv =
+            (area < 0 ? -1.0 : 1.0) / std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
           double t[3] = { tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2] };
           const double along = (t[0] * m[0] + t[1] * m[1] + t[2] * m[2]) * inv * inv;
           for (int k = 0; k < 3; ++k)
