@@ -42,6 +42,13 @@ void vtkParametricCylinder::EvaluateTerms(
   Duvw[6] = Duvw[7] = Duvw[8] = 0.0;
 }
 
+//------------------------------------------------------------------------------
+void vtkParametricCylinder::EvaluateRow(int count, const double* uTerms, vtkIdType uStride,
+  const double* vTerms, double* const P[3], double* const Du[3], double* const Dv[3])
+{
+  EvaluateRowOf(*this, count, uTerms, uStride, vTerms, P, Du, Dv);
+}
+
 bool vtkParametricCylinder::EvaluateSecondDerivatives(
   const double* uTerms, const double*, double D2[9])
 {

@@ -44,6 +44,8 @@ public:
   void EvaluateTerms(
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) override;
   bool EvaluateSecondDerivatives(const double* uTerms, const double* vTerms, double D2[9]) override;
+  void EvaluateRow(int count, const double* uTerms, vtkIdType uStride, const double* vTerms,
+    double* const P[3], double* const Du[3], double* const Dv[3]) override;
   ///@}
 
 protected:

@@ -46,6 +46,13 @@ void vtkParametricDonut::EvaluateTerms(
 }
 
 //------------------------------------------------------------------------------
+void vtkParametricDonut::EvaluateRow(int count, const double* uTerms, vtkIdType uStride,
+  const double* vTerms, double* const P[3], double* const Du[3], double* const Dv[3])
+{
+  EvaluateRowOf(*this, count, uTerms, uStride, vTerms, P, Du, Dv);
+}
+
+//------------------------------------------------------------------------------
 bool vtkParametricDonut::EvaluateSecondDerivatives(
   const double* uTerms, const double* vTerms, double D2[9])
 {

@@ -32,6 +32,13 @@ void vtkParametricRectangle::EvaluateTerms(
   }
 }
 
+//------------------------------------------------------------------------------
+void vtkParametricRectangle::EvaluateRow(int count, const double* uTerms, vtkIdType uStride,
+  const double* vTerms, double* const P[3], double* const Du[3], double* const Dv[3])
+{
+  EvaluateRowOf(*this, count, uTerms, uStride, vTerms, P, Du, Dv);
+}
+
 bool vtkParametricRectangle::EvaluateSecondDerivatives(const double*, const double*, double D2[9])
 {
   for (int k = 0; k < 9; ++k)

@@ -31,6 +31,28 @@ void vtkParametricSeparableFunction::Evaluate(double uvw[3], double Pt[3], doubl
 }
 
 //------------------------------------------------------------------------------
+void vtkParametricSeparableFunction::EvaluateRow(int count, const double* uTerms, vtkIdType uStride,
+  const double* vTerms, double* const P[3], double* const Du[3], double* const Dv[3])
+{
+  const int numTerms = this->GetNumberOfUTerms();
+  for (int k = 0; k < count; ++k)
+  {
+    double u[MaximumNumberOfTerms], p[3], d[9];
+    for (int t = 0; t < numTerms; ++t)
+    {
+      u[t] = uTerms[t * uStride + k];
+    }
+    this->EvaluateTerms(u, vTerms, p, d);
+    for (int c = 0; c < 3; ++c)
+    {
+      P[c][k] = p[c];
+      Du[c][k] = d[c];
+      Dv[c][k] = d[3 + c];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkParametricSeparableFunction::EvaluateSecondDerivatives(
   const double*, const double*, double*)
 {

@@ -25,6 +25,8 @@
 #include "SurfaceDetailSourcesModule.h" // For export macro
 #include "vtkParametricFunction.h"
 
+#include <typeinfo> // For EvaluateRowOf
+
 class SURFACEDETAILSOURCES_EXPORT vtkParametricSeparableFunction : public vtkParametricFunction
 {
 public:
@@ -54,6 +56,17 @@ public:
     const double* uTerms, const double* vTerms, double Pt[3], double Duvw[9]) = 0;
 
   /**
+   * The points and first derivatives of @a count grid points of one row: column k's u terms
+   * are uTerms[t * uStride + k] (t < GetNumberOfUTerms()), the row's v terms are vTerms, and
+   * component c of the point, dP/du and dP/dv goes to P[c][k], Du[c][k] and Dv[c][k]. The same
+   * values as EvaluateTerms() at each column, without a virtual call per point: SurfaceDetail's
+   * functions define it with EvaluateRowOf(), in which their EvaluateTerms() is inlined. The
+   * default calls EvaluateTerms() at each column. Thread-safe.
+   */
+  virtual void EvaluateRow(int count, const double* uTerms, vtkIdType uStride, const double* vTerms,
+    double* const P[3], double* const Du[3], double* const Dv[3]);
+
+  /**
    * The second derivatives d2P/du2 (D2[0..2]), d2P/dudv (D2[3..5]) and d2P/dv2 (D2[6..8])
    * from the same terms, if the subclass knows them in closed form: returns true then. The
    * default returns false, and vtkParametricSurfaceSource differences the first derivatives
@@ -77,6 +90,39 @@ protected:
 
   /** terms[0] = cos(2 pi x), terms[1] = sin(2 pi x): the turn of the round surfaces. */
   static void EvaluateTurn(double x, double* terms);
+
+  /**
+   * EvaluateRow() for a subclass @a Function whose EvaluateTerms() is visible where this is
+   * instantiated (its own source file), so that the call is inlined. An object of a class
+   * derived from @a Function may have changed EvaluateTerms(): it gets the default, one virtual
+   * call per point.
+   */
+  template <typename Function>
+  static void EvaluateRowOf(Function& f, int count, const double* uTerms, vtkIdType uStride,
+    const double* vTerms, double* const P[3], double* const Du[3], double* const Dv[3])
+  {
+    if (typeid(f) != typeid(Function))
+    {
+      f.vtkParametricSeparableFunction::EvaluateRow(count, uTerms, uStride, vTerms, P, Du, Dv);
+      return;
+    }
+    const int numTerms = f.Function::GetNumberOfUTerms();
+    for (int k = 0; k < count; ++k)
+    {
+      double u[MaximumNumberOfTerms], p[3], d[9];
+      for (int t = 0; t < numTerms; ++t)
+      {
+        u[t] = uTerms[t * uStride + k];
+      }
+      f.Function::EvaluateTerms(u, vTerms, p, d);
+      for (int c = 0; c < 3; ++c)
+      {
+        P[c][k] = p[c];
+        Du[c][k] = d[c];
+        Dv[c][k] = d[3 + c];
+      }
+    }
+  }
 
 private:
   vtkParametricSeparableFunction(const vtkParametricSeparableFunction&) = delete;

@@ -44,6 +44,12 @@ constexpr double DegenerateTolerance2 = DegenerateTolerance * DegenerateToleranc
 // vanishing derivative's direction; the second-order difference leaves an O(h^2) error.
 constexpr double LimitStep = 1e-4;
 
+// Points are done a block of a row at a time, each quantity of the block held as an array
+// ("lanes"): the square roots and divisions of the frames then run over independent points,
+// which the processor overlaps (and the compiler vectorises).
+constexpr int Block = 64;
+using Lanes = double[Block];
+
 // Everything the per-point work needs; read-only while the threads run.
 struct Grid
 {
@@ -133,23 +139,38 @@ struct Grid
     }
   }
 
-  // The function and its unit-square derivatives at column @a col of row @a j. Separable
-  // functions work from the terms of the column and the row.
-  void EvaluatePoint(vtkIdType col, vtkIdType j, double p[3], double du[3], double dv[3]) const
+  // The function and its unit-square derivatives at columns [col, col + count) of row @a j,
+  // each component an array (p[c][k]). Separable functions do a row's points in one call.
+  void EvaluateBlock(
+    vtkIdType col, vtkIdType j, int count, Lanes p[3], Lanes du[3], Lanes dv[3]) const
   {
-    if (!this->Separable)
+    if (this->Separable)
     {
-      this->Evaluate(this->UDomain[col], this->VDomain[j], p, du, dv);
+      double* const P[3] = { p[0], p[1], p[2] };
+      double* const Du[3] = { du[0], du[1], du[2] };
+      double* const Dv[3] = { dv[0], dv[1], dv[2] };
+      this->Separable->EvaluateRow(count, this->UTerms.data() + col, this->U + 1,
+        this->VTerms.data() + j * this->NumVTerms, P, Du, Dv);
+      for (int c = 0; c < 3; ++c)
+      {
+        for (int k = 0; k < count; ++k)
+        {
+          du[c][k] *= this->UExtent;
+          dv[c][k] *= this->VExtent;
+        }
+      }
       return;
     }
-    double uTerms[vtkParametricSeparableFunction::MaximumNumberOfTerms];
-    this->ColumnTerms(col, uTerms);
-    double d[9];
-    this->Separable->EvaluateTerms(uTerms, this->VTerms.data() + j * this->NumVTerms, p, d);
-    for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < count; ++k)
     {
-      du[c] = d[c] * this->UExtent;
-      dv[c] = d[3 + c] * this->VExtent;
+      double pk[3], duk[3], dvk[3];
+      this->Evaluate(this->UDomain[col + k], this->VDomain[j], pk, duk, dvk);
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c][k] = pk[c];
+        du[c][k] = duk[c];
+        dv[c][k] = dvk[c];
+      }
     }
   }
 
@@ -340,8 +361,8 @@ bool DegenerateFrame(const Grid& g, double u, double v, const double du[3], cons
 // The change of the unit normal along u and v (Weingarten): with m = Du x Dv and
 // n = orientation m / |m|, dn = orientation (dm - (n . dm) n) / |m|, where
 // dm/du = Duu x Dv + Du x Duv and dm/dv = Duv x Dv + Du x Dvv.
-void NormalDerivatives(const double du[3], const double dv[3], const double d2[9],
-  const double n[3], double orientation, double dndu[3], double dndv[3])
+void NormalChange(const double du[3], const double dv[3], const double d2[9], const double n[3],
+  double orientation, double dndu[3], double dndv[3])
 {
   double m[3];
   Cross(du, dv, m);
@@ -379,8 +400,8 @@ void Store3(const double v[3], Out* out)
   out[2] = static_cast<Out>(v[2]);
 }
 
-// Points and point arrays of one piece; each point is computed from its own (i, j) alone,
-// so any split among threads gives the same bytes.
+// Points and point arrays of one piece, row by row in blocks of columns; each point is
+// computed from its own (i, j) alone, so any split among threads gives the same bytes.
 template <typename Real>
 struct PointWorker
 {
@@ -407,84 +428,175 @@ struct PointWorker
     this->NonFinite.Local() = 0;
   }
 
+  // The piece's point rows [begin, end).
   void operator()(vtkIdType begin, vtkIdType end)
   {
-    const Grid& g = this->G;
-    const vtkIdType rowLength = g.U + 1;
-    vtkIdType& arbitrary = this->Arbitrary.Local();
-    unsigned char& nonFinite = this->NonFinite.Local();
-    const bool frame = this->Normals || this->Tangents || this->DNdu;
-    for (vtkIdType id = begin; id < end; ++id)
+    const vtkIdType rowLength = this->G.U + 1;
+    for (vtkIdType r = begin; r < end; ++r)
     {
-      const vtkIdType col = id % rowLength;
-      const vtkIdType j = g.Rows[id / rowLength];
-      double p[3], du[3], dv[3];
-      g.EvaluatePoint(col, j, p, du, dv);
-      const double sum = p[0] + p[1] + p[2] + du[0] + du[1] + du[2] + dv[0] + dv[1] + dv[2];
-      if (!std::isfinite(sum))
+      for (vtkIdType col = 0; col < rowLength; col += Block)
       {
-        nonFinite = 1;
+        this->DoBlock(r, col, static_cast<int>(std::min<vtkIdType>(Block, rowLength - col)));
+      }
+    }
+  }
+
+  // Columns [col, col + count) of the piece's point row r.
+  void DoBlock(vtkIdType r, vtkIdType col, int count)
+  {
+    const Grid& g = this->G;
+    const vtkIdType j = g.Rows[r];
+    const vtkIdType first = r * (g.U + 1) + col;
+    Lanes p[3], du[3], dv[3];
+    g.EvaluateBlock(col, j, count, p, du, dv);
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        sum += p[c][k] + du[c][k] + dv[c][k];
+      }
+    }
+    if (!std::isfinite(sum))
+    {
+      this->NonFinite.Local() = 1;
+      return;
+    }
+    Store(p, first, count, this->Points);
+    if (this->DPdu)
+    {
+      Store(du, first, count, this->DPdu);
+      Store(dv, first, count, this->DPdv);
+    }
+    if (this->TCoords)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        this->TCoords[2 * (first + k)] = g.S[col + k];
+        this->TCoords[2 * (first + k) + 1] = g.T[j];
+      }
+    }
+    if (this->Normals || this->Tangents || this->DNdu)
+    {
+      this->Frames(j, col, first, count, du, dv);
+    }
+  }
+
+  // The normals and tangents of the block, and with GenerateDerivatives the change of the
+  // normal.
+  void Frames(
+    vtkIdType j, vtkIdType col, vtkIdType first, int count, const Lanes du[3], const Lanes dv[3])
+  {
+    const Grid& g = this->G;
+    Lanes n[3], t[3];
+    Lanes regular; // 1 where the derivatives span a plane, 0 elsewhere
+    // Plain pointers to each component and the settings in locals: the vectoriser follows them
+    // where it loses track of rows of two-dimensional arrays and of members that stores might
+    // change.
+    const double *ux = du[0], *uy = du[1], *uz = du[2], *vx = dv[0], *vy = dv[1], *vz = dv[2];
+    double *nx = n[0], *ny = n[1], *nz = n[2], *tx = t[0], *ty = t[1], *tz = t[2];
+    const double orientation = g.Orientation, tangentSign = g.TangentSign;
+    for (int k = 0; k < count; ++k)
+    {
+      // N = orientation (Du x Dv) / |Du x Dv|; N is orthogonal to Du already, so the shared
+      // frame (MakeTangentFrame) reduces to T = Du / |Du| times the sign of the s repeat, with
+      // a handedness that is constant wherever the derivatives span a plane.
+      const double cx = uy[k] * vz[k] - uz[k] * vy[k];
+      const double cy = uz[k] * vx[k] - ux[k] * vz[k];
+      const double cz = ux[k] * vy[k] - uy[k] * vx[k];
+      const double a2 = ux[k] * ux[k] + uy[k] * uy[k] + uz[k] * uz[k];
+      const double b2 = vx[k] * vx[k] + vy[k] * vy[k] + vz[k] * vz[k];
+      const double c2 = cx * cx + cy * cy + cz * cz;
+      const bool ok = c2 > DegenerateTolerance2 * a2 * b2 && a2 > DegenerateTolerance2 * b2 &&
+        b2 > DegenerateTolerance2 * a2 && c2 <= std::numeric_limits<double>::max();
+      regular[k] = ok ? 1.0 : 0.0;
+      const double scale = orientation / std::sqrt(ok ? c2 : 1.0);
+      const double tangentScale = tangentSign / std::sqrt(ok ? a2 : 1.0);
+      nx[k] = cx * scale;
+      ny[k] = cy * scale;
+      nz[k] = cz * scale;
+      tx[k] = ux[k] * tangentScale;
+      ty[k] = uy[k] * tangentScale;
+      tz[k] = uz[k] * tangentScale;
+    }
+    Lanes w;
+    vtkIdType& arbitrary = this->Arbitrary.Local();
+    for (int k = 0; k < count; ++k)
+    {
+      w[k] = g.Handedness;
+      if (regular[k] != 0.0)
+      {
         continue;
       }
-      Store3(p, this->Points + 3 * id);
-      if (this->DPdu)
-      {
-        Store3(du, this->DPdu + 3 * id);
-        Store3(dv, this->DPdv + 3 * id);
-      }
-      if (this->TCoords)
-      {
-        this->TCoords[2 * id] = g.S[col];
-        this->TCoords[2 * id + 1] = g.T[j];
-      }
-      if (!frame)
-      {
-        continue;
-      }
-      double n[3], t[4], a2;
-      const bool regular = RegularNormal(du, dv, g.Orientation, n, a2);
-      if (regular)
-      {
-        // N is orthogonal to Du already, so the shared frame (MakeTangentFrame) reduces to
-        // T = Du/|Du| times the sign of the s repeat, with a handedness that is constant
-        // wherever the derivatives span a plane.
-        const double tangentScale = g.TangentSign / std::sqrt(a2);
-        t[0] = du[0] * tangentScale;
-        t[1] = du[1] * tangentScale;
-        t[2] = du[2] * tangentScale;
-        t[3] = g.Handedness;
-      }
-      else if (!DegenerateFrame(g, g.UUnit[col], g.VUnit[j], du, dv, n, t))
+      double nk[3], tk[4];
+      const double duk[3] = { du[0][k], du[1][k], du[2][k] };
+      const double dvk[3] = { dv[0][k], dv[1][k], dv[2][k] };
+      if (!DegenerateFrame(g, g.UUnit[col + k], g.VUnit[j], duk, dvk, nk, tk))
       {
         ++arbitrary;
       }
-      if (this->Normals)
+      for (int c = 0; c < 3; ++c)
       {
-        Store3(n, this->Normals + 3 * id);
+        n[c][k] = nk[c];
+        t[c][k] = tk[c];
       }
-      if (this->Tangents)
+      w[k] = tk[3];
+    }
+    if (this->Normals)
+    {
+      Store(n, first, count, this->Normals);
+    }
+    if (this->Tangents)
+    {
+      for (int k = 0; k < count; ++k)
       {
-        Store3(t, this->Tangents + 4 * id);
-        this->Tangents[4 * id + 3] = static_cast<float>(t[3]);
+        float* tangent = this->Tangents + 4 * (first + k);
+        tangent[0] = static_cast<float>(t[0][k]);
+        tangent[1] = static_cast<float>(t[1][k]);
+        tangent[2] = static_cast<float>(t[2][k]);
+        tangent[3] = static_cast<float>(w[k]);
       }
-      if (this->DNdu)
+    }
+    if (this->DNdu)
+    {
+      this->NormalDerivatives(j, col, first, count, du, dv, n, regular);
+    }
+  }
+
+  // The change of the normal along u and v (GenerateDerivatives). Where the derivatives do
+  // not span a plane (a pole), no derivative of the normal exists: zero.
+  void NormalDerivatives(vtkIdType j, vtkIdType col, vtkIdType first, int count, const Lanes du[3],
+    const Lanes dv[3], const Lanes n[3], const Lanes regular)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      double dndu[3] = { 0.0, 0.0, 0.0 }, dndv[3] = { 0.0, 0.0, 0.0 };
+      if (regular[k] != 0.0)
       {
-        // Where the derivatives do not span a plane (a pole), no derivative of the normal
-        // along u or v exists: zero.
-        double dndu[3] = { 0.0, 0.0, 0.0 }, dndv[3] = { 0.0, 0.0, 0.0 };
-        if (regular)
+        const double duk[3] = { du[0][k], du[1][k], du[2][k] };
+        const double dvk[3] = { dv[0][k], dv[1][k], dv[2][k] };
+        const double nk[3] = { n[0][k], n[1][k], n[2][k] };
+        double d2[9];
+        this->G.SecondDerivatives(col + k, j, d2);
+        NormalChange(duk, dvk, d2, nk, this->G.Orientation, dndu, dndv);
+        if (!std::isfinite(Dot(dndu, dndu) + Dot(dndv, dndv)))
         {
-          double d2[9];
-          g.SecondDerivatives(col, j, d2);
-          NormalDerivatives(du, dv, d2, n, g.Orientation, dndu, dndv);
-          if (!std::isfinite(Dot(dndu, dndu) + Dot(dndv, dndv)))
-          {
-            nonFinite = 1;
-          }
+          this->NonFinite.Local() = 1;
         }
-        Store3(dndu, this->DNdu + 3 * id);
-        Store3(dndv, this->DNdv + 3 * id);
       }
+      Store3(dndu, this->DNdu + 3 * (first + k));
+      Store3(dndv, this->DNdv + 3 * (first + k));
+    }
+  }
+
+  template <typename Out>
+  static void Store(const Lanes v[3], vtkIdType first, int count, Out* out)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      out[3 * (first + k)] = static_cast<Out>(v[0][k]);
+      out[3 * (first + k) + 1] = static_cast<Out>(v[1][k]);
+      out[3 * (first + k) + 2] = static_cast<Out>(v[2][k]);
     }
   }
 
@@ -689,7 +801,8 @@ Outcome GeneratePoints(
   }
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
-  vtkSMPTools::For(0, numPoints, 4096, worker);
+  const vtkIdType numRows = static_cast<vtkIdType>(g.Rows.size());
+  vtkSMPTools::For(0, numRows, std::max<vtkIdType>(1, 4096 / (g.U + 1)), worker);
 
   for (unsigned char bad : worker.NonFinite)
   {
