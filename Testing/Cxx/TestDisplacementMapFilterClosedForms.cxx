@@ -1,5 +1,5 @@
 // vtkDisplacementMapFilter against truths computed here from the inputs alone:
-// - a pole where two hundred points coincide, each with its own texture coordinate: the pole
+// - a pole where 201 points coincide, each with its own texture coordinate: the pole
 //   moves by the mean of every member's own displacement, sampled by an independent
 //   transcription of OpenGL's bilinear rule;
 // - Mesh normals orient each displaced polygon as the input normals of its points, whatever
