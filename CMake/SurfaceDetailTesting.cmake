@@ -3,7 +3,7 @@
 #   surfacedetail_add_gtest(<exe> SOURCES <src>... [MODULES <module>...] [LABELS <label>]
 #                           [FIXTURES_REQUIRED <fixture>] [SANITIZER_ENVIRONMENT <var=value>])
 #     A GoogleTest program; every TEST in it becomes its own ctest test.
-#     SANITIZER_ENVIRONMENT: one variable set for its tests in the sanitizer build only.
+#     SANITIZER_ENVIRONMENT: one variable set for its tests in the AddressSanitizer build only.
 #
 #   surfacedetail_add_image_test(<TestName> [SOURCES <src>...] [EXECUTABLE <exe>]
 #                                [MODULES <module>...] [ARGS <arg>...]
@@ -20,9 +20,9 @@
 #
 # Floating-point exceptions stay off in these programs: Mesa's llvmpipe raises SIGFPE.
 
-# Programs that render run without LeakSanitizer in the sanitizer build: Mesa unloads its
-# driver at exit, and the driver's leaked caches then have no module to be named by (and so
-# suppressed); unwinding slowly enough to reach a named frame makes llvmpipe's runs take
+# Programs that render run without LeakSanitizer in the AddressSanitizer build: Mesa unloads
+# its driver at exit, and the driver's leaked caches then have no module to be named by (and
+# so suppressed); unwinding slowly enough to reach a named frame makes llvmpipe's runs take
 # minutes. AddressSanitizer and UBSan stay on.
 set(surfacedetail_rendering_asan_options "ASAN_OPTIONS=detect_leaks=0")
 
@@ -60,9 +60,9 @@ function(surfacedetail_add_gtest exe)
   if(arg_FIXTURES_REQUIRED)
     list(APPEND properties FIXTURES_REQUIRED ${arg_FIXTURES_REQUIRED})
   endif()
-  if(SURFACEDETAIL_SANITIZE AND arg_LABELS STREQUAL "rendering")
+  if(SURFACEDETAIL_SANITIZE_ADDRESS AND arg_LABELS STREQUAL "rendering")
     list(APPEND properties ENVIRONMENT ${surfacedetail_rendering_asan_options})
-  elseif(SURFACEDETAIL_SANITIZE AND arg_SANITIZER_ENVIRONMENT)
+  elseif(SURFACEDETAIL_SANITIZE_ADDRESS AND arg_SANITIZER_ENVIRONMENT)
     list(APPEND properties ENVIRONMENT ${arg_SANITIZER_ENVIRONMENT})
   endif()
   gtest_discover_tests(${exe}
@@ -90,7 +90,7 @@ function(surfacedetail_add_image_test name)
       -V "${surfacedetail_baseline_dir}/${arg_BASELINE}.png"
       -T "${surfacedetail_temporary_dir}")
   set_tests_properties(${name} PROPERTIES LABELS "image" SKIP_RETURN_CODE 125)
-  if(SURFACEDETAIL_SANITIZE)
+  if(SURFACEDETAIL_SANITIZE_ADDRESS)
     set_tests_properties(${name} PROPERTIES ENVIRONMENT ${surfacedetail_rendering_asan_options})
   endif()
   if(arg_EXPECT_MISMATCH)

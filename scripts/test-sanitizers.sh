@@ -9,7 +9,7 @@ export BUILD_DIR="${BUILD_DIR:-$src/build-sanitizers}"
 export CC=clang CXX=clang++
 # Optimised, so that the threaded loops run as they do in a release build, with the frame
 # pointers and line tables that make the reports readable.
-export CMAKE_ARGS="${CMAKE_ARGS:-} -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSURFACEDETAIL_SANITIZE=ON \
+export CMAKE_ARGS="${CMAKE_ARGS:-} -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSURFACEDETAIL_SANITIZE=address \
   -DSURFACEDETAIL_BUILD_BENCHMARKS=OFF -DSURFACEDETAIL_BUILD_EXAMPLES=OFF \
   -DCMAKE_COMPILE_WARNING_AS_ERROR=ON -DSURFACEDETAIL_WRAP_PYTHON=OFF"
 # No Python wrapping here: an AddressSanitizer-built extension module cannot be loaded by
