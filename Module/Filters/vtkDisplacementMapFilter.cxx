@@ -88,40 +88,43 @@ struct Displacer
   double Midlevel;
   int Mode;
 
-  // The heights and slopes of the points [first, first + count) into @a h, @a hs, @a ht.
-  void Sample(vtkIdType first, int count, Lanes h, Lanes hs, Lanes ht) const
+  // The heights and slopes of the block's points, in D, Ds, Dt.
+  void Sample(PointBlock& b) const
   {
-    Lanes s, t;
     const int nc = this->In.TCoordsNC;
-    const R* tc = this->In.TCoords + nc * first;
-    for (int k = 0; k < count; ++k)
+    const R* tc = this->In.TCoords;
+    for (int k = 0; k < b.Count; ++k)
     {
-      s[k] = tc[nc * k];
-      t[k] = tc[nc * k + 1];
+      b.S[k] = tc[nc * b.Ids[k]];
+      b.T[k] = tc[nc * b.Ids[k] + 1];
     }
-    this->Map.Sample(count, s, t, h, hs, ht);
+    this->Map.Sample(b.Count, b.S, b.T, b.D, b.Ds, b.Dt);
   }
 
-  // The displacement d = Scale (h - Midlevel) and its slopes, finite whatever the scale.
-  void Displacement(double h, double hs, double ht, double& d, double& ds, double& dt) const
+  // The heights in D, Ds, Dt made displacements d = Scale (h - Midlevel) and their slopes,
+  // finite whatever the scale.
+  void Displacements(PointBlock& b) const
   {
-    d = Finite(this->Scale * (h - this->Midlevel));
-    ds = Finite(this->Scale * hs);
-    dt = Finite(this->Scale * ht);
+    const double scale = this->Scale, midlevel = this->Midlevel;
+    for (int k = 0; k < b.Count; ++k)
+    {
+      b.D[k] = Finite(scale * (b.D[k] - midlevel));
+      b.Ds[k] = Finite(scale * b.Ds[k]);
+      b.Dt[k] = Finite(scale * b.Dt[k]);
+    }
   }
 
   // Point @a i's own offset, d n (for the seams' mean).
   void Displacement(vtkIdType i, double offset[3]) const
   {
-    double h, hs, ht, d, ds, dt;
-    Lanes n[3];
-    this->Sample(i, 1, &h, &hs, &ht);
-    this->Displacement(h, hs, ht, d, ds, dt);
-    UnitNormals(this->In, &i, 1, n);
-    for (int j = 0; j < 3; ++j)
-    {
-      offset[j] = d * n[j][0];
-    }
+    PointBlock b;
+    b.Span(i, 1);
+    this->Sample(b);
+    this->Displacements(b);
+    UnitNormals(this->In, b);
+    offset[0] = b.D[0] * b.Nx[0];
+    offset[1] = b.D[0] * b.Ny[0];
+    offset[2] = b.D[0] * b.Nz[0];
   }
 
   // Point @a i moved by @a offset. Adding +0 would turn -0 into +0: no displacement leaves the
@@ -139,25 +142,27 @@ struct Displacer
   // normal and tangent.
   void InputNormal(vtkIdType i, double n[3]) const
   {
-    Lanes lanes[3];
-    UnitNormals(this->In, &i, 1, lanes);
-    for (int j = 0; j < 3; ++j)
-    {
-      n[j] = lanes[j][0];
-    }
+    PointBlock b;
+    b.Span(i, 1);
+    UnitNormals(this->In, b);
+    n[0] = b.Nx[0];
+    n[1] = b.Ny[0];
+    n[2] = b.Nz[0];
   }
 
   void OutputNormal(vtkIdType i, double m[3]) const { Load3(this->Out.Normals, i, 1.0, m); }
 
   void WriteNormalAndTangent(vtkIdType i, const double n[3], const double m[3]) const
   {
-    Lanes nl[3], ml[3];
-    for (int j = 0; j < 3; ++j)
-    {
-      nl[j][0] = n[j];
-      ml[j][0] = m[j];
-    }
-    WriteNormalsAndTangents(this->In, this->Out, &i, 1, nl, ml);
+    PointBlock b;
+    b.Span(i, 1);
+    b.Nx[0] = n[0];
+    b.Ny[0] = n[1];
+    b.Nz[0] = n[2];
+    b.Mx[0] = m[0];
+    b.My[0] = m[1];
+    b.Mz[0] = m[2];
+    WriteNormalsAndTangents(this->In, this->Out, b);
   }
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -180,35 +185,23 @@ struct Displacer
   template <bool Analytic, bool Exact>
   void Displace(vtkIdType begin, vtkIdType end) const
   {
-    vtkIdType ids[Block];
-    Lanes h, hs, ht, n[3], m[3];
+    PointBlock b;
     for (vtkIdType first = begin; first < end; first += Block)
     {
-      const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
-      std::iota(ids, ids + count, first);
-      this->Sample(first, count, h, hs, ht);
-      UnitNormals(this->In, ids, count, n);
-      for (int k = 0; k < count; ++k)
+      b.Span(first, static_cast<int>(std::min<vtkIdType>(Block, end - first)));
+      this->Sample(b);
+      this->Displacements(b);
+      UnitNormals(this->In, b);
+      for (int k = 0; k < b.Count; ++k)
       {
-        double d, ds, dt;
-        this->Displacement(h[k], hs[k], ht[k], d, ds, dt);
-        const double nk[3] = { n[0][k], n[1][k], n[2][k] };
-        const double offset[3] = { d * nk[0], d * nk[1], d * nk[2] };
-        this->WritePoint(ids[k], offset);
-        if (Analytic)
-        {
-          PointDerivatives b;
-          double mk[3];
-          Derivatives(this->In, this->Near, ids[k], Exact, b);
-          Direction<Exact>(nk, b, d, ds, dt, mk);
-          m[0][k] = mk[0];
-          m[1][k] = mk[1];
-          m[2][k] = mk[2];
-        }
+        const double offset[3] = { b.D[k] * b.Nx[k], b.D[k] * b.Ny[k], b.D[k] * b.Nz[k] };
+        this->WritePoint(b.Ids[k], offset);
       }
       if (Analytic)
       {
-        WriteNormalsAndTangents(this->In, this->Out, ids, count, n, m);
+        Derivatives(this->In, this->Near, Exact, b);
+        Directions<Exact>(b);
+        WriteNormalsAndTangents(this->In, this->Out, b);
       }
     }
   }
@@ -218,22 +211,20 @@ struct Displacer
   void MeshNormals(
     const vtkDisplacement::MeshNormals<R, Id>& mesh, vtkIdType begin, vtkIdType end) const
   {
-    vtkIdType ids[Block];
-    Lanes n[3], m[3];
+    PointBlock b;
     for (vtkIdType first = begin; first < end; first += Block)
     {
-      const int count = static_cast<int>(std::min<vtkIdType>(Block, end - first));
-      std::iota(ids, ids + count, first);
-      UnitNormals(this->In, ids, count, n);
-      for (int k = 0; k < count; ++k)
+      b.Span(first, static_cast<int>(std::min<vtkIdType>(Block, end - first)));
+      UnitNormals(this->In, b);
+      for (int k = 0; k < b.Count; ++k)
       {
-        double mk[3];
-        mesh.Sum(ids[k], mk);
-        m[0][k] = mk[0];
-        m[1][k] = mk[1];
-        m[2][k] = mk[2];
+        double m[3];
+        mesh.Sum(b.Ids[k], m);
+        b.Mx[k] = m[0];
+        b.My[k] = m[1];
+        b.Mz[k] = m[2];
       }
-      WriteNormalsAndTangents(this->In, this->Out, ids, count, n, m);
+      WriteNormalsAndTangents(this->In, this->Out, b);
     }
   }
 };

@@ -86,39 +86,84 @@ void Load3(const R* a, vtkIdType i, double scale, double v[3])
 /// point after another would wait for each result in turn.
 using Lanes = double[Block];
 
-/// Scales each vector @a v to unit length where its length is Usable and marks @a ok; leaves
-/// it as it is elsewhere.
-inline void MakeUnit(int count, Lanes v[3], bool ok[Block])
+/// The passes work on blocks of points, each quantity of the block held as an array over it
+/// ("lanes"). The square roots and divisions that make vectors unit then run over independent
+/// points, which the processor overlaps (and the compiler vectorises), where one point after
+/// another would wait for each result in turn.
+using Lanes = double[Block];
+
+/**
+ * What the passes know about a block of points, as lanes. One object holds them all so that
+ * the compiler sees that its arrays never overlap and vectorises the loops over them without
+ * run-time checks; flags are doubles (1 or 0), which it can mix with the other lanes.
+ */
+struct PointBlock
 {
-  for (int k = 0; k < count; ++k)
+  vtkIdType Ids[Block];
+  int Count = 0;
+  Lanes S, T;                // texture coordinates
+  Lanes D, Ds, Dt;           // the height, then the displacement d, and their slopes
+  Lanes Nx, Ny, Nz;          // unit input normals, zero where one has no direction
+  Lanes Psx, Psy, Psz;       // P_s
+  Lanes Ptx, Pty, Ptz;       // P_t
+  Lanes Nsx, Nsy, Nsz;       // n_s (Exact)
+  Lanes Ntx, Nty, Ntz;       // n_t (Exact)
+  Lanes Mx, My, Mz;          // the output normals
+  Lanes Tx, Ty, Tz;          // the output tangents
+  Lanes Ok;                  // a flag per point for the step at hand
+
+  /// The points [first, first + count).
+  void Span(vtkIdType first, int count)
   {
-    const double length = std::sqrt(v[0][k] * v[0][k] + v[1][k] * v[1][k] + v[2][k] * v[2][k]);
-    ok[k] = Usable(length);
-    const double inv = 1.0 / (ok[k] ? length : 1.0);
-    v[0][k] *= inv;
-    v[1][k] *= inv;
-    v[2][k] *= inv;
+    this->Count = count;
+    for (int k = 0; k < count; ++k)
+    {
+      this->Ids[k] = first + k;
+    }
+  }
+};
+
+/// Loads the 3-vectors @a a of the block's points into @a x, @a y, @a z, times @a scale.
+template <typename R>
+void Gather3(
+  const R* a, const PointBlock& b, double scale, double* x, double* y, double* z)
+{
+  for (int k = 0; k < b.Count; ++k)
+  {
+    const R* p = a + 3 * b.Ids[k];
+    x[k] = scale * p[0];
+    y[k] = scale * p[1];
+    z[k] = scale * p[2];
   }
 }
 
-/// The unit input normals @a n of the points @a ids, zero where one has no direction.
-template <typename R>
-void UnitNormals(const Surface<R>& in, const vtkIdType* ids, int count, Lanes n[3])
+/// Scales each vector (@a x, @a y, @a z) to unit length where its length is Usable (@a ok 1),
+/// and leaves it as it is elsewhere (@a ok 0).
+inline void MakeUnit(int count, double* x, double* y, double* z, double* ok)
 {
   for (int k = 0; k < count; ++k)
   {
-    const R* v = in.Normals + 3 * ids[k];
-    n[0][k] = v[0];
-    n[1][k] = v[1];
-    n[2][k] = v[2];
+    const double length = std::sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]);
+    const bool usable = length > 0.0 && length <= std::numeric_limits<double>::max();
+    ok[k] = usable ? 1.0 : 0.0;
+    const double inv = 1.0 / (usable ? length : 1.0);
+    x[k] *= inv;
+    y[k] *= inv;
+    z[k] *= inv;
   }
-  bool ok[Block];
-  MakeUnit(count, n, ok);
-  for (int k = 0; k < count; ++k)
+}
+
+/// The unit input normals of the block's points, zero where one has no direction.
+template <typename R>
+void UnitNormals(const Surface<R>& in, PointBlock& b)
+{
+  Gather3(in.Normals, b, 1.0, b.Nx, b.Ny, b.Nz);
+  MakeUnit(b.Count, b.Nx, b.Ny, b.Nz, b.Ok);
+  for (int k = 0; k < b.Count; ++k)
   {
-    n[0][k] = ok[k] ? n[0][k] : 0.0;
-    n[1][k] = ok[k] ? n[1][k] : 0.0;
-    n[2][k] = ok[k] ? n[2][k] : 0.0;
+    b.Nx[k] = b.Ok[k] != 0.0 ? b.Nx[k] : 0.0;
+    b.Ny[k] = b.Ok[k] != 0.0 ? b.Ny[k] : 0.0;
+    b.Nz[k] = b.Ok[k] != 0.0 ? b.Nz[k] : 0.0;
   }
 }
 
@@ -230,64 +275,151 @@ void Direction(const double n[3], PointDerivatives& b, double d, double ds, doub
 }
 
 /**
- * Normalises the directions @a m of the points @a ids and writes them as their normals (the
- * unit input normal @a n where a direction is degenerate, +z where that is zero too), then
- * their tangents re-orthogonalised to them with the handedness kept.
+ * Direction over a block of points: the directions M from the unit input normals, the
+ * displacements and their slopes. One loop evaluates the formulas as they stand, which the
+ * compiler vectorises; the few points where a product overflows (or an input is not finite)
+ * are then evaluated again by Direction, which scales its vectors first.
+ */
+template <bool Exact>
+void Directions(PointBlock& b)
+{
+  constexpr double most = std::numeric_limits<double>::max();
+  for (int k = 0; k < b.Count; ++k)
+  {
+    const double ax = b.Nx[k], ay = b.Ny[k], az = b.Nz[k];
+    // P_s and P_t across n.
+    const double ps = ax * b.Psx[k] + ay * b.Psy[k] + az * b.Psz[k];
+    const double sx = b.Psx[k] - ps * ax, sy = b.Psy[k] - ps * ay, sz = b.Psz[k] - ps * az;
+    const double pt = ax * b.Ptx[k] + ay * b.Pty[k] + az * b.Ptz[k];
+    const double tx = b.Ptx[k] - pt * ax, ty = b.Pty[k] - pt * ay, tz = b.Ptz[k] - pt * az;
+    const double cx = sy * tz - sz * ty, cy = sz * tx - sx * tz, cz = sx * ty - sy * tx;
+    const double area = ax * cx + ay * cy + az * cz;
+    const double size2 = (sx * sx + sy * sy + sz * sz) * (tx * tx + ty * ty + tz * tz);
+    const bool regular = area * area > 1e-20 * size2;
+    const double sign = area < 0.0 ? -1.0 : 1.0;
+    double x, y, z;
+    if (Exact)
+    {
+      // (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t), with n_s and n_t across n.
+      const double d = b.D[k];
+      const double ns = ax * b.Nsx[k] + ay * b.Nsy[k] + az * b.Nsz[k];
+      const double nt = ax * b.Ntx[k] + ay * b.Nty[k] + az * b.Ntz[k];
+      const double qsx = sign * (sx + b.Ds[k] * ax + d * (b.Nsx[k] - ns * ax));
+      const double qsy = sign * (sy + b.Ds[k] * ay + d * (b.Nsy[k] - ns * ay));
+      const double qsz = sign * (sz + b.Ds[k] * az + d * (b.Nsz[k] - ns * az));
+      const double qtx = tx + b.Dt[k] * ax + d * (b.Ntx[k] - nt * ax);
+      const double qty = ty + b.Dt[k] * ay + d * (b.Nty[k] - nt * ay);
+      const double qtz = tz + b.Dt[k] * az + d * (b.Ntz[k] - nt * az);
+      x = qsy * qtz - qsz * qty;
+      y = qsz * qtx - qsx * qtz;
+      z = qsx * qty - qsy * qtx;
+    }
+    else
+    {
+      // (n . (P_s x P_t)) n + d_s (n x P_t) - d_t (n x P_s)
+      const double a = sign * area, s = sign * b.Ds[k], t = sign * b.Dt[k];
+      x = a * ax + s * (ay * tz - az * ty) - t * (ay * sz - az * sy);
+      y = a * ay + s * (az * tx - ax * tz) - t * (az * sx - ax * sz);
+      z = a * az + s * (ax * ty - ay * tx) - t * (ax * sy - ay * sx);
+    }
+    const double m2 = x * x + y * y + z * z;
+    b.Ok[k] = (size2 <= most ? 1.0 : 0.0) * (m2 <= most ? 1.0 : 0.0);
+    b.Mx[k] = regular ? x : ax;
+    b.My[k] = regular ? y : ay;
+    b.Mz[k] = regular ? z : az;
+  }
+  for (int k = 0; k < b.Count; ++k)
+  {
+    if (b.Ok[k] == 0.0)
+    {
+      PointDerivatives p;
+      const double n[3] = { b.Nx[k], b.Ny[k], b.Nz[k] };
+      const double ps[3] = { b.Psx[k], b.Psy[k], b.Psz[k] };
+      const double pt[3] = { b.Ptx[k], b.Pty[k], b.Ptz[k] };
+      std::copy_n(ps, 3, p.Ps);
+      std::copy_n(pt, 3, p.Pt);
+      if (Exact)
+      {
+        const double ns[3] = { b.Nsx[k], b.Nsy[k], b.Nsz[k] };
+        const double nt[3] = { b.Ntx[k], b.Nty[k], b.Ntz[k] };
+        std::copy_n(ns, 3, p.Ns);
+        std::copy_n(nt, 3, p.Nt);
+      }
+      double m[3];
+      Direction<Exact>(n, p, b.D[k], b.Ds[k], b.Dt[k], m);
+      b.Mx[k] = m[0];
+      b.My[k] = m[1];
+      b.Mz[k] = m[2];
+    }
+  }
+}
+
+/**
+ * Normalises the directions M of the block's points and writes them as their normals (the
+ * unit input normal where a direction is degenerate, +z where that is zero too), then their
+ * tangents re-orthogonalised to them with the handedness kept.
  */
 template <typename R>
-void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, const vtkIdType* ids,
-  int count, const Lanes n[3], Lanes m[3])
+void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, PointBlock& b)
 {
-  bool ok[Block];
-  MakeUnit(count, m, ok);
+  const int count = b.Count;
+  MakeUnit(count, b.Mx, b.My, b.Mz, b.Ok);
   for (int k = 0; k < count; ++k)
   {
-    const bool none = n[0][k] == 0.0 && n[1][k] == 0.0 && n[2][k] == 0.0;
-    m[0][k] = ok[k] ? m[0][k] : n[0][k];
-    m[1][k] = ok[k] ? m[1][k] : n[1][k];
-    m[2][k] = ok[k] ? m[2][k] : (none ? 1.0 : n[2][k]);
+    const bool none = b.Nx[k] == 0.0 && b.Ny[k] == 0.0 && b.Nz[k] == 0.0;
+    b.Mx[k] = b.Ok[k] != 0.0 ? b.Mx[k] : b.Nx[k];
+    b.My[k] = b.Ok[k] != 0.0 ? b.My[k] : b.Ny[k];
+    b.Mz[k] = b.Ok[k] != 0.0 ? b.Mz[k] : (none ? 1.0 : b.Nz[k]);
   }
+  R* normals = out.Normals;
   for (int k = 0; k < count; ++k)
   {
-    R* normal = out.Normals + 3 * ids[k];
-    normal[0] = static_cast<R>(m[0][k]);
-    normal[1] = static_cast<R>(m[1][k]);
-    normal[2] = static_cast<R>(m[2][k]);
+    R* normal = normals + 3 * b.Ids[k];
+    normal[0] = static_cast<R>(b.Mx[k]);
+    normal[1] = static_cast<R>(b.My[k]);
+    normal[2] = static_cast<R>(b.Mz[k]);
   }
   if (!out.Tangents)
   {
     return;
   }
   const int nc = in.TangentsNC;
-  Lanes t[3];
+  const R* tangents = in.Tangents;
   for (int k = 0; k < count; ++k)
   {
-    const R* ti = in.Tangents + nc * ids[k];
-    const double along = m[0][k] * ti[0] + m[1][k] * ti[1] + m[2][k] * ti[2];
-    t[0][k] = ti[0] - along * m[0][k];
-    t[1][k] = ti[1] - along * m[1][k];
-    t[2][k] = ti[2] - along * m[2][k];
+    const R* ti = tangents + nc * b.Ids[k];
+    b.Tx[k] = ti[0];
+    b.Ty[k] = ti[1];
+    b.Tz[k] = ti[2];
   }
-  MakeUnit(count, t, ok);
   for (int k = 0; k < count; ++k)
   {
-    R* tangent = out.Tangents + nc * ids[k];
-    if (!ok[k])
+    const double along = b.Mx[k] * b.Tx[k] + b.My[k] * b.Ty[k] + b.Mz[k] * b.Tz[k];
+    b.Tx[k] -= along * b.Mx[k];
+    b.Ty[k] -= along * b.My[k];
+    b.Tz[k] -= along * b.Mz[k];
+  }
+  MakeUnit(count, b.Tx, b.Ty, b.Tz, b.Ok);
+  R* outTangents = out.Tangents;
+  for (int k = 0; k < count; ++k)
+  {
+    if (b.Ok[k] == 0.0)
     {
       // No direction left across the normal: any unit vector orthogonal to it.
-      const double mk[3] = { m[0][k], m[1][k], m[2][k] }, zero[3] = { 0.0, 0.0, 0.0 };
+      const double m[3] = { b.Mx[k], b.My[k], b.Mz[k] }, zero[3] = { 0.0, 0.0, 0.0 };
       double frame[4];
-      vtkSurfaceDetail::MakeTangentFrame(mk, zero, zero, frame);
-      t[0][k] = frame[0];
-      t[1][k] = frame[1];
-      t[2][k] = frame[2];
+      vtkSurfaceDetail::MakeTangentFrame(m, zero, zero, frame);
+      b.Tx[k] = frame[0];
+      b.Ty[k] = frame[1];
+      b.Tz[k] = frame[2];
     }
-    tangent[0] = static_cast<R>(t[0][k]);
-    tangent[1] = static_cast<R>(t[1][k]);
-    tangent[2] = static_cast<R>(t[2][k]);
+    R* tangent = outTangents + nc * b.Ids[k];
+    tangent[0] = static_cast<R>(b.Tx[k]);
+    tangent[1] = static_cast<R>(b.Ty[k]);
+    tangent[2] = static_cast<R>(b.Tz[k]);
     if (nc == 4)
     {
-      tangent[3] = in.Tangents[4 * ids[k] + 3];
+      tangent[3] = tangents[4 * b.Ids[k] + 3];
     }
   }
 }
@@ -386,27 +518,45 @@ void Fit(const Surface<R>& in, const Neighbours<Id>& near, vtkIdType i, bool wan
 }
 
 /**
- * P_s, P_t and (Exact) n_s, n_t of point @a i: from dPdu/dPdv (and dNdu/dNdv) scaled by the
- * map from their parameters to the texture coordinates, else fitted to the neighbours.
+ * P_s, P_t and (Exact) n_s, n_t of the block's points: from dPdu/dPdv (and dNdu/dNdv) scaled
+ * by the map from their parameters to the texture coordinates, else fitted to the neighbours.
  */
 template <typename R, typename Id>
-void Derivatives(
-  const Surface<R>& in, const Neighbours<Id>& near, vtkIdType i, bool exact, PointDerivatives& b)
+void Derivatives(const Surface<R>& in, const Neighbours<Id>& near, bool exact, PointBlock& b)
 {
   const bool wantP = !in.DPdu, wantN = exact && !in.DNdu;
-  if (wantP || wantN)
-  {
-    Fit(in, near, i, wantP, wantN, b);
-  }
   if (!wantP)
   {
-    Load3(in.DPdu, i, in.DerivativeScale[0], b.Ps);
-    Load3(in.DPdv, i, in.DerivativeScale[1], b.Pt);
+    Gather3(in.DPdu, b, in.DerivativeScale[0], b.Psx, b.Psy, b.Psz);
+    Gather3(in.DPdv, b, in.DerivativeScale[1], b.Ptx, b.Pty, b.Ptz);
   }
   if (exact && !wantN)
   {
-    Load3(in.DNdu, i, in.DerivativeScale[0], b.Ns);
-    Load3(in.DNdv, i, in.DerivativeScale[1], b.Nt);
+    Gather3(in.DNdu, b, in.DerivativeScale[0], b.Nsx, b.Nsy, b.Nsz);
+    Gather3(in.DNdv, b, in.DerivativeScale[1], b.Ntx, b.Nty, b.Ntz);
+  }
+  for (int k = 0; (wantP || wantN) && k < b.Count; ++k)
+  {
+    PointDerivatives p;
+    Fit(in, near, b.Ids[k], wantP, wantN, p);
+    if (wantP)
+    {
+      b.Psx[k] = p.Ps[0];
+      b.Psy[k] = p.Ps[1];
+      b.Psz[k] = p.Ps[2];
+      b.Ptx[k] = p.Pt[0];
+      b.Pty[k] = p.Pt[1];
+      b.Ptz[k] = p.Pt[2];
+    }
+    if (wantN)
+    {
+      b.Nsx[k] = p.Ns[0];
+      b.Nsy[k] = p.Ns[1];
+      b.Nsz[k] = p.Ns[2];
+      b.Ntx[k] = p.Nt[0];
+      b.Nty[k] = p.Nt[1];
+      b.Ntz[k] = p.Nt[2];
+    }
   }
 }
 

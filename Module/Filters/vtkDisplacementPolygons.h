@@ -224,6 +224,45 @@ struct PointCells
 };
 
 /**
+ * A well-mixed hash of a point id (two multiply-xorshift rounds of splitmix64's finaliser),
+ * shifted up one bit: every hash and every sum of them is even, so the lowest bit is free to
+ * mark the points some polygon uses. Mixing, not a near-additive hash, is what keeps the sums
+ * at a point where several boundary fans meet (a bowtie) from cancelling by chance.
+ */
+inline std::uint64_t CornerHash(vtkIdType id)
+{
+  std::uint64_t z = static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ULL;
+  z ^= z >> 29;
+  z *= 0xBF58476D1CE4E5B9ULL;
+  return (z ^ (z >> 32)) << 1;
+}
+
+/**
+ * Adds, for each corner of the polygon @a ids of @a n corners, the hash of the next corner's
+ * point minus that of the previous one to the corner's own point's sum. @a N is the corner count
+ * where the caller knows it (the loops are then unrolled), 0 otherwise.
+ */
+template <int N, typename Id>
+void AddCornerHashes(const Id* ids, vtkIdType n, std::uint64_t* sums)
+{
+  const vtkIdType count = N > 0 ? N : n;
+  constexpr vtkIdType most = 8;
+  std::uint64_t hashes[most];
+  for (vtkIdType k = 0; k < std::min(count, most); ++k)
+  {
+    hashes[k] = CornerHash(ids[k]);
+  }
+  // Each corner's hash once; a polygon of more corners than fit hashes them twice.
+  auto at = [&](vtkIdType k) { return count <= most ? hashes[k] : CornerHash(ids[k]); };
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const std::uint64_t next = at(k + 1 < count ? k + 1 : 0);
+    const std::uint64_t previous = at(k > 0 ? k - 1 : count - 1);
+    sums[ids[k]] = (sums[ids[k]] + next - previous) | 1;
+  }
+}
+
+/**
  * The points where a seam may be. A texture seam cuts the mesh, so its duplicated points lie
  * on the mesh's boundary. Each corner adds the hash of its next point minus that of its
  * previous one to its point's sum; where every edge around a point is shared by two
@@ -236,38 +275,23 @@ template <typename Id>
 std::vector<vtkIdType> SeamCandidates(
   const Polygons<Id>& polys, const CellChunks& chunks, vtkIdType numPts)
 {
-  // splitmix64's finaliser on 63 bits (a bijection), shifted up one bit: every hash and sum is
-  // even, so the lowest bit is free to mark the points some polygon uses. A hash that mixes
-  // well, not a near-additive one, is what keeps the sums of a point where several boundary
-  // fans meet (a bowtie) from cancelling by chance.
-  auto hash = [](Id id)
-  {
-    constexpr std::uint64_t low63 = ~std::uint64_t(0) >> 1;
-    std::uint64_t z = (static_cast<std::uint64_t>(id) + 0x9E3779B97F4A7C15ULL) & low63;
-    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL) & low63;
-    z = ((z ^ (z >> 27)) * 0x94D049BB133111EBULL) & low63;
-    return (z ^ (z >> 31)) << 1;
-  };
   std::vector<std::uint64_t> sum(numPts, 0);
   std::uint64_t* sums = sum.data();
   chunks.Scatter(
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<std::uint64_t> hashes;
       for (vtkIdType cell = begin; cell < end; ++cell)
       {
         const Id* ids = polys.Points(cell);
         const vtkIdType n = polys.Size(cell);
-        hashes.resize(std::max<size_t>(hashes.size(), n));
-        for (vtkIdType k = 0; k < n; ++k)
+        // Triangles, most of every mesh, with their corner count known to the compiler.
+        if (n == 3)
         {
-          hashes[k] = hash(ids[k]);
+          AddCornerHashes<3>(ids, 3, sums);
         }
-        for (vtkIdType k = 0; k < n; ++k)
+        else
         {
-          const std::uint64_t next = hashes[k + 1 < n ? k + 1 : 0];
-          const std::uint64_t previous = hashes[k > 0 ? k - 1 : n - 1];
-          sums[ids[k]] = (sums[ids[k]] + next - previous) | 1;
+          AddCornerHashes<0>(ids, n, sums);
         }
       }
     });

@@ -133,17 +133,27 @@ private:
       : vtkSurfaceDetail::WrapIndex(i, n, this->Wrap);
   }
 
-  // The texel at wrapped indices (i, j).
-  double Texel(int i, int j) const
+  // The chosen component of the first texel of wrapped row @a j.
+  const T* Row(int j) const
   {
-    const double v =
-      this->Norm * this->Data[(static_cast<vtkIdType>(j) * this->W + i) * this->NC + this->Comp];
+    return this->Data + static_cast<vtkIdType>(j) * this->W * this->NC + this->Comp;
+  }
+
+  // A height read from the map: a non-finite one is the midlevel, and is remembered.
+  double Checked(double v) const
+  {
     if (std::is_integral<T>::value || std::isfinite(v))
     {
       return v;
     }
     this->NonFinite.store(true, std::memory_order_relaxed);
     return this->Mid;
+  }
+
+  // The texel at wrapped indices (i, j).
+  double Texel(int i, int j) const
+  {
+    return this->Checked(this->Norm * this->Row(j)[static_cast<vtkIdType>(i) * this->NC]);
   }
 
   // GL_NEAREST: the texel that contains (s,t); no slope.
@@ -167,10 +177,19 @@ private:
     double fx, fy;
     vtkSurfaceDetail::LinearTexels(s, this->W, i0, fx);
     vtkSurfaceDetail::LinearTexels(t, this->H, j0, fy);
-    const int ia = this->Wrapped(i0, this->W), ib = this->Wrapped(i0 + 1, this->W);
-    const int ja = this->Wrapped(j0, this->H), jb = this->Wrapped(j0 + 1, this->H);
-    const double a = this->Texel(ia, ja), b = this->Texel(ib, ja);
-    const double c = this->Texel(ia, jb), d = this->Texel(ib, jb);
+    const vtkIdType nc = this->NC;
+    const vtkIdType ia = nc * this->Wrapped(i0, this->W), ib = nc * this->Wrapped(i0 + 1, this->W);
+    const T* rowA = this->Row(this->Wrapped(j0, this->H));
+    const T* rowB = this->Row(this->Wrapped(j0 + 1, this->H));
+    double a = this->Norm * rowA[ia], b = this->Norm * rowA[ib];
+    double c = this->Norm * rowB[ia], d = this->Norm * rowB[ib];
+    if (!std::is_integral<T>::value && !std::isfinite(a + b + c + d))
+    {
+      a = this->Checked(a);
+      b = this->Checked(b);
+      c = this->Checked(c);
+      d = this->Checked(d);
+    }
     const double bottom = a + fx * (b - a), top = c + fx * (d - c);
     h = bottom + fy * (top - bottom);
     hs = this->W * ((b - a) + fy * ((d - c) - (b - a)));
