@@ -17,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailCells.h"
@@ -83,7 +84,8 @@ struct Displacer
   const Surface<R>& In;
   const Output<R>& Out;
   const HeightSampler& Map;
-  Neighbours<Id> Near;
+  const Fits<R, Id>& FitSums;
+  vtkSMPThreadLocal<std::vector<double>>& Scratch; // each thread's sums over polygons
   double Scale;
   double Midlevel;
   int Mode;
@@ -185,6 +187,11 @@ struct Displacer
   template <bool Analytic, bool Exact>
   void Displace(vtkIdType begin, vtkIdType end) const
   {
+    std::vector<double>& sums = this->Scratch.Local();
+    if (Analytic && this->FitSums.Any())
+    {
+      this->FitSums.Make(begin, end, sums);
+    }
     PointBlock b;
     for (vtkIdType first = begin; first < end; first += Block)
     {
@@ -199,7 +206,7 @@ struct Displacer
       }
       if (Analytic)
       {
-        Derivatives(this->In, this->Near, Exact, b);
+        Derivatives(this->In, this->FitSums, sums, begin, Exact, b);
         Directions<Exact>(b);
         WriteNormalsAndTangents(this->In, this->Out, b);
       }
@@ -211,6 +218,8 @@ struct Displacer
   void MeshNormals(
     const vtkDisplacement::MeshNormals<R, Id>& mesh, vtkIdType begin, vtkIdType end) const
   {
+    std::vector<double>& sums = this->Scratch.Local();
+    mesh.Make(begin, end, sums);
     PointBlock b;
     for (vtkIdType first = begin; first < end; first += Block)
     {
@@ -218,8 +227,7 @@ struct Displacer
       UnitNormals(this->In, b);
       for (int k = 0; k < b.Count; ++k)
       {
-        double m[3];
-        mesh.Sum(b.Ids[k], m);
+        const double* m = &sums[3 * (b.Ids[k] - begin)];
         b.Mx[k] = m[0];
         b.My[k] = m[1];
         b.Mz[k] = m[2];
@@ -273,8 +281,8 @@ public:
     vtkDisplacementMapFilter* f = this->Filter;
     const int mode = f->GetNormalMode();
     const vtkIdType n = this->In.NumPoints;
-    const CellChunks chunks(polys);
-    if (!chunks.IdsWithin(n))
+    const CellRuns runs(polys);
+    if (!runs.IdsWithin(n))
     {
       return false;
     }
@@ -284,29 +292,31 @@ public:
     {
       EstimateDerivativeScale(polys, this->In);
     }
-    const GroupList groups = f->GetMergeSeams() ? this->FindSeams(polys, chunks) : GroupList();
-    PointCells<Id> links;
-    if (mode == vtkDisplacementMapFilter::Mesh ||
-      FitsDerivatives(mode, this->Input->GetPointData()))
-    {
-      links.Build(polys, chunks, n);
-    }
+    const GroupList groups = f->GetMergeSeams() ? this->FindSeams(polys, runs) : GroupList();
     f->UpdateProgress(0.2);
 
+    // Passes that sum over polygons own ranges of points of the runs' grain.
+    const bool exact = mode == vtkDisplacementMapFilter::Exact;
+    const bool analytic = exact || mode == vtkDisplacementMapFilter::Approximate;
+    const Fits<R, Id> fits{ this->In, polys, runs, analytic && !this->In.DPdu,
+      exact && !this->In.DNdu };
+    const vtkIdType grain = fits.Any() || mode == vtkDisplacementMapFilter::Mesh
+      ? runs.Grain(n)
+      : std::max<vtkIdType>(Block, n / 1024);
     const std::unique_ptr<HeightSampler> map = MakeHeightSampler(
       image, f->GetComponent(), f->GetWrap(), f->GetInterpolation(), f->GetMidlevel());
-    const Displacer<R, Id> pass{ this->In, this->Out, *map, { &polys, &links }, f->GetScale(),
+    vtkSMPThreadLocal<std::vector<double>> scratch;
+    const Displacer<R, Id> pass{ this->In, this->Out, *map, fits, scratch, f->GetScale(),
       f->GetMidlevel(), mode };
-    vtkSMPTools::For(0, n, pass);
+    vtkSMPTools::For(0, n, grain, pass);
     MergeSeamPoints(pass, groups);
     f->UpdateProgress(0.7);
 
     if (mode == vtkDisplacementMapFilter::Mesh)
     {
-      vtkDisplacement::MeshNormals<R, Id> mesh{ this->In, pass.Near, this->Out.Points, {} };
-      mesh.Orient();
+      const vtkDisplacement::MeshNormals<R, Id> mesh{ this->In, polys, runs, this->Out.Points };
       vtkSMPTools::For(
-        0, n, [&](vtkIdType begin, vtkIdType end) { pass.MeshNormals(mesh, begin, end); });
+        0, n, grain, [&](vtkIdType begin, vtkIdType end) { pass.MeshNormals(mesh, begin, end); });
     }
     if (mode != vtkDisplacementMapFilter::None)
     {
@@ -383,9 +393,9 @@ private:
   // The seam groups among the boundary points, within SeamTolerance of the bounding-box
   // diagonal.
   template <typename Id>
-  GroupList FindSeams(const Polygons<Id>& polys, const CellChunks& chunks) const
+  GroupList FindSeams(const Polygons<Id>& polys, const CellRuns& runs) const
   {
-    const std::vector<vtkIdType> candidates = SeamCandidates(polys, chunks, this->In.NumPoints);
+    const std::vector<vtkIdType> candidates = SeamCandidates(polys, runs, this->In.NumPoints);
     if (candidates.size() < 2)
     {
       return GroupList();

@@ -80,10 +80,6 @@ void Load3(const R* a, vtkIdType i, double scale, double v[3])
   v[2] = scale * a[3 * i + 2];
 }
 
-/// The passes work on blocks of points, each quantity of the block held as an array
-/// ("lanes"). The square roots and divisions that make vectors unit then run in loops of
-/// independent points, which the processor overlaps (and the compiler vectorises), where one
-/// point after another would wait for each result in turn.
 using Lanes = double[Block];
 
 /// The passes work on blocks of points, each quantity of the block held as an array over it
@@ -101,16 +97,16 @@ struct PointBlock
 {
   vtkIdType Ids[Block];
   int Count = 0;
-  Lanes S, T;                // texture coordinates
-  Lanes D, Ds, Dt;           // the height, then the displacement d, and their slopes
-  Lanes Nx, Ny, Nz;          // unit input normals, zero where one has no direction
-  Lanes Psx, Psy, Psz;       // P_s
-  Lanes Ptx, Pty, Ptz;       // P_t
-  Lanes Nsx, Nsy, Nsz;       // n_s (Exact)
-  Lanes Ntx, Nty, Ntz;       // n_t (Exact)
-  Lanes Mx, My, Mz;          // the output normals
-  Lanes Tx, Ty, Tz;          // the output tangents
-  Lanes Ok;                  // a flag per point for the step at hand
+  Lanes S, T;          // texture coordinates
+  Lanes D, Ds, Dt;     // the height, then the displacement d, and their slopes
+  Lanes Nx, Ny, Nz;    // unit input normals, zero where one has no direction
+  Lanes Psx, Psy, Psz; // P_s
+  Lanes Ptx, Pty, Ptz; // P_t
+  Lanes Nsx, Nsy, Nsz; // n_s (Exact)
+  Lanes Ntx, Nty, Ntz; // n_t (Exact)
+  Lanes Mx, My, Mz;    // the output normals
+  Lanes Tx, Ty, Tz;    // the output tangents
+  Lanes Ok;            // a flag per point for the step at hand
 
   /// The points [first, first + count).
   void Span(vtkIdType first, int count)
@@ -125,8 +121,7 @@ struct PointBlock
 
 /// Loads the 3-vectors @a a of the block's points into @a x, @a y, @a z, times @a scale.
 template <typename R>
-void Gather3(
-  const R* a, const PointBlock& b, double scale, double* x, double* y, double* z)
+void Gather3(const R* a, const PointBlock& b, double scale, double* x, double* y, double* z)
 {
   for (int k = 0; k < b.Count; ++k)
   {
@@ -424,41 +419,67 @@ void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, PointBl
   }
 }
 
-/// Each point's polygons, for the derivatives fitted to a point's neighbours and Mesh normals.
-template <typename Id>
-struct Neighbours
-{
-  const Polygons<Id>* Polys = nullptr;
-  const PointCells<Id>* Links = nullptr;
-};
-
 /**
- * The least-squares fit of the derivatives in (s,t) at point @a i of the points (P_s, P_t,
- * @a wantP) and of the normals (n_s, n_t, @a wantN): it minimises
+ * The least-squares fits of the derivatives in (s,t) of the points (P_s, P_t, WantP) and of
+ * the normals (n_s, n_t, WantN) where the input lacks them: at point i they minimise
  * sum |f_j - f_i - f_s ds - f_t dt|^2 over the neighbours j in the point's polygons, each
  * counted once per polygon it shares with the point. On a regular grid this is a central
  * difference. The normals are fitted as they are stored and the result divided by |n_i|:
- * across n_i (where Direction uses it) that is the derivative of the unit normal. Where the
+ * across n_i (where Directions uses it) that is the derivative of the unit normal. Where the
  * texture coordinates around the point do not span two directions, or (P) a neighbour sits at
  * the point with other texture coordinates (a pole: p(s,t) is singular there), the
- * derivatives are 0 and the normal falls back on the input's.
+ * derivatives are 0 and the normal falls back on the input's. The sums are made for a range of
+ * points at a time (vtkDisplacementPolygons.h), Width numbers per point.
  */
 template <typename R, typename Id>
-void Fit(const Surface<R>& in, const Neighbours<Id>& near, vtkIdType i, bool wantP, bool wantN,
-  PointDerivatives& b)
+struct Fits
 {
-  const R* tc = in.TCoords;
-  const vtkIdType tnc = in.TCoordsNC;
-  const double s = tc[tnc * i], t = tc[tnc * i + 1];
-  double p[3], n[3];
-  Load3(in.Points, i, 1.0, p);
-  Load3(in.Normals, i, 1.0, n);
-  double ss = 0.0, st = 0.0, tt = 0.0, bp[6] = {}, bn[6] = {};
-  double nearest = std::numeric_limits<double>::max(), farthest = 0.0;
-  for (const Id* cell = near.Links->Begin(i); cell != near.Links->End(i); ++cell)
+  static constexpr int Width = 17; // ss, st, tt, P's 6, n's 6, nearest and farthest |dp|^2
+  const Surface<R>& In;
+  const Polygons<Id>& Polys;
+  const CellRuns& Runs;
+  bool WantP;
+  bool WantN;
+
+  bool Any() const { return this->WantP || this->WantN; }
+
+  /// The sums of the points [a, b) into @a sums, Width numbers per point.
+  void Make(vtkIdType a, vtkIdType b, std::vector<double>& sums) const
   {
-    const Id* ids = near.Polys->Points(*cell);
-    const vtkIdType size = near.Polys->Size(*cell);
+    sums.assign(static_cast<size_t>(b - a) * Width, 0.0);
+    for (vtkIdType i = a; i < b; ++i)
+    {
+      sums[(i - a) * Width + 15] = std::numeric_limits<double>::max();
+    }
+    const R* tc = this->In.TCoords;
+    const vtkIdType tnc = this->In.TCoordsNC;
+    this->Runs.ForRunsMeeting(a, b,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType cell = begin; cell < end; ++cell)
+        {
+          const Id* ids = this->Polys.Points(cell);
+          const vtkIdType size = this->Polys.Size(cell);
+          for (vtkIdType c = 0; c < size; ++c)
+          {
+            const vtkIdType i = ids[c];
+            if (Owns(a, b, i))
+            {
+              this->AddNeighbours(i, ids, size, tc, tnc, &sums[(i - a) * Width]);
+            }
+          }
+        }
+      });
+  }
+
+  /// The neighbours of point @a i in the polygon @a ids, added to its sums @a f.
+  void AddNeighbours(
+    vtkIdType i, const Id* ids, vtkIdType size, const R* tc, vtkIdType tnc, double* f) const
+  {
+    const double s = tc[tnc * i], t = tc[tnc * i + 1];
+    double p[3], n[3];
+    Load3(this->In.Points, i, 1.0, p);
+    Load3(this->In.Normals, i, 1.0, n);
     for (vtkIdType c = 0; c < size; ++c)
     {
       const vtkIdType j = ids[c];
@@ -467,96 +488,92 @@ void Fit(const Surface<R>& in, const Neighbours<Id>& near, vtkIdType i, bool wan
         continue;
       }
       const double ds = tc[tnc * j] - s, dt = tc[tnc * j + 1] - t;
-      ss += ds * ds;
-      st += ds * dt;
-      tt += dt * dt;
-      if (wantP)
+      f[0] += ds * ds;
+      f[1] += ds * dt;
+      f[2] += dt * dt;
+      if (this->WantP)
       {
         double d[3];
-        Load3(in.Points, j, 1.0, d);
+        Load3(this->In.Points, j, 1.0, d);
         for (int q = 0; q < 3; ++q)
         {
           d[q] -= p[q];
-          bp[q] += ds * d[q];
-          bp[3 + q] += dt * d[q];
+          f[3 + q] += ds * d[q];
+          f[6 + q] += dt * d[q];
         }
         const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        nearest = std::min(nearest, d2);
-        farthest = std::max(farthest, d2);
+        f[15] = std::min(f[15], d2);
+        f[16] = std::max(f[16], d2);
       }
-      if (wantN)
+      if (this->WantN)
       {
         double d[3];
-        Load3(in.Normals, j, 1.0, d);
+        Load3(this->In.Normals, j, 1.0, d);
         for (int q = 0; q < 3; ++q)
         {
           d[q] -= n[q];
-          bn[q] += ds * d[q];
-          bn[3 + q] += dt * d[q];
+          f[9 + q] += ds * d[q];
+          f[12 + q] += dt * d[q];
         }
       }
     }
   }
-  const double det = ss * tt - st * st;
-  const bool spans = det > 1e-12 * (ss + tt) * (ss + tt);
-  const bool distinct = spans && !(nearest <= 1e-16 * farthest);
-  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  const bool unit = spans && Usable(length);
-  for (int q = 0; q < 3; ++q)
+
+  /// The fitted derivatives of point @a i from its sums @a f, into lane @a k of @a b.
+  void Solve(vtkIdType i, const double* f, PointBlock& b, int k) const
   {
-    if (wantP)
+    const double ss = f[0], st = f[1], tt = f[2];
+    const double det = ss * tt - st * st;
+    const bool spans = det > 1e-12 * (ss + tt) * (ss + tt);
+    auto solve =
+      [&](const double* bs, const double* bt, bool ok, double scale, double* x[3], double* y[3])
     {
-      b.Ps[q] = distinct ? (tt * bp[q] - st * bp[3 + q]) / det : 0.0;
-      b.Pt[q] = distinct ? (ss * bp[3 + q] - st * bp[q]) / det : 0.0;
+      for (int q = 0; q < 3; ++q)
+      {
+        x[q][k] = ok ? (tt * bs[q] - st * bt[q]) / (det * scale) : 0.0;
+        y[q][k] = ok ? (ss * bt[q] - st * bs[q]) / (det * scale) : 0.0;
+      }
+    };
+    if (this->WantP)
+    {
+      double* ps[3] = { b.Psx, b.Psy, b.Psz };
+      double* pt[3] = { b.Ptx, b.Pty, b.Ptz };
+      solve(f + 3, f + 6, spans && !(f[15] <= 1e-16 * f[16]), 1.0, ps, pt);
     }
-    if (wantN)
+    if (this->WantN)
     {
-      b.Ns[q] = unit ? (tt * bn[q] - st * bn[3 + q]) / (det * length) : 0.0;
-      b.Nt[q] = unit ? (ss * bn[3 + q] - st * bn[q]) / (det * length) : 0.0;
+      double n[3];
+      Load3(this->In.Normals, i, 1.0, n);
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      double* ns[3] = { b.Nsx, b.Nsy, b.Nsz };
+      double* nt[3] = { b.Ntx, b.Nty, b.Ntz };
+      solve(f + 9, f + 12, spans && Usable(length), length, ns, nt);
     }
   }
-}
+};
 
 /**
  * P_s, P_t and (Exact) n_s, n_t of the block's points: from dPdu/dPdv (and dNdu/dNdv) scaled
- * by the map from their parameters to the texture coordinates, else fitted to the neighbours.
+ * by the map from their parameters to the texture coordinates, else fitted to the neighbours
+ * (@a sums: the fits' sums of the points from @a first on).
  */
 template <typename R, typename Id>
-void Derivatives(const Surface<R>& in, const Neighbours<Id>& near, bool exact, PointBlock& b)
+void Derivatives(const Surface<R>& in, const Fits<R, Id>& fits, const std::vector<double>& sums,
+  vtkIdType first, bool exact, PointBlock& b)
 {
-  const bool wantP = !in.DPdu, wantN = exact && !in.DNdu;
-  if (!wantP)
+  if (!fits.WantP)
   {
     Gather3(in.DPdu, b, in.DerivativeScale[0], b.Psx, b.Psy, b.Psz);
     Gather3(in.DPdv, b, in.DerivativeScale[1], b.Ptx, b.Pty, b.Ptz);
   }
-  if (exact && !wantN)
+  if (exact && !fits.WantN)
   {
     Gather3(in.DNdu, b, in.DerivativeScale[0], b.Nsx, b.Nsy, b.Nsz);
     Gather3(in.DNdv, b, in.DerivativeScale[1], b.Ntx, b.Nty, b.Ntz);
   }
-  for (int k = 0; (wantP || wantN) && k < b.Count; ++k)
+  for (int k = 0; fits.Any() && k < b.Count; ++k)
   {
-    PointDerivatives p;
-    Fit(in, near, b.Ids[k], wantP, wantN, p);
-    if (wantP)
-    {
-      b.Psx[k] = p.Ps[0];
-      b.Psy[k] = p.Ps[1];
-      b.Psz[k] = p.Ps[2];
-      b.Ptx[k] = p.Pt[0];
-      b.Pty[k] = p.Pt[1];
-      b.Ptz[k] = p.Pt[2];
-    }
-    if (wantN)
-    {
-      b.Nsx[k] = p.Ns[0];
-      b.Nsy[k] = p.Ns[1];
-      b.Nsz[k] = p.Ns[2];
-      b.Ntx[k] = p.Nt[0];
-      b.Nty[k] = p.Nt[1];
-      b.Ntz[k] = p.Nt[2];
-    }
+    fits.Solve(b.Ids[k], &sums[(b.Ids[k] - first) * fits.Width], b, k);
   }
 }
 
@@ -688,26 +705,20 @@ bool DeclaredDerivativeScale(vtkDataArray* tcoords, Surface<R>& c)
 /**
  * Mesh normals: each point's normal is the sum of the normals of its displaced polygons,
  * area-weighted (a fan of cross products from corner 0) and each oriented as its input
- * normals (the input polygon's normal against the sum of its points' input normals: Orient,
- * found first for each polygon). The polygons are read through the point's links in
- * increasing order, so the bits depend neither on the threads nor on the pieces; a displaced
- * polygon's normal is computed for each of its points, which needs no array of polygon
- * normals.
+ * normals (the input polygon's normal against the sum of its points' input normals). Made
+ * for a range of points at a time (vtkDisplacementPolygons.h), each point's polygons in
+ * increasing order: the bits depend neither on the threads nor on the pieces.
  */
 template <typename R, typename Id>
 struct MeshNormals
 {
   const Surface<R>& In;
-  const Neighbours<Id>& Near;
+  const Polygons<Id>& Polys;
+  const CellRuns& Runs;
   const R* Moved;
-  std::vector<signed char> Signs;
 
   static void FanSum(const R* pts, const Id* ids, vtkIdType n, double sum[3])
   {
-    if (n < 3)
-    {
-      return; // no area, and an empty polygon's ids are not there to read
-    }
     double p0[3];
     Load3(pts, ids[0], 1.0, p0);
     for (vtkIdType k = 1; k + 1 < n; ++k)
@@ -727,20 +738,26 @@ struct MeshNormals
     }
   }
 
-  // The orientation of every polygon against its points' input normals.
-  void Orient()
+  /// The unnormalised normals of the points [a, b) into @a sums, 3 numbers per point.
+  void Make(vtkIdType a, vtkIdType b, std::vector<double>& sums) const
   {
-    const Polygons<Id>& polys = *this->Near.Polys;
-    this->Signs.resize(polys.Count);
-    vtkSMPTools::For(0, polys.Count,
+    sums.assign(static_cast<size_t>(b - a) * 3, 0.0);
+    this->Runs.ForRunsMeeting(a, b,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType cell = begin; cell < end; ++cell)
         {
-          const Id* ids = polys.Points(cell);
-          const vtkIdType n = polys.Size(cell);
-          double before[3] = { 0.0, 0.0, 0.0 }, normals[3] = { 0.0, 0.0, 0.0 };
+          const Id* ids = this->Polys.Points(cell);
+          const vtkIdType n = this->Polys.Size(cell);
+          // No area, and an empty polygon's ids are not there to read.
+          if (n < 3 || std::none_of(ids, ids + n, [&](Id id) { return Owns(a, b, id); }))
+          {
+            continue;
+          }
+          double before[3] = { 0.0, 0.0, 0.0 }, after[3] = { 0.0, 0.0, 0.0 };
+          double normals[3] = { 0.0, 0.0, 0.0 };
           FanSum(this->In.Points, ids, n, before);
+          FanSum(this->Moved, ids, n, after);
           for (vtkIdType k = 0; k < n; ++k)
           {
             const R* nk = this->In.Normals + 3 * ids[k];
@@ -748,25 +765,19 @@ struct MeshNormals
             normals[1] += nk[1];
             normals[2] += nk[2];
           }
-          this->Signs[cell] = vtkSurfaceDetail::Dot(before, normals) < 0.0 ? -1 : 1;
+          const double sign = vtkSurfaceDetail::Dot(before, normals) < 0.0 ? -1.0 : 1.0;
+          for (vtkIdType k = 0; k < n; ++k)
+          {
+            if (Owns(a, b, ids[k]))
+            {
+              double* m = &sums[3 * (ids[k] - a)];
+              m[0] += sign * after[0];
+              m[1] += sign * after[1];
+              m[2] += sign * after[2];
+            }
+          }
         }
       });
-  }
-
-  // The unnormalised normal @a m of point @a i.
-  void Sum(vtkIdType i, double m[3]) const
-  {
-    const Polygons<Id>& polys = *this->Near.Polys;
-    m[0] = m[1] = m[2] = 0.0;
-    for (const Id* cell = this->Near.Links->Begin(i); cell != this->Near.Links->End(i); ++cell)
-    {
-      double moved[3] = { 0.0, 0.0, 0.0 };
-      FanSum(this->Moved, polys.Points(*cell), polys.Size(*cell), moved);
-      const double sign = this->Signs[*cell];
-      m[0] += sign * moved[0];
-      m[1] += sign * moved[1];
-      m[2] += sign * moved[2];
-    }
   }
 };
 } // namespace vtkDisplacement

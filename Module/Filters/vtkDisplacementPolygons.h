@@ -1,18 +1,21 @@
 /**
  * @file   vtkDisplacementPolygons.h
- * @brief  Private: vtkDisplacementMapFilter's work on polygons: scatters from cells to
- *         points, each point's polygons, and the boundary points where seams may be.
+ * @brief  Private: vtkDisplacementMapFilter's work on polygons: sums over each point's
+ *         polygons, and the boundary points where seams may be.
  *
  * The polygons are read in the storage the input has (32- or 64-bit ids), never copied.
  *
- * Scatters from cells to points (a sum at each point over its cells) must not race, and
- * their results must not depend on the number of threads. Rather than atomics or a copy of
- * the point arrays per thread, the cells are cut into chunks whose size depends only on the
- * mesh, and the chunks are run in two phases, even chunks then odd chunks, each in parallel
- * when no two of its chunks share a point. Meshes whose points are numbered along their cells
- * (those of VTK's sources and of vtkParametricSurfaceSource) pass that test; others run the
- * same chunks in the same order on one thread. Either way each point receives its
- * contributions in one order: the same bits for any number of threads.
+ * Several results are sums at each point over the polygons around it (the seam test, fitted
+ * derivatives, Mesh normals). They are made without point links, atomics or a copy of the
+ * point arrays per thread: the cells are cut into runs of consecutive cells, each knowing the
+ * range of point ids it uses, and the points into ranges, one task each. A task visits, in
+ * increasing order, the runs that use one of its points, and adds each cell's contribution to
+ * the points it owns only. Every point thus gets its contributions from its cells in
+ * increasing order, as a serial loop over the cells would give them: the same bits for any
+ * number of threads and any split of the points, and in a piece as in the whole (a piece keeps
+ * the order of its cells). Meshes whose points are numbered along their cells (those of VTK's
+ * sources and of vtkParametricSurfaceSource) visit each cell about once; for others the point
+ * ranges grow until the tasks together visit at most a few times the cells.
  *
  * Part of SurfaceDetail::Filters; not installed.
  */
@@ -20,14 +23,16 @@
 #define vtkDisplacementPolygons_h
 
 #include "vtkCellArray.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <limits>
-#include <memory>
+#include <utility>
 #include <vector>
 
 namespace vtkDisplacement
@@ -66,161 +71,95 @@ void WithPolygons(vtkCellArray* cells, F&& body)
   }
 }
 
-/// The polygons cut into chunks for scatters from cells to points (see the file's comment).
-class CellChunks
+/// Whether point id @a id lies in [@a a, @a b).
+inline bool Owns(vtkIdType a, vtkIdType b, vtkIdType id)
+{
+  return static_cast<std::uint64_t>(id - a) < static_cast<std::uint64_t>(b - a);
+}
+
+/// The polygons cut into runs of consecutive cells with the point ids each uses, for sums over
+/// each point's polygons made by ranges of points (see the file's comment).
+class CellRuns
 {
 public:
   template <typename Id>
-  explicit CellChunks(const Polygons<Id>& polys)
+  explicit CellRuns(const Polygons<Id>& polys)
     : Cells(polys.Count)
   {
-    // At most 32 chunks, so that a grid of more than a few dozen rows has chunks two apart
-    // that share no point; at least a few thousand cells, so that a chunk outweighs its
-    // scheduling.
-    this->Size = std::max<vtkIdType>(4096, (polys.Count + 31) / 32);
-    const vtkIdType numChunks = (polys.Count + this->Size - 1) / this->Size;
-    std::vector<vtkIdType> low(numChunks), high(numChunks);
-    vtkSMPTools::For(0, numChunks, 1,
+    const vtkIdType numRuns = (polys.Count + RunSize - 1) / RunSize;
+    this->Low.resize(numRuns);
+    this->High.resize(numRuns);
+    vtkSMPTools::For(0, numRuns,
       [&](vtkIdType begin, vtkIdType end)
       {
-        for (vtkIdType c = begin; c < end; ++c)
+        for (vtkIdType r = begin; r < end; ++r)
         {
-          const Id* first = polys.Conn + polys.Offsets[this->First(c)];
-          const Id* last = polys.Conn + polys.Offsets[this->Last(c)];
+          const Id* first = polys.Points(r * RunSize);
+          const Id* last = polys.Points(std::min(polys.Count, (r + 1) * RunSize));
           const auto range = std::minmax_element(first, last);
-          low[c] = first == last ? std::numeric_limits<vtkIdType>::max() : *range.first;
-          high[c] = first == last ? std::numeric_limits<vtkIdType>::min() : *range.second;
+          this->Low[r] = first == last ? std::numeric_limits<vtkIdType>::max() : *range.first;
+          this->High[r] = first == last ? std::numeric_limits<vtkIdType>::min() : *range.second;
         }
       });
-    for (vtkIdType c = 0; c < numChunks; ++c)
+  }
+
+  /// Whether every point id of the polygons lies in [0, @a numPts): the sums write through
+  /// them, so a mesh whose cells name points it does not have must be refused first.
+  bool IdsWithin(vtkIdType numPts) const
+  {
+    for (size_t r = 0; r < this->Low.size(); ++r)
     {
-      this->Low = std::min(this->Low, low[c]);
-      this->High = std::max(this->High, high[c]);
-    }
-    for (int parity = 0; parity < 2; ++parity)
-    {
-      // The chunks of one parity share no point if each starts above all before it end.
-      vtkIdType reached = std::numeric_limits<vtkIdType>::min();
-      bool disjoint = true;
-      for (vtkIdType c = parity; c < numChunks && disjoint; c += 2)
+      if (this->Low[r] <= this->High[r] && (this->Low[r] < 0 || this->High[r] >= numPts))
       {
-        disjoint = low[c] > reached || low[c] > high[c];
-        reached = std::max(reached, high[c]);
+        return false;
       }
-      this->Parallel[parity] = disjoint;
+    }
+    return true;
+  }
+
+  /**
+   * How many points a task should own: a few thousand, or more where the points are not
+   * numbered along the cells, so that the tasks together visit at most a few times the cells.
+   */
+  vtkIdType Grain(vtkIdType numPts) const
+  {
+    vtkIdType ranges = std::max<vtkIdType>(1, numPts / 4096);
+    for (;; ranges = (ranges + 1) / 2)
+    {
+      const vtkIdType size = (numPts + ranges - 1) / ranges;
+      vtkIdType visited = 0;
+      for (size_t r = 0; r < this->Low.size(); ++r)
+      {
+        if (this->Low[r] <= this->High[r])
+        {
+          visited += RunSize * (this->High[r] / size - this->Low[r] / size + 1);
+        }
+      }
+      if (ranges == 1 || visited <= 4 * this->Cells)
+      {
+        return std::max<vtkIdType>(1, size);
+      }
     }
   }
 
-  /// Whether every point id of the polygons lies in [0, @a numPts): the scatters write through
-  /// them, so a mesh whose cells name points it does not have must be refused first.
-  bool IdsWithin(vtkIdType numPts) const { return this->Low >= 0 && this->High < numPts; }
-
-  /// Calls @a body(firstCell, endCell) for every chunk: the even chunks, then the odd ones.
+  /// Calls @a body(firstCell, endCell) for each run that uses a point in [@a a, @a b), in order.
   template <typename F>
-  void Scatter(F&& body) const
+  void ForRunsMeeting(vtkIdType a, vtkIdType b, F&& body) const
   {
-    const vtkIdType numChunks = (this->Cells + this->Size - 1) / this->Size;
-    for (int parity = 0; parity < 2; ++parity)
+    for (size_t r = 0; r < this->Low.size(); ++r)
     {
-      const vtkIdType count = (numChunks - parity + 1) / 2;
-      auto run = [&](vtkIdType begin, vtkIdType end)
+      if (this->Low[r] < b && this->High[r] >= a)
       {
-        for (vtkIdType k = begin; k < end; ++k)
-        {
-          const vtkIdType c = 2 * k + parity;
-          body(this->First(c), this->Last(c));
-        }
-      };
-      if (this->Parallel[parity])
-      {
-        vtkSMPTools::For(0, count, 1, run);
-      }
-      else
-      {
-        run(0, count);
+        const vtkIdType first = static_cast<vtkIdType>(r) * RunSize;
+        body(first, std::min(this->Cells, first + RunSize));
       }
     }
   }
 
 private:
-  vtkIdType First(vtkIdType chunk) const { return chunk * this->Size; }
-  vtkIdType Last(vtkIdType chunk) const { return std::min(this->Cells, (chunk + 1) * this->Size); }
-
+  static constexpr vtkIdType RunSize = 2048;
   vtkIdType Cells = 0;
-  vtkIdType Size = 1;
-  vtkIdType Low = 0;   // the smallest point id, 0 without ids
-  vtkIdType High = -1; // the largest, -1 without ids
-  bool Parallel[2] = { false, false };
-};
-
-/**
- * Each point's polygons, in increasing order, counted and filled by chunk scatters:
- * Offsets[i] .. Offsets[i + 1] index Cells.
- */
-template <typename Id>
-struct PointCells
-{
-  std::vector<Id> Offsets;
-  std::unique_ptr<Id[]> Cells;
-
-  void Build(const Polygons<Id>& polys, const CellChunks& chunks, vtkIdType numPts)
-  {
-    // Each point's count, summed so that Offsets[i] is where i's list ends ...
-    this->Offsets.assign(numPts + 1, 0);
-    Id* offsets = this->Offsets.data();
-    chunks.Scatter(
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (const Id* id = polys.Points(begin); id != polys.Points(end); ++id)
-        {
-          ++offsets[*id];
-        }
-      });
-    for (vtkIdType i = 1; i < numPts; ++i)
-    {
-      offsets[i] += offsets[i - 1];
-    }
-    offsets[numPts] = numPts > 0 ? offsets[numPts - 1] : 0;
-    // ... and filling each list from its end moves that mark back to where the list starts.
-    // Each chunk is filled from its last cell down, so that a list comes out in increasing
-    // order wherever a point's cells are in one chunk.
-    this->Cells.reset(new Id[offsets[numPts]]);
-    Id* cells = this->Cells.get();
-    chunks.Scatter(
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType cell = end - 1; cell >= begin; --cell)
-        {
-          for (const Id* id = polys.Points(cell); id != polys.Points(cell + 1); ++id)
-          {
-            cells[--offsets[*id]] = static_cast<Id>(cell);
-          }
-        }
-      });
-    // Every list in increasing order, as in any piece of the same mesh whose cells keep their
-    // order: sums over a list then give a point the same bits in a piece as in the whole. Only
-    // lists that cross a chunk's border are out of order, so insertion sort does little.
-    vtkSMPTools::For(0, numPts,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          for (Id* a = cells + offsets[i] + 1; a < cells + offsets[i + 1]; ++a)
-          {
-            const Id value = *a;
-            Id* b = a;
-            for (; b > cells + offsets[i] && *(b - 1) > value; --b)
-            {
-              *b = *(b - 1);
-            }
-            *b = value;
-          }
-        }
-      });
-  }
-
-  const Id* Begin(vtkIdType i) const { return this->Cells.get() + this->Offsets[i]; }
-  const Id* End(vtkIdType i) const { return this->Cells.get() + this->Offsets[i + 1]; }
+  std::vector<vtkIdType> Low, High; // the smallest and largest point id of each run
 };
 
 /**
@@ -238,12 +177,13 @@ inline std::uint64_t CornerHash(vtkIdType id)
 }
 
 /**
- * Adds, for each corner of the polygon @a ids of @a n corners, the hash of the next corner's
- * point minus that of the previous one to the corner's own point's sum. @a N is the corner count
- * where the caller knows it (the loops are then unrolled), 0 otherwise.
+ * For each corner of the polygon @a ids of @a n corners whose point lies in [@a a, @a b), adds
+ * the hash of the next corner's point minus that of the previous one to the point's sum in
+ * @a sums (indexed from @a a). @a N is the corner count where the caller knows it (the loops
+ * are then unrolled), 0 otherwise.
  */
 template <int N, typename Id>
-void AddCornerHashes(const Id* ids, vtkIdType n, std::uint64_t* sums)
+void AddCornerHashes(const Id* ids, vtkIdType n, vtkIdType a, vtkIdType b, std::uint64_t* sums)
 {
   const vtkIdType count = N > 0 ? N : n;
   constexpr vtkIdType most = 8;
@@ -256,52 +196,76 @@ void AddCornerHashes(const Id* ids, vtkIdType n, std::uint64_t* sums)
   auto at = [&](vtkIdType k) { return count <= most ? hashes[k] : CornerHash(ids[k]); };
   for (vtkIdType k = 0; k < count; ++k)
   {
-    const std::uint64_t next = at(k + 1 < count ? k + 1 : 0);
-    const std::uint64_t previous = at(k > 0 ? k - 1 : count - 1);
-    sums[ids[k]] = (sums[ids[k]] + next - previous) | 1;
+    if (Owns(a, b, ids[k]))
+    {
+      const std::uint64_t next = at(k + 1 < count ? k + 1 : 0);
+      const std::uint64_t previous = at(k > 0 ? k - 1 : count - 1);
+      std::uint64_t& sum = sums[ids[k] - a];
+      sum = (sum + next - previous) | 1;
+    }
   }
 }
 
 /**
- * The points where a seam may be. A texture seam cuts the mesh, so its duplicated points lie
- * on the mesh's boundary. Each corner adds the hash of its next point minus that of its
- * previous one to its point's sum; where every edge around a point is shared by two
- * consistently oriented polygons (an interior point) the sums cancel exactly, a boundary
+ * The points where a seam may be, in increasing order. A texture seam cuts the mesh, so its
+ * duplicated points lie on the mesh's boundary. Each corner adds the hash of its next point
+ * minus that of its previous one to its point's sum; where every edge around a point is shared
+ * by two consistently oriented polygons (an interior point) the sums cancel exactly, a boundary
  * edge leaves a non-zero sum. Inconsistent orientation or non-manifold edges only add
- * candidates, which the position test then discards; points in no polygon are candidates
- * too. Integer sums commute, so the result does not depend on the order.
+ * candidates, which the position test then discards; points in no polygon are candidates too.
+ * Each task sums its range of points in a small array of its own.
  */
 template <typename Id>
 std::vector<vtkIdType> SeamCandidates(
-  const Polygons<Id>& polys, const CellChunks& chunks, vtkIdType numPts)
+  const Polygons<Id>& polys, const CellRuns& runs, vtkIdType numPts)
 {
-  std::vector<std::uint64_t> sum(numPts, 0);
-  std::uint64_t* sums = sum.data();
-  chunks.Scatter(
-    [&](vtkIdType begin, vtkIdType end)
+  using Found = std::vector<std::pair<vtkIdType, std::vector<vtkIdType>>>; // (first point, ids)
+  vtkSMPThreadLocal<Found> found;
+  vtkSMPThreadLocal<std::vector<std::uint64_t>> scratch;
+  vtkSMPTools::For(0, numPts, runs.Grain(numPts),
+    [&](vtkIdType a, vtkIdType b)
     {
-      for (vtkIdType cell = begin; cell < end; ++cell)
+      std::vector<std::uint64_t>& sums = scratch.Local();
+      sums.assign(b - a, 0);
+      runs.ForRunsMeeting(a, b,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType cell = begin; cell < end; ++cell)
+          {
+            const Id* ids = polys.Points(cell);
+            const vtkIdType n = polys.Size(cell);
+            // Triangles, most of every mesh, with their corner count known to the compiler.
+            if (n == 3)
+            {
+              AddCornerHashes<3>(ids, 3, a, b, sums.data());
+            }
+            else
+            {
+              AddCornerHashes<0>(ids, n, a, b, sums.data());
+            }
+          }
+        });
+      std::vector<vtkIdType> mine;
+      for (vtkIdType i = a; i < b; ++i)
       {
-        const Id* ids = polys.Points(cell);
-        const vtkIdType n = polys.Size(cell);
-        // Triangles, most of every mesh, with their corner count known to the compiler.
-        if (n == 3)
+        if (sums[i - a] != 1)
         {
-          AddCornerHashes<3>(ids, 3, sums);
-        }
-        else
-        {
-          AddCornerHashes<0>(ids, n, sums);
+          mine.push_back(i);
         }
       }
+      found.Local().emplace_back(a, std::move(mine));
     });
-  std::vector<vtkIdType> candidates;
-  for (vtkIdType i = 0; i < numPts; ++i)
+  Found all;
+  for (Found& f : found)
   {
-    if (sums[i] != 1)
-    {
-      candidates.push_back(i);
-    }
+    std::move(f.begin(), f.end(), std::back_inserter(all));
+  }
+  std::sort(all.begin(), all.end(),
+    [](const Found::value_type& x, const Found::value_type& y) { return x.first < y.first; });
+  std::vector<vtkIdType> candidates;
+  for (const auto& f : all)
+  {
+    candidates.insert(candidates.end(), f.second.begin(), f.second.end());
   }
   return candidates;
 }
