@@ -451,8 +451,6 @@ struct Fits
     {
       sums[(i - a) * Width + 15] = std::numeric_limits<double>::max();
     }
-    const R* tc = this->In.TCoords;
-    const vtkIdType tnc = this->In.TCoordsNC;
     this->Runs.ForRunsMeeting(a, b,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -460,61 +458,98 @@ struct Fits
         {
           const Id* ids = this->Polys.Points(cell);
           const vtkIdType size = this->Polys.Size(cell);
-          for (vtkIdType c = 0; c < size; ++c)
+          if (std::any_of(ids, ids + size, [&](Id id) { return Owns(a, b, id); }))
           {
-            const vtkIdType i = ids[c];
-            if (Owns(a, b, i))
-            {
-              this->AddNeighbours(i, ids, size, tc, tnc, &sums[(i - a) * Width]);
-            }
+            this->AddPairs(ids, size, a, b, sums.data());
           }
         }
       });
   }
 
-  /// The neighbours of point @a i in the polygon @a ids, added to its sums @a f.
-  void AddNeighbours(
-    vtkIdType i, const Id* ids, vtkIdType size, const R* tc, vtkIdType tnc, double* f) const
+  /**
+   * Each pair of corners of the polygon @a ids adds its terms to the sums of the corners it owns
+   * (sums indexed from @a a). The terms are products of two differences taken the other way
+   * round for the other corner, so they are the same for both, bit for bit; the pairs go in
+   * order, so each point gets its neighbours in the polygon's order.
+   */
+  void AddPairs(const Id* ids, vtkIdType size, vtkIdType a, vtkIdType b, double* sums) const
   {
-    const double s = tc[tnc * i], t = tc[tnc * i + 1];
-    double p[3], n[3];
-    Load3(this->In.Points, i, 1.0, p);
-    Load3(this->In.Normals, i, 1.0, n);
-    for (vtkIdType c = 0; c < size; ++c)
+    const R* tc = this->In.TCoords;
+    const vtkIdType tnc = this->In.TCoordsNC;
+    for (vtkIdType c1 = 0; c1 < size; ++c1)
     {
-      const vtkIdType j = ids[c];
-      if (j == i)
+      const vtkIdType i = ids[c1];
+      const bool ownI = Owns(a, b, i);
+      for (vtkIdType c2 = c1 + 1; c2 < size; ++c2)
       {
-        continue;
-      }
-      const double ds = tc[tnc * j] - s, dt = tc[tnc * j + 1] - t;
-      f[0] += ds * ds;
-      f[1] += ds * dt;
-      f[2] += dt * dt;
-      if (this->WantP)
-      {
-        double d[3];
-        Load3(this->In.Points, j, 1.0, d);
-        for (int q = 0; q < 3; ++q)
+        const vtkIdType j = ids[c2];
+        const bool ownJ = Owns(a, b, j);
+        if (i == j || !(ownI || ownJ))
         {
-          d[q] -= p[q];
-          f[3 + q] += ds * d[q];
-          f[6 + q] += dt * d[q];
+          continue;
         }
-        const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        f[15] = std::min(f[15], d2);
-        f[16] = std::max(f[16], d2);
-      }
-      if (this->WantN)
-      {
-        double d[3];
-        Load3(this->In.Normals, j, 1.0, d);
-        for (int q = 0; q < 3; ++q)
+        double f[Width];
+        const double ds = tc[tnc * j] - tc[tnc * i], dt = tc[tnc * j + 1] - tc[tnc * i + 1];
+        f[0] = ds * ds;
+        f[1] = ds * dt;
+        f[2] = dt * dt;
+        if (this->WantP)
         {
-          d[q] -= n[q];
-          f[9 + q] += ds * d[q];
-          f[12 + q] += dt * d[q];
+          double pi[3], d[3];
+          Load3(this->In.Points, i, 1.0, pi);
+          Load3(this->In.Points, j, 1.0, d);
+          for (int q = 0; q < 3; ++q)
+          {
+            d[q] -= pi[q];
+            f[3 + q] = ds * d[q];
+            f[6 + q] = dt * d[q];
+          }
+          f[15] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         }
+        if (this->WantN)
+        {
+          double ni[3], d[3];
+          Load3(this->In.Normals, i, 1.0, ni);
+          Load3(this->In.Normals, j, 1.0, d);
+          for (int q = 0; q < 3; ++q)
+          {
+            d[q] -= ni[q];
+            f[9 + q] = ds * d[q];
+            f[12 + q] = dt * d[q];
+          }
+        }
+        if (ownI)
+        {
+          this->Add(f, sums + (i - a) * Width);
+        }
+        if (ownJ)
+        {
+          this->Add(f, sums + (j - a) * Width);
+        }
+      }
+    }
+  }
+
+  // The terms @a f of one neighbour added to a point's sums @a s.
+  void Add(const double* f, double* s) const
+  {
+    s[0] += f[0];
+    s[1] += f[1];
+    s[2] += f[2];
+    if (this->WantP)
+    {
+      for (int q = 3; q < 9; ++q)
+      {
+        s[q] += f[q];
+      }
+      s[15] = std::min(s[15], f[15]);
+      s[16] = std::max(s[16], f[15]);
+    }
+    if (this->WantN)
+    {
+      for (int q = 9; q < 15; ++q)
+      {
+        s[q] += f[q];
       }
     }
   }
