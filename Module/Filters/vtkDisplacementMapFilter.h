@@ -64,8 +64,9 @@
  * such as a sphere's pole (a neighbour at the same place with other texture coordinates,
  * or zero dPdu/dPdv), no (s,t) derivative describes the surface and the input normal is
  * kept. Normals are always finite: where m* has no direction, the input normal is used.
- * The fits and Mesh normals read each point's polygons through vtkStaticCellLinks, built
- * for the execution that needs them.
+ * The fits and Mesh normals are sums over each point's polygons, taken in increasing order
+ * (so they do not depend on the threads or on the pieces) and made without point links: each
+ * thread owns a range of points and reads the runs of cells that use them.
  *
  * Surface derivatives. When the point data has 3-component arrays named "dPdu" and "dPdv"
  * (vtkParametricSurfaceSource's GenerateDerivatives), they give P_s and P_t. They may be
@@ -91,7 +92,7 @@
  * normals (a hard edge) keep their own normals but still move together. A seam cuts the
  * mesh, so its duplicated points are boundary points: only points on an edge that is not
  * shared by two consistently oriented polygons (or in no polygon) are compared. They are
- * found by one sweep over the polygons' edges (no point links), and grouped with a
+ * found by sums of hashes over the polygons' edges (no point links), and grouped with a
  * vtkStaticPointLocator over them.
  *
  * Precision: when the points and every array the filter reads are float (as VTK's sources
