@@ -163,7 +163,7 @@ private:
 };
 
 /**
- * A well-mixed hash of a point id (two multiply-xorshift rounds of splitmix64's finaliser),
+ * A well-mixed hash of a point id (two multiply-xorshift rounds with splitmix64's constants),
  * shifted up one bit: every hash and every sum of them is even, so the lowest bit is free to
  * mark the points some polygon uses. Mixing, not a near-additive hash, is what keeps the sums
  * at a point where several boundary fans meet (a bowtie) from cancelling by chance.
