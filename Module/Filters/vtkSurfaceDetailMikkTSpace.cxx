@@ -8,6 +8,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 
 namespace vtkSurfaceDetailMikkTSpace
