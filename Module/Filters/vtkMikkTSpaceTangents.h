@@ -33,12 +33,18 @@
  * copied, and the polygons are renumbered. Points whose texture coordinates differ across
  * a seam are separate points in the input already and stay so.
  *
- * One implementation, in stages: the input's values are read as doubles; vertices are
- * welded through a hash table of their values (exact comparison decides); the triangles are
- * evaluated per face and each vertex's groups per vertex, both with vtkSMPTools, from
- * vertex-to-triangle links built with vtkStaticCellLinksTemplate; the few points whose
- * corners get several frames are then split in point order. Every stage is deterministic,
- * so the result does not depend on the number of threads.
+ * One implementation, in stages, parallel (vtkSMPTools) where their parts are independent
+ * and all deterministic, so that the result does not depend on the number of threads. The
+ * input's values are read in place, float or double (a float widens to double exactly;
+ * arrays of other types are converted to double once).
+ * Vertices are welded by value: each point's values are hashed, the hashes radix sorted,
+ * and points of equal hash compared exactly. Each face gets compact 32-bit triangle
+ * records, and vtkStaticCellLinksTemplate the vertex-to-triangle links. Then, per vertex,
+ * the triangles around it are matched across their edges and grouped, and their corners'
+ * spaces and frames computed, the corner arithmetic several corners at a time. The few
+ * points whose corners get several frames are split last, in point order. Ids are 32-bit:
+ * an input of 2^31 points or more, or with 2^31 / 3 polygon and strip point ids or more, is
+ * refused with an error (process it in pieces).
  *
  * The reference's handling of awkward input is kept: triangles with two corners at one
  * position are degenerate and take the frame of the first good triangle at each corner's

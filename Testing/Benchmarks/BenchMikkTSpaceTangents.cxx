@@ -1,18 +1,27 @@
-// vtkMikkTSpaceTangents against VTK's vtkPolyDataTangents on the same tori of about 1M and
-// 4M points (2M and 8M triangles), at 1 and 2 threads; then the reference MikkTSpace (npm
-// package "mikktspace", run by node) on the same triangles, whose median time it prints
-// (one thread: it is single-threaded WebAssembly).
+// vtkMikkTSpaceTangents against VTK's vtkPolyDataTangents and against the floor (the bytes
+// the filter must write) on the same tori of about 1M and 4M points (2M and 8M triangles),
+// at 1 and 2 threads, first execution (a new filter each time) and re-execution (the same
+// filter, its input marked modified); then the ratios ours/floor and VTK/ours, and the
+// reference MikkTSpace (npm package "mikktspace", run by node) on the same triangles, whose
+// median time it prints (one thread: it is single-threaded WebAssembly).
 // See BENCHMARKS.md.
 #include "MikkTSpaceTestMeshes.h"
 
+#include "vtkFloatArray.h"
 #include "vtkMikkTSpaceTangents.h"
 #include "vtkPolyDataTangents.h"
 #include "vtkSMPTools.h"
 
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
 #include <iostream>
+#include <map>
 #include <string>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace
 {
@@ -28,34 +37,81 @@ vtkPolyData* Torus(int size)
   return meshes[size];
 }
 
+// One thread is the sequential backend: with VTK 9.1's TBB backend, Initialize(1) did not
+// always hold (the 1-thread rows ran on both cores: wall time below the process's CPU
+// time), while the sequential backend cannot use a second core.
+class Threads
+{
+public:
+  explicit Threads(int threads)
+    : Backend(vtkSMPTools::GetBackend())
+  {
+    if (threads == 1)
+    {
+      vtkSMPTools::SetBackend("Sequential");
+    }
+    else
+    {
+      vtkSMPTools::Initialize(threads);
+    }
+  }
+  ~Threads()
+  {
+    vtkSMPTools::SetBackend(this->Backend.c_str());
+    vtkSMPTools::Initialize(0);
+  }
+
+private:
+  const std::string Backend;
+};
+
+// Where big blocks come from. First execution: fresh pages from the kernel for every block,
+// as in a new process (glibc otherwise keeps freed blocks once a big one has been freed, and
+// later iterations would run on warm memory that a single first execution does not have).
+// Re-execution: blocks that the previous execution freed, kept warm by the allocator, as in
+// an application that runs the pipeline again.
+void SetMemory(bool fresh)
+{
+#if defined(__GLIBC__)
+  const int big = 1 << 30;
+  mallopt(M_MMAP_THRESHOLD, fresh ? 128 * 1024 : big);
+  mallopt(M_TRIM_THRESHOLD, fresh ? 128 * 1024 : big);
+#else
+  (void)fresh;
+#endif
+}
+
+// Arguments: threads, mesh size, 0 for first execution and 1 for re-execution.
 template <typename Filter>
 void RunFilter(benchmark::State& state)
 {
-  // One thread is the sequential backend: with VTK 9.1's TBB backend, Initialize(1) did not
-  // always hold (the 1-thread rows ran on both cores: wall time below the process's CPU
-  // time), while the sequential backend cannot use a second core.
-  const std::string backend = vtkSMPTools::GetBackend();
-  const int threads = static_cast<int>(state.range(0));
-  if (threads == 1)
+  const Threads threads(static_cast<int>(state.range(0)));
+  SetMemory(state.range(2) == 0);
+  vtkPolyData* mesh = Torus(static_cast<int>(state.range(1)));
+  if (state.range(2) == 0)
   {
-    vtkSMPTools::SetBackend("Sequential");
+    for (auto _ : state)
+    {
+      vtkNew<Filter> filter;
+      filter->SetInputData(mesh);
+      filter->Update();
+      benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
+    }
   }
   else
-  {
-    vtkSMPTools::Initialize(threads);
-  }
-  vtkPolyData* mesh = Torus(static_cast<int>(state.range(1)));
-  for (auto _ : state)
   {
     vtkNew<Filter> filter;
     filter->SetInputData(mesh);
     filter->Update();
-    benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
+    for (auto _ : state)
+    {
+      filter->Modified();
+      filter->Update();
+      benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
+    }
   }
   state.counters["points"] = static_cast<double>(mesh->GetNumberOfPoints());
   state.counters["triangles"] = static_cast<double>(mesh->GetNumberOfPolys());
-  vtkSMPTools::SetBackend(backend.c_str());
-  vtkSMPTools::Initialize(0);
 }
 
 void BM_vtkPolyDataTangents(benchmark::State& state)
@@ -67,20 +123,128 @@ void BM_vtkMikkTSpaceTangents(benchmark::State& state)
 {
   RunFilter<vtkMikkTSpaceTangents>(state);
 }
+
+// The floor: what vtkMikkTSpaceTangents must write on these meshes, the 4-component float
+// tangents of every point (the points, point data and cells are passed on, and no point is
+// split), written by the threads. Fresh (first execution): a new array at every iteration,
+// its pages faulted and cleared by the kernel; warm (re-execution): the same array again.
+void BM_Floor(benchmark::State& state)
+{
+  const Threads threads(static_cast<int>(state.range(0)));
+  SetMemory(state.range(2) == 0);
+  const vtkIdType n = Torus(static_cast<int>(state.range(1)))->GetNumberOfPoints();
+  auto write = [n](vtkFloatArray* tangents)
+  {
+    float* t = tangents->GetPointer(0);
+    vtkSMPTools::For(0, n,
+      [t](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          t[4 * i] = static_cast<float>(i);
+          t[4 * i + 1] = 0.0f;
+          t[4 * i + 2] = 0.0f;
+          t[4 * i + 3] = 1.0f;
+        }
+      });
+    benchmark::DoNotOptimize(t);
+    benchmark::ClobberMemory();
+  };
+  auto allocate = [n]()
+  {
+    auto tangents = vtkSmartPointer<vtkFloatArray>::New();
+    tangents->SetNumberOfComponents(4);
+    tangents->SetNumberOfTuples(n);
+    return tangents;
+  };
+  if (state.range(2) == 0)
+  {
+    for (auto _ : state)
+    {
+      write(allocate());
+    }
+  }
+  else
+  {
+    const auto tangents = allocate();
+    write(tangents);
+    for (auto _ : state)
+    {
+      write(tangents);
+    }
+  }
+  state.counters["MB"] = 16.0 * static_cast<double>(n) / 1e6;
+}
+
+// The console's report, and each case's real time (the median when there are repetitions)
+// for the ratios.
+class Reporter : public benchmark::ConsoleReporter
+{
+public:
+  void ReportRuns(const std::vector<Run>& runs) override
+  {
+    this->ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs)
+    {
+      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+      if (run.run_type == Run::RT_Iteration || median)
+      {
+        const std::string name = run.run_name.function_name + "/" + run.run_name.args;
+        if (median || !this->HasMedian.count(name))
+        {
+          this->Times[name] = run.GetAdjustedRealTime();
+        }
+        this->HasMedian[name] = this->HasMedian[name] || median;
+      }
+    }
+  }
+
+  // The ratios ours/floor and VTK/ours of each case that ran all three.
+  void PrintRatios() const
+  {
+    std::printf("\n| threads | points | execution | ours / floor | VTK / ours |\n");
+    std::printf("|---:|---:|---|---:|---:|\n");
+    for (const char* threads : { "1", "2" })
+    {
+      for (const char* size : { "0", "1" })
+      {
+        for (const char* mode : { "0", "1" })
+        {
+          const std::string args = std::string(threads) + "/" + size + "/" + mode;
+          const auto floor = this->Times.find("BM_Floor/" + args);
+          const auto ours = this->Times.find("BM_vtkMikkTSpaceTangents/" + args);
+          const auto vtk = this->Times.find("BM_vtkPolyDataTangents/" + args);
+          if (floor == this->Times.end() || ours == this->Times.end() || vtk == this->Times.end())
+          {
+            continue;
+          }
+          std::printf("| %s | %s | %s | %.1f | %.2f |\n", threads, size[0] == '0' ? "1M" : "4M",
+            mode[0] == '0' ? "first" : "re-execution", ours->second / floor->second,
+            vtk->second / ours->second);
+        }
+      }
+    }
+  }
+
+private:
+  std::map<std::string, double> Times;
+  std::map<std::string, bool> HasMedian;
+};
 } // namespace
 
-// CPU time of the whole process: with TBB the work can run on worker threads even at one
-// thread, and the main thread's own CPU time then leaves part of it out.
-BENCHMARK(BM_vtkPolyDataTangents)
-  ->ArgsProduct({ { 1, 2 }, { 0, 1 } })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
-BENCHMARK(BM_vtkMikkTSpaceTangents)
-  ->ArgsProduct({ { 1, 2 }, { 0, 1 } })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+// Threads x size x execution. CPU time of the whole process: with TBB the work can run on
+// worker threads even at one thread, and the main thread's own CPU time then leaves part of
+// it out.
+void Cases(benchmark::internal::Benchmark* b)
+{
+  b->ArgsProduct({ { 1, 2 }, { 0, 1 }, { 0, 1 } })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+}
+BENCHMARK(BM_Floor)->Apply(Cases);
+BENCHMARK(BM_vtkPolyDataTangents)->Apply(Cases);
+BENCHMARK(BM_vtkMikkTSpaceTangents)->Apply(Cases);
 
 int main(int argc, char** argv)
 {
@@ -89,8 +253,10 @@ int main(int argc, char** argv)
   {
     return 1;
   }
-  benchmark::RunSpecifiedBenchmarks();
+  Reporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
+  reporter.PrintRatios();
 
   // The reference on the same triangles, unindexed as it takes them (single-threaded WASM).
   for (int size : { 0, 1 })

@@ -125,6 +125,45 @@ void ExpectAffineFrames(vtkPolyData* out, const double A[2][2])
     ASSERT_EQ(t[3], det > 0 ? 1.0 : -1.0) << "point " << i;
   }
 }
+
+// 20000 random triangles and quads over 3000 points whose values take few distinct values
+// (a seeded soup): duplicates, degenerate and non-manifold triangles, shared edges used in
+// the same direction, mixed orientation.
+vtkSmartPointer<vtkPolyData> RandomSoup(int seed)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(seed);
+  auto next = [&random](int n)
+  {
+    random->Next();
+    return static_cast<int>(random->GetValue() * n) % n;
+  };
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals, tcoords;
+  normals->SetNumberOfComponents(3);
+  tcoords->SetNumberOfComponents(2);
+  for (int i = 0; i < 3000; ++i)
+  {
+    const double p[3] = { double(next(6)), double(next(6)), double(next(3)) };
+    points->InsertNextPoint(p);
+    double n[3] = { double(next(3)) - 1, double(next(3)) - 1, 1.0 };
+    vtkMath::Normalize(n);
+    normals->InsertNextTuple(n);
+    tcoords->InsertNextTuple2(next(4) * 0.25, next(4) * 0.25);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int t = 0; t < 20000; ++t)
+  {
+    const int n = 3 + next(3) % 2; // triangles and quads
+    vtkIdType ids[4];
+    for (int k = 0; k < n; ++k)
+    {
+      ids[k] = next(3000);
+    }
+    polys->InsertNextCell(n, ids);
+  }
+  return MakeSurface(points, polys, normals, tcoords);
+}
 } // namespace
 
 TEST(vtkMikkTSpaceTangents, PrintSelf)
@@ -325,33 +364,49 @@ TEST(vtkMikkTSpaceTangents, SplitPointsKeepPointData)
   }
 }
 
+// 1 thread (the sequential backend), 2 (the default backend) and 8 (STDThread, which starts
+// as many threads as asked for whatever the cores): the same frames and cells, bit for bit.
 TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
 {
-  // Split points (sphere poles, mirror line), welded copies (the unwelded torus), a big mesh.
+  // Split points (sphere poles, mirror line), welded copies (the unwelded torus), a big mesh,
+  // non-manifold edges, degenerate triangles and quads (the soup).
   auto sphere = MakeUVSphere(160, 80);
   auto sheet = MakeMirroredSheet(120);
   auto torus = MakeTorus(300, 150);
   auto unwelded = Unweld(MakeTorus(60, 30));
-  for (vtkPolyData* input : { sphere.Get(), sheet.Get(), torus.Get(), unwelded.Get() })
+  auto soup = RandomSoup(4);
+  const std::string backend = vtkSMPTools::GetBackend();
+  for (vtkPolyData* input : { sphere.Get(), sheet.Get(), torus.Get(), unwelded.Get(), soup.Get() })
   {
-    vtkSMPTools::Initialize(1);
+    vtkSMPTools::SetBackend("Sequential");
     FilterRun one(input);
+    vtkSMPTools::SetBackend(backend.c_str());
     vtkSMPTools::Initialize(2);
     FilterRun two(input);
+    if (!vtkSMPTools::SetBackend("STDThread"))
+    {
+      vtkSMPTools::SetBackend(backend.c_str());
+    }
+    vtkSMPTools::Initialize(8);
+    FilterRun eight(input);
+    vtkSMPTools::SetBackend(backend.c_str());
     vtkSMPTools::Initialize(0);
     auto* t1 = vtkFloatArray::SafeDownCast(one.Output()->GetPointData()->GetArray("Tangents"));
-    auto* t2 = vtkFloatArray::SafeDownCast(two.Output()->GetPointData()->GetArray("Tangents"));
     ASSERT_NE(t1, nullptr);
-    ASSERT_NE(t2, nullptr);
-    ASSERT_EQ(t1->GetNumberOfValues(), t2->GetNumberOfValues());
-    EXPECT_EQ(0,
-      std::memcmp(t1->GetPointer(0), t2->GetPointer(0), sizeof(float) * t1->GetNumberOfValues()));
     vtkDataArray* c1 = one.Output()->GetPolys()->GetConnectivityArray();
-    vtkDataArray* c2 = two.Output()->GetPolys()->GetConnectivityArray();
-    ASSERT_EQ(c1->GetNumberOfValues(), c2->GetNumberOfValues());
-    for (vtkIdType i = 0; i < c1->GetNumberOfValues(); ++i)
+    for (FilterRun* other : { &two, &eight })
     {
-      ASSERT_EQ(c1->GetTuple1(i), c2->GetTuple1(i));
+      auto* t = vtkFloatArray::SafeDownCast(other->Output()->GetPointData()->GetArray("Tangents"));
+      ASSERT_NE(t, nullptr);
+      ASSERT_EQ(t1->GetNumberOfValues(), t->GetNumberOfValues());
+      EXPECT_EQ(0,
+        std::memcmp(t1->GetPointer(0), t->GetPointer(0), sizeof(float) * t->GetNumberOfValues()));
+      vtkDataArray* c = other->Output()->GetPolys()->GetConnectivityArray();
+      ASSERT_EQ(c1->GetNumberOfValues(), c->GetNumberOfValues());
+      for (vtkIdType i = 0; i < c1->GetNumberOfValues(); ++i)
+      {
+        ASSERT_EQ(c1->GetTuple1(i), c->GetTuple1(i));
+      }
     }
   }
 }
@@ -719,43 +774,9 @@ TEST(vtkMikkTSpaceTangents, StressHugeFanAndEdge)
   ExpectValidFrames(run.Output());
 }
 
-// A random triangle soup over few distinct values: duplicates, degenerate and
-// non-manifold triangles, shared edges used in the same direction, mixed orientation.
 TEST(vtkMikkTSpaceTangents, StressRandomNonManifoldSoup)
 {
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(4);
-  auto next = [&random](int n)
-  {
-    random->Next();
-    return static_cast<int>(random->GetValue() * n) % n;
-  };
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkFloatArray> normals, tcoords;
-  normals->SetNumberOfComponents(3);
-  tcoords->SetNumberOfComponents(2);
-  for (int i = 0; i < 3000; ++i)
-  {
-    const double p[3] = { double(next(6)), double(next(6)), double(next(3)) };
-    points->InsertNextPoint(p);
-    double n[3] = { double(next(3)) - 1, double(next(3)) - 1, 1.0 };
-    vtkMath::Normalize(n);
-    normals->InsertNextTuple(n);
-    tcoords->InsertNextTuple2(next(4) * 0.25, next(4) * 0.25);
-  }
-  vtkNew<vtkCellArray> polys;
-  for (int t = 0; t < 20000; ++t)
-  {
-    const int n = 3 + next(3) % 2; // triangles and quads
-    vtkIdType ids[4];
-    for (int k = 0; k < n; ++k)
-    {
-      ids[k] = next(3000);
-    }
-    polys->InsertNextCell(n, ids);
-  }
-  auto soup = MakeSurface(points, polys, normals, tcoords);
-  FilterRun run(soup);
+  FilterRun run(RandomSoup(4));
   EXPECT_EQ(run.Errors->Count, 0);
   ExpectValidFrames(run.Output());
   EXPECT_EQ(run.Output()->GetNumberOfPolys(), 20000);
