@@ -1,10 +1,11 @@
 // vtkMikkTSpaceTangents against VTK's vtkPolyDataTangents and against the floor (the bytes
 // the filter must write) on the same tori of about 1M and 4M points (2M and 8M triangles),
-// at 1 and 2 threads, first execution (a new filter each time) and re-execution (the same
-// filter, its input marked modified); then the ratios ours/floor and VTK/ours, and the
+// at 1 and 2 threads, first execution (fresh pages, BenchmarkMemory.h) and re-execution
+// (memory used before); then the ratios ours/floor and VTK/ours, and the
 // reference MikkTSpace (npm package "mikktspace", run by node) on the same triangles, whose
 // median time it prints (one thread: it is single-threaded WebAssembly).
 // See BENCHMARKS.md.
+#include "BenchmarkMemory.h"
 #include "MikkTSpaceTestMeshes.h"
 
 #include "vtkFloatArray.h"
@@ -18,10 +19,6 @@
 #include <iostream>
 #include <map>
 #include <string>
-
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 namespace
 {
@@ -65,50 +62,23 @@ private:
   const std::string Backend;
 };
 
-// Where big blocks come from. First execution: fresh pages from the kernel for every block,
-// as in a new process (glibc otherwise keeps freed blocks once a big one has been freed, and
-// later iterations would run on warm memory that a single first execution does not have).
-// Re-execution: blocks that the previous execution freed, kept warm by the allocator, as in
-// an application that runs the pipeline again.
-void SetMemory(bool fresh)
-{
-#if defined(__GLIBC__)
-  const int big = 1 << 30;
-  mallopt(M_MMAP_THRESHOLD, fresh ? 128 * 1024 : big);
-  mallopt(M_TRIM_THRESHOLD, fresh ? 128 * 1024 : big);
-#else
-  (void)fresh;
-#endif
-}
-
 // Arguments: threads, mesh size, 0 for first execution and 1 for re-execution.
 template <typename Filter>
 void RunFilter(benchmark::State& state)
 {
   const Threads threads(static_cast<int>(state.range(0)));
-  SetMemory(state.range(2) == 0);
+  const bool fresh = state.range(2) == 0;
+  BenchmarkMemory::UseFreshPages(fresh);
   vtkPolyData* mesh = Torus(static_cast<int>(state.range(1)));
-  if (state.range(2) == 0)
+  vtkNew<Filter> filter;
+  filter->SetInputData(mesh);
+  filter->Update();
+  for (auto _ : state)
   {
-    for (auto _ : state)
-    {
-      vtkNew<Filter> filter;
-      filter->SetInputData(mesh);
-      filter->Update();
-      benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
-    }
-  }
-  else
-  {
-    vtkNew<Filter> filter;
-    filter->SetInputData(mesh);
+    BenchmarkMemory::BeginIteration(state, fresh, [&] { filter->GetOutput()->ReleaseData(); });
+    filter->Modified();
     filter->Update();
-    for (auto _ : state)
-    {
-      filter->Modified();
-      filter->Update();
-      benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
-    }
+    benchmark::DoNotOptimize(filter->GetOutput()->GetNumberOfPoints());
   }
   state.counters["points"] = static_cast<double>(mesh->GetNumberOfPoints());
   state.counters["triangles"] = static_cast<double>(mesh->GetNumberOfPolys());
@@ -131,10 +101,24 @@ void BM_vtkMikkTSpaceTangents(benchmark::State& state)
 void BM_Floor(benchmark::State& state)
 {
   const Threads threads(static_cast<int>(state.range(0)));
-  SetMemory(state.range(2) == 0);
+  const bool fresh = state.range(2) == 0;
+  BenchmarkMemory::UseFreshPages(fresh);
   const vtkIdType n = Torus(static_cast<int>(state.range(1)))->GetNumberOfPoints();
-  auto write = [n](vtkFloatArray* tangents)
+  auto allocate = [n]()
   {
+    auto tangents = vtkSmartPointer<vtkFloatArray>::New();
+    tangents->SetNumberOfComponents(4);
+    tangents->SetNumberOfTuples(n);
+    return tangents;
+  };
+  vtkSmartPointer<vtkFloatArray> tangents = allocate();
+  for (auto _ : state)
+  {
+    BenchmarkMemory::BeginIteration(state, fresh, [&] { tangents = nullptr; });
+    if (fresh)
+    {
+      tangents = allocate();
+    }
     float* t = tangents->GetPointer(0);
     vtkSMPTools::For(0, n,
       [t](vtkIdType begin, vtkIdType end)
@@ -149,29 +133,6 @@ void BM_Floor(benchmark::State& state)
       });
     benchmark::DoNotOptimize(t);
     benchmark::ClobberMemory();
-  };
-  auto allocate = [n]()
-  {
-    auto tangents = vtkSmartPointer<vtkFloatArray>::New();
-    tangents->SetNumberOfComponents(4);
-    tangents->SetNumberOfTuples(n);
-    return tangents;
-  };
-  if (state.range(2) == 0)
-  {
-    for (auto _ : state)
-    {
-      write(allocate());
-    }
-  }
-  else
-  {
-    const auto tangents = allocate();
-    write(tangents);
-    for (auto _ : state)
-    {
-      write(tangents);
-    }
   }
   state.counters["MB"] = 16.0 * static_cast<double>(n) / 1e6;
 }
