@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Helpers that add SurfaceDetail's tests in one line each.
 #
 #   surfacedetail_add_gtest(<exe> SOURCES <src>... [MODULES <module>...] [LABELS <label>]

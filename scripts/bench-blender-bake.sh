@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Blender's Cycles bake of BenchNormalMapBaker's mesh pair, the baseline of vtkNormalMapBaker's
 # table in BENCHMARKS.md: writes the two meshes with $BUILD_DIR/bin/BenchNormalMapBaker, then
 # times the bake step (Testing/Benchmarks/BlenderBake.py) at 1024^2 and 2048^2 on 1 and 2

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what is missing, configures and builds SurfaceDetail (Release) in $BUILD_DIR
 # (default: build/ in the source tree).
 set -euo pipefail

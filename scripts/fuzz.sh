@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Fuzzes each libFuzzer target of the sanitizer build (scripts/test-sanitizers.sh builds them
 # into $BUILD_DIR, default build-sanitizers/) for a bounded time: FUZZ_SECONDS (default 60)
 # each, starting from Testing/Fuzz/corpus/<target>. New inputs go to a scratch corpus in the

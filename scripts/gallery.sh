@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: install what is missing, build, render the gallery of example scenes (the seed
 # scenes) as PNG images into $BUILD_DIR/gallery, and write $BUILD_DIR/gallery/index.html, a
 # page that shows every picture with its caption.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian 12 packages SurfaceDetail needs, and only those that are missing,
 # so that a warm machine starts at once.
 set -euo pipefail

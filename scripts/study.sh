@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The run-time-against-error study (Testing/Benchmarks/SurfaceDetailStudy.cxx): builds the
 # program alone and runs it under a virtual X server (Mesa llvmpipe). Writes the CSVs, the
 # Markdown tables and one plot per scene to Documentation/study (or $STUDY_OUT), every rendered

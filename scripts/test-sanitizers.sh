@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The second stage of CI: every test again, built by clang with AddressSanitizer and
 # UndefinedBehaviorSanitizer (in $BUILD_DIR, default build-sanitizers/ in the source tree),
 # warnings as errors. Undefined behaviour stops the program; LeakSanitizer reports leaks at

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # A stage of CI: the threaded sources and filters under ThreadSanitizer. Builds, with clang and
 # -fsanitize=thread in $BUILD_DIR (default build-tsan/ in the source tree), only what the
 # tests of the threaded code need: the thread-count stress test and the unit and accuracy

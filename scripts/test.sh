@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Install what is missing, build, and run every test (unit, accuracy, stress, image) with
 # ctest under a virtual X server (Mesa llvmpipe).
 set -euo pipefail

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // SurfaceDetailMakeData: makes every texture in Data/ from nothing but formulas, so the
 // data can be checked, changed and re-made, never just trusted.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Seed 004's brick wall: the rectangle x in [-2,2], y in [0,3.5] as one quad whose corners
 // carry texture coordinates, as the seed's glTexCoord2f() calls give them (top-left,
 // bottom-left, bottom-right, top-right), five ways side by side:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Seed 000's displacement mapping, p* = p + d(u,v) n, on seed 004's sphere: the points really
 // move (the silhouette is bumpy), and vtkDisplacementMapFilter's four NormalModes shade the
 // moved surface side by side, lit from the upper right:

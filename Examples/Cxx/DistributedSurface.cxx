@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Generates, displaces and writes a large surface under MPI, one piece per rank:
 //
 //   mpirun -np 4 DistributedSurface [--resolution N] [--threads T] [--output surface.pvtp]

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The pipeline of the DistributedSurface example, kept apart so that its test can build the
 // same surface serially and compare it with what the ranks wrote.
 //

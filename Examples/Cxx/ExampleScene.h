@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What the gallery's examples share: textures from Data/, the key light, panel labels, and the
 // picture written to <folder>/<name>.png. Every window has a fixed size and no multisampling,
 // so that a picture is the same on every run and each example can be an image test

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Seed 000's surface detail on seed 004's brick wall: the same flat wall (no displaced
 // geometry) drawn four ways side by side, lit by a point light from the upper right: plain
 // texture, normal mapping, bump mapping and parallax mapping. The textures are the

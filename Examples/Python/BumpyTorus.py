@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Seed 004's bump mapping (Blinn 1978) on seed 000's torus: only the normals are tilted by the
 slopes of a height map. Left: the plain torus; right: vtkSurfaceDetailMapper's BumpMapping with
 a quilt of round bumps, lit from the upper right; the silhouette stays round.

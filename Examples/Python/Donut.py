@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Seed 000's donut, z up: P = ((R + r cos 2 pi v) cos 2 pi u, (R + r cos 2 pi v) sin 2 pi u,
 r sin 2 pi v) with a checkerboard, dark square at (0,0); the checks stay square and meet across
 both seams. (Examples/Cxx/Donut.cxx draws the same.)

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Seed 004's cylinder, a paper lantern: the picture wrapped round vtkParametricCylinder as
 paper is, u round (from +x towards -z) and v up; it reads left to right and upright from
 outside, with no seam where u = 0 meets u = 1. (Examples/Cxx/Lantern.cxx draws the same.)

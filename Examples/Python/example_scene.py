@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 """What the gallery's Python examples share: textures from Data/, the key light, panel labels,
 and the picture written to <folder>/<name>.png. Examples/Cxx/ExampleScene.h is the same for
 the C++ programs, and each script draws the same picture as its C++ twin (they share a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkDisplacementMapFilter
  * @brief   Displaces a surface along its normals by a height map and recomputes the normals.

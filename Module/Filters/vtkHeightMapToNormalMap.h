@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkHeightMapToNormalMap
  * @brief   Turns a height map into a tangent-space normal map (optionally a relief map).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNormalMapBaker
  * @brief   Bakes the normals (and heights) of a detailed mesh into a normal map of a coarse one.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSurfaceDetailBVH.h
  * @brief  Private: a bounding-volume hierarchy over triangles for nearest ray hits.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSurfaceDetailGhosts.h
  * @brief  Private: the ghost-level protocol of the filters that read a point's neighbours.

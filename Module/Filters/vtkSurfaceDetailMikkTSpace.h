@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSurfaceDetailMikkTSpace.h
  * @brief  Private: MikkTSpace tangent frames of the triangles and quads of a cell array.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOIIOImageReader
  * @brief   Reads any 2-D image OpenImageIO can read (PNG, JPEG, TIFF, OpenEXR, HDR, TGA, ...).

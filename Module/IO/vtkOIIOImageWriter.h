@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOIIOImageWriter
  * @brief   Writes a 2-D vtkImageData to any format OpenImageIO writes (PNG, TIFF, OpenEXR, ...).

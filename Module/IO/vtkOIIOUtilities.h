@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkOIIOUtilities.h
  * @brief  Private to SurfaceDetail::IO: the one mapping between VTK and OpenImageIO pixel

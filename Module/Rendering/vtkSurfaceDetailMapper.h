@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSurfaceDetailMapper
  * @brief   Polydata mapper that shades surface detail: normal, bump, parallax and relief mapping.

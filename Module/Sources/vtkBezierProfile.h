@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkBezierProfile
  * @brief   A composite cubic Bézier curve in 2-D with exact derivatives and arc length.

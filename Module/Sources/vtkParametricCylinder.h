@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricCylinder
  * @brief   Seed 004's y-up cylinder (a label wrapped round a can) on the unit square.

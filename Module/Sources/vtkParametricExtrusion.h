@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricExtrusion
  * @brief   Seed 004's extrusion ("love pillar"): a Bézier profile in x-z swept up y.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricRectangle
  * @brief   A parallelogram on the unit square, as seed 004 maps a brick wall.

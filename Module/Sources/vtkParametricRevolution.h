@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricRevolution
  * @brief   Seed 004's surface of revolution ("marble vase"): a Bézier profile turned about y.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricSeparableFunction
  * @brief   A parametric surface whose evaluation splits into work on u alone and on v alone.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricSphere
  * @brief   Seed 004's y-up sphere on the unit square, for equirectangular textures.

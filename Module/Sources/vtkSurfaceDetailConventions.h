@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSurfaceDetailConventions.h
  * @brief  The conventions shared by every SurfaceDetail filter and shader, in one place.

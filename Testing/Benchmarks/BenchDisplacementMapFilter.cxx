@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkDisplacementMapFilter against the VTK chain a user would build today, in the same run:
 //   vtkImageInterpolator (samples the height image at the texture coordinates) ->
 //   vtkWarpScalar (along the normals) -> vtkPolyDataNormals -> vtkPolyDataTangents.

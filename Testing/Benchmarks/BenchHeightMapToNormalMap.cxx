@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkHeightMapToNormalMap on a 4096x4096 float height map, per scheme and output type,
 // against the fastest pipeline of VTK's own imaging filters that produces the same encoded
 // normal map:

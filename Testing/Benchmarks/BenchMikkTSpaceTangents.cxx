@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkMikkTSpaceTangents against VTK's vtkPolyDataTangents and against the floor (the bytes
 // the filter must write) on the same tori of about 1M and 4M points (2M and 8M triangles),
 // at 1 and 2 threads, first execution (fresh pages, BenchmarkMemory.h) and re-execution

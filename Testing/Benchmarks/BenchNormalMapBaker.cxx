@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNormalMapBaker: the seed 000 torus displaced by vtkDisplacementMapFilter into 1M
 // triangles, baked onto a 32 x 16 coarse torus into 1024^2 and 2048^2 maps at 1 and 2
 // threads: time, rays per second (one ray per covered texel) and peak memory. A 64^2 bake

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Whether the big arrays a benchmark case allocates get fresh pages from the kernel or memory
 // the process has used before.
 //

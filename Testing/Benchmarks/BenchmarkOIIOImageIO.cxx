@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkOIIOImageReader / vtkOIIOImageWriter against VTK's own vtkPNGReader / vtkPNGWriter on
 // the same 2048 x 2048 texture, in the same run. Both sides decode or encode the whole
 // file through a pipeline Update(); the file is in the page cache after the first pass.

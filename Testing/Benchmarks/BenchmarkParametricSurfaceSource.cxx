@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkParametricSurfaceSource against VTK's own way of getting the same arrays, in one run:
 // - torus: vtkParametricFunctionSource (points, normals, texture coordinates) followed by
 //   vtkPolyDataTangents, both on vtkParametricTorus;

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Blender's Cycles bake of the mesh pair of BenchNormalMapBaker, for comparing times with
 # vtkNormalMapBaker (BENCHMARKS.md, scripts/bench-blender-bake.sh):
 #

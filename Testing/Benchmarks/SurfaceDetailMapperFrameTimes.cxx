@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Frame-time harness: vtkSurfaceDetailMapper (each technique, relief at several settings)
 // against VTK's plain vtkOpenGLPolyDataMapper, the same textured surface filling the window.
 // All variants are actors of one renderer, shown one at a time and interleaved frame by

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Run time against error for every way of showing surface detail, scene by scene.
 //
 // Each scene (a brick wall head-on and at 70 degrees, a bumpy sphere, a torus with sharp

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Pieces shared by the files of the SurfaceDetailStudy program: the result rows, the Pareto
 // front, the plot, and the CPU filter study.
 #ifndef SurfaceDetailStudy_h

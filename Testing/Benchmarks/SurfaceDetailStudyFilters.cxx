@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The study's CPU part: each filter's accuracy against a closed form, and its time.
 // - vtkParametricSurfaceSource: the sphere and the donut at rising resolution; how far the
 //   flat triangles stray from the surface (at their centroids) and how far the shading normal

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The study's plots: image error against frame time for one scene, drawn with VTK's own
 // charts (vtkChartXY in an offscreen vtkContextView) and written as a PNG.
 

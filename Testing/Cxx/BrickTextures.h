@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The procedural brick wall the image tests share: a height field (bricks at height 1,
 // mortar joints at 0, a smooth bevel between) and a colour texture of the same layout, 4
 // courses of 2 bricks per texture square, every other course offset by half a brick.

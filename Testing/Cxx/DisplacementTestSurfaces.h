@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Closed-form test surfaces for vtkDisplacementMapFilter's tests and benchmarks, built
 // here from their formulas and nothing else: the filter's own code is never used to make
 // the truth it is checked against.

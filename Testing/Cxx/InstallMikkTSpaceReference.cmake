@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the reference MikkTSpace (npm package "mikktspace", pinned) into PREFIX once.
 # Run by the ctest fixture MikkTSpaceReference; any failure fails that test, and ctest then
 # does not run (and reports as failed) the compatibility tests that need it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * Meshes for the vtkMikkTSpaceTangents tests and benchmark, and the bridge to the
  * reference MikkTSpace (the npm package "mikktspace", run by node on an unindexed

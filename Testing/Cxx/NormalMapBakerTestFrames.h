@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Meshes and frames for the tests and the benchmark of vtkNormalMapBaker: the detailed mesh
 // (a DisplacementTestSurfaces.h surface displaced by vtkDisplacementMapFilter), and the frame of
 // a coarse MakeMesh grid at any texture coordinate, rebuilt from the mesh's own arrays the way

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers shared by the parametric-surface GoogleTest programs (issue 3).
 #ifndef ParametricSurfaceTestHelpers_h
 #define ParametricSurfaceTestHelpers_h

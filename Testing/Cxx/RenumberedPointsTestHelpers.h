@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Copies of a test mesh with its points given other ids, for tests that show that a filter's
 // result at a point depends on the point's data and neighbours, not on its id (nor on where
 // its id falls in the filter's blocks and tasks).

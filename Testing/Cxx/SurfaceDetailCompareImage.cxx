@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The strict image comparison (SurfaceDetailImageComparison.h) for a picture that another
 // program wrote: an example, a Python script. VTK's conventions: the candidate is compared
 // with -V <baseline.png> and its alternates; on failure the candidate and the difference

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The project's strict regression-image comparison. VTK 9.1's vtkRegressionTestImageThreshold
 // (vtkImageDifference: 3x3 averaging, a one-pixel shift, and 105 levels per channel ignored)
 // passes a scene whose surface detail is switched off, so every image test compares with this

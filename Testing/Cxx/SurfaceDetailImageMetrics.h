@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Image error measures for comparing a rendering with a reference over the pixels an object
 // covers: RMSE and PSNR on 8-bit RGB, and SSIM (Wang, Bovik, Sheikh & Simoncelli 2004, "Image
 // quality assessment: from error visibility to structural similarity") on luminance. VTK 9.1

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Scenes in which surface detail is judged against the surface it stands for: a parametric
 // surface with a coarse tessellation (what the mapper draws on) and a dense one displaced by
 // vtkDisplacementMapFilter with Scale = depth and Midlevel 1 (the truth, DESIGN.md's meaning

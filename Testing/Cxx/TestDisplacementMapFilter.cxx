@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkDisplacementMapFilter: sampling against an independent OpenGL-spec reference, seams,
 // poles, threads, pieces, Scale 0, stress (huge Scale, 1x1 / 2x2 / 8192x8192 / constant /
 // NaN height maps) and bad input.

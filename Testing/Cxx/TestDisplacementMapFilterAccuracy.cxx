@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkDisplacementMapFilter against closed forms: a sphere, a torus and a rectangle,
 // displaced by a smooth analytic height sampled into a fine image, compared with the
 // analytic displaced surface and its exact normal (DisplacementTestSurfaces.h). Prints

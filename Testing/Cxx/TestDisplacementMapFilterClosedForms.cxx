@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkDisplacementMapFilter against truths computed here from the inputs alone:
 // - a pole where 201 points coincide, each with its own texture coordinate: the pole
 //   moves by the mean of every member's own displacement, sampled by an independent

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkDisplacementMapFilter on surfaces with hard edges: a cube (vtkCubeSource) and a faceted
 // sphere (vtkSphereSource through vtkPolyDataNormals with splitting). At a hard edge several
 // points share a position but not a normal. With MergeSeams on, they must move together (by

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkDisplacementMapFilter fed by the real vtkParametricSurfaceSource (vtkParametricSphere
 // with dPdu/dPdv, dNdu/dNdv and tangents): the displaced points and normals against the closed form
 // of the displaced sphere (DisplacementTestSurfaces.h), the texture seam crack-free and the

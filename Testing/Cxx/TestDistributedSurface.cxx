@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Under `mpirun -np N`, each rank makes its own piece (piece = rank of N) of several
 // pipelines, source -> vtkDisplacementMapFilter [-> vtkMikkTSpaceTangents], and rank 0
 // checks that the pieces together are the serial surface, which it computes itself with the

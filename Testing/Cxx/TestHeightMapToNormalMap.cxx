@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkHeightMapToNormalMap against independent truths: analytic normals of z = k*h(s,t)
 // (convergence order per scheme), a hand-worked 4x4 example of the seed's Forward formula,
 // hand-picked neighbours at every border for every wrap mode, vtkImageGradient as a second

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkHeightMapToNormalMap's Sobel and Scharr schemes against their published 3x3 kernels.
 // Smooth heights cannot tell the cross weights apart (any symmetric smoothing of a central
 // difference is second order), so the maps here have single raised texels: every texel within

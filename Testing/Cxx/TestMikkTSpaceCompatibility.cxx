@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkMikkTSpaceTangents against the reference MikkTSpace (npm package "mikktspace", a
 // WebAssembly build of the reference algorithm, run by node) on the same meshes: per
 // triangle corner, the angle between the two tangents and the handedness.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkMikkTSpaceTangents: closed-form frames, bad input, degenerate input (stress), kept
 // arrays and cells, thread-count independence.
 #include "MikkTSpaceTestMeshes.h"

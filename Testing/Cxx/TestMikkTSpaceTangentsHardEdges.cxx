@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkMikkTSpaceTangents at a hard edge. MikkTSpace welds corners by value, and its key is the
 // position, the normal and the texture coordinate: corners on the two sides of a hard edge
 // share position and texture coordinate but not the normal, and must stay apart. Joined, they

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The GLSL twin of the normal coding (Module/Rendering/glsl/vtkSurfaceDetailNormalCoding.glsl)
 // agrees with the C++ one (vtkSurfaceDetailConventions.h EncodeNormal/DecodeNormal): a
 // fragment shader decodes a pattern of colours as green-down normals and re-encodes them

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNormalMapBaker against truth. The detailed meshes are displaced tori and spheres
 // (DisplacementTestSurfaces.h, displaced by vtkDisplacementMapFilter with Exact normals); the
 // coarse meshes are the same undisplaced surfaces at low resolution. Every covered texel is

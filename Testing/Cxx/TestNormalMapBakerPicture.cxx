@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The point of baking, as a picture: on the left the detailed torus (590,000 triangles, displaced
 // by vtkDisplacementMapFilter with Exact normals) through the plain vtkOpenGLPolyDataMapper; on the
 // right the 48 x 24 coarse torus with the map vtkNormalMapBaker baked from it, through

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // How far vtkNormalMapBaker's rays reach. A flat coarse square at z = 0 (normal +z) is baked
 // against a flat detailed square at z = offset, just inside or just outside the reach:
 // - without a cage, rays go both ways from the coarse surface up to MaxRayDistance: a detailed

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkOIIOImageReader / vtkOIIOImageWriter: exact round trips for the lossless formats,
 // orientation checked against independent programs (VTK's own PNG reader and writer,
 // libjpeg-turbo's cjpeg), the factory registration, and every bad input.

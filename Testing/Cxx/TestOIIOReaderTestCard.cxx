@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Data/test_card.png read by vtkOIIOImageReader and shown on a screen-filling rectangle
 // whose texture coordinates run from (0,0) bottom-left to (1,1) top-right: the words must
 // read upright, TOP at the top, LEFT on the left, "(0,0)" in the bottom-left corner. A

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Accuracy of vtkParametricSurfaceSource against closed-form surfaces written out here, in
 // the test, from the seeds' formulas (seed 004: sphere, cylinder, rectangle; seed 000:
 // donut) and from VTK's documented formulas (vtkParametricTorus, vtkParametricEllipsoid).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkParametricSurfaceSource as a pipeline citizen: pieces add up to the serial surface,
 // thread counts do not change a byte, bad input gives a clear error and an empty output,
 // and sweeps over degenerate and extreme surfaces give finite unit frames (or an error).

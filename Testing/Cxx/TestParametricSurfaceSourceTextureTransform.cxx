@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkParametricSurfaceSource's texture transform (TextureRepeat, TextureOffset) on seed 004's
 // sphere, for repeats of either sign and of different sizes along s and t:
 // - texture coordinates are offset + repeat * (i/U, j/V), and the source declares that map on

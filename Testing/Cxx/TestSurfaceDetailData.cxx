@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The textures in Data/ are what Data/README.md says they are: sizes, types, channels,
 // which way up, brick heights (mortar low, faces high, bevels rising) and seamless tiling.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The study's image error measures (SurfaceDetailImageMetrics.h) against values worked out by
 // hand from Wang et al.'s definitions, and against the properties SSIM is made to have:
 // identical images score exactly 1, a change of mean brightness costs far less than noise of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Analytic image tests for vtkSurfaceDetailMapper. An orthographic camera looks at a
 // rectangle lit by one directional scene light; the expected picture is computed on the
 // CPU from closed forms: the normal of a known height function h(s,t) in tangent space,

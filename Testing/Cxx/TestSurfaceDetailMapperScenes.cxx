@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression scenes for vtkSurfaceDetailMapper: one technique on one brick-textured surface
 // from vtkParametricSurfaceSource, seen head-on or obliquely, under the headlight or a
 // positional light. Arguments:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Rendering torture: normal, bump, parallax and relief mapping (with self-shadowing and
 // depth correction, from a relief map and from the height map alone) seen at grazing angles (85
 // to 89.9 degrees from the normal) and with the camera very close to the surface. Each picture is

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Relief mapping against ground truth. The truth is the relief's own definition made real:
 // the mesh displaced by vtkDisplacementMapFilter (Scale = DepthScale, Midlevel 1, Exact
 // normals), tessellated finely enough that doubling it changes the picture much less than the

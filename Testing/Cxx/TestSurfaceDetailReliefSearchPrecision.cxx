@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Relief mapping's search precision, as a number. With DepthCorrection the fragment's depth
 // is that of the hit the search found, so the depth buffer tells where each view ray met the
 // height field; it is compared with the analytic intersection, computed here.

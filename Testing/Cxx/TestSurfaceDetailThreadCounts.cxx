@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Every threaded filter, run again and again on one input with 1, 2, 3, 4 and 8 threads, under
 // each SMP backend VTK was built with (TBB, whose tasks are split and stolen differently from
 // run to run; STDThread, whose chunks follow the thread count, up to the machine's cores), gives

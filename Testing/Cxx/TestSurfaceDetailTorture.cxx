@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Randomised torture of every source and filter over extreme parameters and hostile input.
 // Each case must end in one of two ways: a clear error (an ErrorEvent) and an empty output,
 // or an output that is sound: finite points, unit normals, orthonormal tangent frames with

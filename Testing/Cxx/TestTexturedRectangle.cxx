@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The first image test: a screen-filling rectangle textured with a quadrant card whose
 // colours say where row 0 of the image landed (bottom-left red, bottom-right green,
 // top-left blue, top-right white). With --flip the texture is turned upside down, which

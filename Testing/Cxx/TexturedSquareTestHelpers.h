@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene of the image tests that check where a texture's rows land on screen
 // (TestTexturedRectangle, TestOIIOReaderTestCard): the texture, unshaded, on a square that
 // fills a 256x256 window, texture coordinates (0,0) bottom-left to (1,1) top-right, seen

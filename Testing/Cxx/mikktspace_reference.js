@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs the reference MikkTSpace (npm package "mikktspace", a WebAssembly build of the
 // reference algorithm) on an unindexed triangle list written by the C++ tests.
 //   node mikktspace_reference.js <module dir> <in.bin> <out.bin> [repetitions]

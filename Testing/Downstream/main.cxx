@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Uses SurfaceDetail::IO and SurfaceDetail::Filters from an installed package: writes an
 // OpenEXR image with vtkOIIOImageWriter, reads it back through vtkImageReader2Factory
 // (which must hand out vtkOIIOImageReader, registered by loading the shared library or, for

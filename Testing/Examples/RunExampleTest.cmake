@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Run by ctest for each example (Testing/Examples/CMakeLists.txt): runs COMMAND with a fresh
 # OUTPUT_DIR as its last argument, then compares OUTPUT_DIR/IMAGE with BASELINE by the strict
 # comparison (COMPARE, SurfaceDetailCompareImage), which leaves the candidate and the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkDisplacementMapFilter on small arbitrary meshes (FuzzInput.h) and
 // height maps, in every mode.
 #include "FuzzInput.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkHeightMapToNormalMap on small images of arbitrary floats (NaN and
 // infinities included) with arbitrary parameters.
 #include "FuzzInput.h"

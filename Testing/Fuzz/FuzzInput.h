@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Reads a fuzzer's bytes as the small values the targets need; past the end it gives zeros,
 // so every input, however short, is a valid case.
 #ifndef FuzzInput_h

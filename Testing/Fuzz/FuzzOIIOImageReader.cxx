@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkOIIOImageReader on arbitrary bytes, written to a temporary file whose
 // extension is the format the first bytes claim (so OpenImageIO's decoder for that format
 // gets them, as it would for a damaged file of that name).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Run by ctest (TestPythonImportInstalled): installs the build tree into a scratch prefix and
 # runs TestPythonImport.py against that prefix alone. Neither PYTHONPATH's build-tree folder
 # nor LD_LIBRARY_PATH is set: the installed modules must find their libraries by themselves.

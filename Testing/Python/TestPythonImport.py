@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+# SPDX-License-Identifier: BSD-3-Clause
 """`import surfacedetail` from the Python that VTK's own modules are built for, and every
 class working with VTK's Python objects.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Bump mapping (Blinn 1978) from a height map h(s,t). sdHeightMap holds (h, dh/ds, dh/dt)
 // per texel, or only (dh/ds, dh/dt) for bump mapping, which needs no height (SD_GRADIENT,
 // defined by the mapper, names the two channels), the derivatives by forward (seed 000's Cg code) or central differences at the

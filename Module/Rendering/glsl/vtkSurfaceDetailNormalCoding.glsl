@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Normal-map coding shared by SurfaceDetail's shaders. This is the GLSL twin of
 // EncodeNormal/DecodeNormal in Module/Filters/vtkSurfaceDetailConventions.h: change one,
 // change the other. A normal map stores 0.5*n + 0.5 per component in tangent space,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Normal mapping: the tangent-space normal from the normal map, decoded as sdDecodeNormal
 // (vtkSurfaceDetailNormalCoding.glsl, the twin of the conventions header) does, the
 // strength scaling the tangential part as vtkProperty's NormalScale does. sdNormalScaleXY

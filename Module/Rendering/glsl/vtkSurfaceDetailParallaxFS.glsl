@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Parallax mapping with offset limiting (Welsh 2004). The height map's first channel is the
 // height h; the surface seen at a fragment lies DepthScale*(1 - h) below the mesh along its
 // normal (DESIGN.md: depth in object units, the top of the relief is the mesh itself). The

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Relief mapping's depth correction, after vtkSurfaceDetailReliefFS.glsl: the window depth
 // of the hit instead of the mesh's, written to gl_FragDepth by the mapper: the fragment
 // moved along the view ray to the hit, projected.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Relief mapping (Policarpo, Oliveira & Comba 2005, seed 000). The mesh is the top of a
 // box DepthScale deep (object units, DESIGN.md); depth d in [0,1] is SD_RELIEF_DEPTH(tc)
 // (the relief map's alpha, or 1 - h of the height map, defined by the mapper). The eye ray

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Relief mapping's self-shadowing (Policarpo, Oliveira & Comba 2005), after
 // vtkSurfaceDetailReliefFS.glsl, whose march leaves the hit and the frame in its globals.
 // The mapper passes each of VTK's per-light diffuse terms through sdShadowed.

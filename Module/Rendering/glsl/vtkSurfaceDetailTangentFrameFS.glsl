@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
 // SurfaceDetail tangent frame (the convention of Module/Filters/vtkSurfaceDetailConventions.h):
 // T is made orthogonal to the mesh normal N, B = w*cross(N,T), and a tangent-space normal n
 // is n.x*T + n.y*B + n.z*N in the mesh's own coordinates. That vector is a normal, so it
