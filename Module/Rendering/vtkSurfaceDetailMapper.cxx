@@ -5,6 +5,7 @@
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkImageData.h"
@@ -103,7 +104,10 @@ void vtkSurfaceDetailMapper::SetUniformSetting(T& member, T value)
   if (member != value)
   {
     member = value;
+    // What Modified() does, but on the time that GetMTime leaves out while the superclass
+    // decides whether to rebuild: observers hear of the change, the shader stays.
     this->UniformTime.Modified();
+    this->InvokeEvent(vtkCommand::ModifiedEvent, nullptr);
   }
 }
 
@@ -145,8 +149,22 @@ void vtkSurfaceDetailMapper::SetAdaptiveSteps(bool adaptive)
 //------------------------------------------------------------------------------
 vtkMTimeType vtkSurfaceDetailMapper::GetMTime()
 {
-  const vtkMTimeType mtime = this->Superclass::GetMTime();
-  return this->IgnoreUniformTime ? mtime : std::max(mtime, this->UniformTime.GetMTime());
+  vtkMTimeType mtime = this->Superclass::GetMTime();
+  if (this->IgnoreUniformTime)
+  {
+    return mtime;
+  }
+  // The maps' own changes reach the picture through their textures and uploads, not through
+  // the shader, so they too are left out of the rebuild decision.
+  mtime = std::max(mtime, this->UniformTime.GetMTime());
+  for (vtkTexture* map : { this->NormalMap, this->HeightMap, this->ReliefMap })
+  {
+    if (map)
+    {
+      mtime = std::max(mtime, map->GetMTime());
+    }
+  }
+  return mtime;
 }
 
 //------------------------------------------------------------------------------
@@ -201,8 +219,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
     vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
     vtkImageData* reliefImage = usesReliefMap ? TextureImage(this->ReliefMap) : nullptr;
-    vtkDataArray* reliefScalars =
-      reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
+    vtkDataArray* reliefScalars = reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
     std::ostringstream err;
     double heightScale = 1.0;
     const char* name = GetTechniqueAsString(technique);
@@ -743,8 +760,8 @@ void vtkSurfaceDetailMapper::AddReliefShadows(std::string& fs)
   const std::string headlight = "float df = max(0.0,normalVCVSOutput.z);";
   auto lights = std::distance(std::sregex_iterator(fs.begin(), fs.end(), sceneLight), {});
   fs = std::regex_replace(fs, sceneLight, "$1\n  df = sdShadowed(df, -$2);");
-  if (vtkShaderProgram::Substitute(fs, headlight,
-        headlight + "\n  df = sdShadowed(df, vec3(0.0, 0.0, 1.0));"))
+  if (vtkShaderProgram::Substitute(
+        fs, headlight, headlight + "\n  df = sdShadowed(df, vec3(0.0, 0.0, 1.0));"))
   {
     ++lights;
   }

@@ -59,8 +59,9 @@
  * DepthCorrection), never per frame; strengths, scales, step counts, GreenUp and the maps
  * themselves are uniforms and textures. Changing NormalStrength, GreenUp, BumpScale,
  * DepthScale, LinearSearchSteps, BinarySearchSteps or AdaptiveSteps modifies the
- * mapper (GetMTime) but neither rebuilds the shader nor re-uploads the vertex buffers: the
- * next render just sets the new uniform. The height map is
+ * mapper (GetMTime, and a ModifiedEvent for observers) but neither rebuilds the shader nor
+ * re-uploads the vertex buffers: the next render just sets the new uniform. GetMTime also
+ * includes the normal, height and relief maps' textures. The height map is
  * uploaded as a float texture holding h and its finite differences (Differences), so bump
  * mapping reads one texel per fragment.
  *

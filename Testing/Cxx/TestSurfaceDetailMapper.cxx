@@ -13,6 +13,7 @@
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
@@ -432,6 +433,53 @@ vtkSmartPointer<vtkSurfaceDetailMapper> MakeMapper(vtkPolyData* poly)
   return mapper;
 }
 } // namespace
+
+// A uniform-only setting (no shader rebuild) still modifies the mapper for the pipeline and its
+// observers, and a change of one of its maps' textures shows in its MTime, as a texture on a
+// vtkProperty shows in the actor's.
+TEST(vtkSurfaceDetailMapper, MTimeFollowsSettingsAndMaps)
+{
+  vtkNew<vtkSurfaceDetailMapper> mapper;
+  int events = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&events);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  mapper->AddObserver(vtkCommand::ModifiedEvent, count);
+  // Each setter, with a value other than its current one.
+  const std::vector<std::function<void()>> settings = {
+    [&] { mapper->SetNormalStrength(mapper->GetNormalStrength() + 1.0); },
+    [&] { mapper->SetBumpScale(mapper->GetBumpScale() + 1.0); },
+    [&] { mapper->SetDepthScale(mapper->GetDepthScale() + 1.0); },
+    [&] { mapper->SetLinearSearchSteps(mapper->GetLinearSearchSteps() + 1); },
+    [&] { mapper->SetBinarySearchSteps(mapper->GetBinarySearchSteps() + 1); },
+    [&] { mapper->SetGreenUp(!mapper->GetGreenUp()); },
+    [&] { mapper->SetAdaptiveSteps(!mapper->GetAdaptiveSteps()); }
+  };
+  for (const auto& change : settings)
+  {
+    const vtkMTimeType before = mapper->GetMTime();
+    const int heard = events;
+    change();
+    EXPECT_GT(mapper->GetMTime(), before);
+    EXPECT_EQ(events, heard + 1);
+  }
+  // The same value again is no change.
+  const int heard = events;
+  mapper->SetBumpScale(mapper->GetBumpScale());
+  mapper->SetGreenUp(mapper->GetGreenUp());
+  EXPECT_EQ(events, heard);
+  vtkNew<vtkTexture> normal, height, relief;
+  mapper->SetNormalMap(normal);
+  mapper->SetHeightMap(height);
+  mapper->SetReliefMap(relief);
+  for (vtkTexture* map : { normal.Get(), height.Get(), relief.Get() })
+  {
+    const vtkMTimeType before = mapper->GetMTime();
+    map->SetRepeat(!map->GetRepeat());
+    EXPECT_GT(mapper->GetMTime(), before);
+  }
+}
 
 TEST(vtkSurfaceDetailMapper, NormalMapMatchesAnalyticShading)
 {
@@ -858,8 +906,8 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     { "int height map", MakeRectangle(false, false), vtkSurfaceDetailMapper::ParallaxMapping,
       nullptr, typed(VTK_INT, 1, true) },
     // Relief needs a relief map (RGBA) or a height map, and tangents for a relief map.
-    { "relief without maps", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
-      nullptr, nullptr },
+    { "relief without maps", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping, nullptr,
+      nullptr },
     { "three-channel relief map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
       nullptr, nullptr, typed(VTK_UNSIGNED_CHAR, 3, false) },
     { "unsigned short relief map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
@@ -1044,7 +1092,10 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   EXPECT_EQ(mapper->Builds, relief) << "a step setting rebuilt the shader text";
   // The code of a feature that is off is not in the program.
   auto fragmentHas = [&](const char* code)
-  { return mapper->TrianglesProgram()->GetFragmentShader()->GetSource().find(code) != std::string::npos; };
+  {
+    return mapper->TrianglesProgram()->GetFragmentShader()->GetSource().find(code) !=
+      std::string::npos;
+  };
   EXPECT_TRUE(fragmentHas("sdReliefIntersect"));
   EXPECT_FALSE(fragmentHas("sdReliefShadow"));
   EXPECT_FALSE(fragmentHas("gl_FragDepth ="));
