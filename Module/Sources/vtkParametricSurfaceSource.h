@@ -105,12 +105,14 @@ public:
 
   ///@{
   /**
-   * Number of grid intervals along u and v (cells per row and rows). At least 1; default
-   * 64 x 32. Values below 1 are reported as an error when the source executes.
+   * Number of grid intervals along u and v (cells per row and rows), clamped to at least 1.
+   * Default 64 x 32: the round surfaces turn once in u and go half-way round (the sphere, a
+   * meridian) or once in v, so twice the intervals in u keeps their quads near square, where
+   * vtkParametricFunctionSource's 50 x 50 stretches a sphere's.
    */
-  vtkSetMacro(UResolution, int);
+  vtkSetClampMacro(UResolution, int, 1, VTK_INT_MAX);
   vtkGetMacro(UResolution, int);
-  vtkSetMacro(VResolution, int);
+  vtkSetClampMacro(VResolution, int, 1, VTK_INT_MAX);
   vtkGetMacro(VResolution, int);
   ///@}
 
