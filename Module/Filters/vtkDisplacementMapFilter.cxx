@@ -25,6 +25,7 @@
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailGhosts.h"
+#include "vtkSurfaceDetailProgress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,14 @@ namespace
 {
 using namespace vtkDisplacement;
 using vtkSurfaceDetail::Dot;
+
+// How an execution ended.
+enum class Outcome
+{
+  Done,
+  BadPointIds, // a polygon names a point the input does not have
+  Aborted      // AbortExecute was set while it ran
+};
 
 // A new float or double array of @a n tuples.
 vtkSmartPointer<vtkDataArray> NewArray(int type, const char* name, int nc, vtkIdType n)
@@ -88,6 +97,7 @@ struct Displacer
   const HeightSampler& Map;
   const Fits<R, Id>& FitSums;
   vtkSMPThreadLocal<std::vector<double>>& Scratch; // each thread's sums over polygons
+  vtkSurfaceDetail::Progress& Progress;
   double Scale;
   double Midlevel;
   int Mode;
@@ -195,7 +205,7 @@ struct Displacer
       this->FitSums.Make(begin, end, sums);
     }
     PointBlock b;
-    for (vtkIdType first = begin; first < end; first += Block)
+    for (vtkIdType first = begin; first < end && !this->Progress.Aborted(); first += Block)
     {
       b.Span(first, static_cast<int>(std::min<vtkIdType>(Block, end - first)));
       this->Sample(b);
@@ -212,6 +222,7 @@ struct Displacer
         Directions<Exact>(b);
         WriteNormalsAndTangents(this->In, this->Out, b);
       }
+      this->Progress.Advance(b.Count);
     }
   }
 
@@ -220,6 +231,10 @@ struct Displacer
   void MeshNormals(
     const vtkDisplacement::MeshNormals<R, Id>& mesh, vtkIdType begin, vtkIdType end) const
   {
+    if (this->Progress.Aborted())
+    {
+      return;
+    }
     std::vector<double>& sums = this->Scratch.Local();
     mesh.Make(begin, end, sums);
     PointBlock b;
@@ -235,6 +250,7 @@ struct Displacer
         b.Mz[k] = m[2];
       }
       WriteNormalsAndTangents(this->In, this->Out, b);
+      this->Progress.Advance(b.Count);
     }
   }
 };
@@ -275,10 +291,10 @@ public:
     in.TangentsNC = tangents ? tangents->GetNumberOfComponents() : 4;
   }
 
-  // Displaces the input by the height map @a image, with the polygons as @a polys. False
-  // where a polygon names a point the input does not have (nothing is read through it).
+  // Displaces the input by the height map @a image, with the polygons as @a polys. Nothing is
+  // read through a polygon that names a point the input does not have (BadPointIds).
   template <typename Id>
-  bool Run(const Polygons<Id>& polys, vtkImageData* image)
+  Outcome Run(const Polygons<Id>& polys, vtkImageData* image)
   {
     vtkDisplacementMapFilter* f = this->Filter;
     const int mode = f->GetNormalMode();
@@ -286,7 +302,7 @@ public:
     const CellRuns runs(polys);
     if (!runs.IdsWithin(n))
     {
-      return false;
+      return Outcome::BadPointIds;
     }
     this->AllocateOutputs(mode);
     if (this->In.DPdu &&
@@ -308,17 +324,21 @@ public:
     const std::unique_ptr<HeightSampler> map = MakeHeightSampler(
       image, f->GetComponent(), f->GetWrap(), f->GetInterpolation(), f->GetMidlevel());
     vtkSMPThreadLocal<std::vector<double>> scratch;
-    const Displacer<R, Id> pass{ this->In, this->Out, *map, fits, scratch, f->GetScale(),
+    const bool mesh = mode == vtkDisplacementMapFilter::Mesh;
+    vtkSurfaceDetail::Progress progress(f, 0.2, 0.95, mesh ? 2 * n : n);
+    const Displacer<R, Id> pass{ this->In, this->Out, *map, fits, scratch, progress, f->GetScale(),
       f->GetMidlevel(), mode };
     vtkSMPTools::For(0, n, grain, pass);
     MergeSeamPoints(pass, groups);
-    f->UpdateProgress(0.7);
-
-    if (mode == vtkDisplacementMapFilter::Mesh)
+    if (mesh)
     {
-      const vtkDisplacement::MeshNormals<R, Id> mesh{ this->In, polys, runs, this->Out.Points };
+      const vtkDisplacement::MeshNormals<R, Id> sums{ this->In, polys, runs, this->Out.Points };
       vtkSMPTools::For(
-        0, n, grain, [&](vtkIdType begin, vtkIdType end) { pass.MeshNormals(mesh, begin, end); });
+        0, n, grain, [&](vtkIdType begin, vtkIdType end) { pass.MeshNormals(sums, begin, end); });
+    }
+    if (progress.Aborted())
+    {
+      return Outcome::Aborted;
     }
     if (mode != vtkDisplacementMapFilter::None)
     {
@@ -332,7 +352,7 @@ public:
            << " of the height map are NaN or infinite; they are treated as Midlevel ("
            << f->GetMidlevel() << ").");
     }
-    return true;
+    return Outcome::Done;
   }
 
   // The input's structure and arrays, with the new points, normals and tangents.
@@ -629,19 +649,21 @@ int vtkDisplacementMapFilter::RequestData(
   }
   const bool allFloat = std::all_of(
     used.begin(), used.end(), [](vtkDataArray* a) { return !a || a->GetDataType() == VTK_FLOAT; });
-  bool done = false;
+  Outcome outcome = Outcome::Done;
   auto run = [&](auto precision)
   {
     Execution<decltype(precision)> x(
       this, input, this->InputTangents(input), derivatives, normalDerivatives);
-    WithPolygons(input->GetPolys(), [&](const auto& polys) { done = x.Run(polys, image); });
-    if (done)
+    WithPolygons(input->GetPolys(), [&](const auto& polys) { outcome = x.Run(polys, image); });
+    if (outcome == Outcome::Done)
     {
       x.Output(output);
     }
   };
   this->UpdateProgress(0.0);
-  if (allFloat)
+  const bool single = this->OutputPointsPrecision == SINGLE_PRECISION ||
+    (this->OutputPointsPrecision == DEFAULT_PRECISION && allFloat);
+  if (single)
   {
     run(float());
   }
@@ -649,14 +671,26 @@ int vtkDisplacementMapFilter::RequestData(
   {
     run(double());
   }
-  if (!done)
+  if (outcome == Outcome::BadPointIds)
   {
     this->ReportBadPointIds(input->GetNumberOfPoints());
     return 0;
   }
+  if (outcome == Outcome::Aborted)
+  {
+    // Stopped by the user (AbortExecute): no error, and no half-made output.
+    output->Initialize();
+    return 1;
+  }
   this->UpdateProgress(1.0);
   vtkSurfaceDetailGhosts::RemoveUnrequested(outputVector->GetInformationObject(0), output);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkDisplacementMapFilter::SetSourceData(vtkImageData* image)
+{
+  this->SetInputData(1, image);
 }
 
 //------------------------------------------------------------------------------
@@ -713,4 +747,5 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";
   os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
 }

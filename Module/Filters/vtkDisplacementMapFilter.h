@@ -126,6 +126,7 @@
 #include "SurfaceDetailFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkImageData;
 
@@ -241,6 +242,29 @@ public:
   vtkGetMacro(SeamTolerance, double);
   ///@}
 
+  ///@{
+  /**
+   * The precision of the output points, normals and tangents, as vtkAlgorithm's
+   * DesiredOutputPrecision: DEFAULT_PRECISION (default) float when the points and every array
+   * the filter reads are float, else double; SINGLE_PRECISION float; DOUBLE_PRECISION double.
+   * The arrays are read in that precision (a converted copy where one differs); the computation
+   * is in double either way.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  ///@{
+  /**
+   * The height map: shortcuts for SetInputConnection(1, ...) and SetInputData(1, ...).
+   */
+  void SetSourceConnection(vtkAlgorithmOutput* algOutput)
+  {
+    this->SetInputConnection(1, algOutput);
+  }
+  void SetSourceData(vtkImageData* image);
+  ///@}
+
 protected:
   vtkDisplacementMapFilter();
   ~vtkDisplacementMapFilter() override = default;
@@ -267,6 +291,7 @@ protected:
   int NormalMode = Exact;
   bool MergeSeams = true;
   double SeamTolerance = 1e-6;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
 
 private:
   vtkDisplacementMapFilter(const vtkDisplacementMapFilter&) = delete;

@@ -15,6 +15,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailProgress.h"
 
 #include <algorithm>
 #include <array>
@@ -84,6 +85,7 @@ struct NormalMapKernel
   bool GreenUp = true;
   Real Sx = 1, Sy = 1; // k * W (or H) * height scale: texel difference -> slope
   Real HScale = 1, HOffset = 0;
+  vtkSurfaceDetail::Progress* Progress = nullptr;
   vtkSMPThreadLocal<RowCache<Real>> Cache;
 
   void Initialize()
@@ -155,8 +157,9 @@ struct NormalMapKernel
     const int n = this->I1 - this->I0 + 1;
     Real* gx = c.Gx.data();
     Real* gy = c.Gy.data();
-    for (vtkIdType jj = rowBegin; jj < rowEnd; ++jj)
+    for (vtkIdType jj = rowBegin; jj < rowEnd && !this->Progress->Aborted(); ++jj)
     {
+      this->Progress->Advance(1);
       const int j = static_cast<int>(jj);
       const int keep[3] = { vtkSurfaceDetail::WrapIndex(j - 1, this->H, this->Wrap), j,
         vtkSurfaceDetail::WrapIndex(j + 1, this->H, this->Wrap) };
@@ -525,6 +528,7 @@ struct Job
   bool GreenUp;
   double Strength;
   void* Out;
+  vtkSurfaceDetail::Progress* Progress;
 };
 
 template <typename InT, typename OutT>
@@ -556,6 +560,7 @@ KernelReport RunKernel(const InT* in, int stride, const Job& job)
   kernel.Sy = static_cast<Real>(std::min(std::max(job.Strength * job.H * scale, -top), top));
   kernel.HScale = static_cast<Real>(scale);
   kernel.HOffset = static_cast<Real>(offset);
+  kernel.Progress = job.Progress;
   vtkSMPTools::For(job.OutExt[2], job.OutExt[3] + 1, kernel);
   KernelReport report;
   for (const RowCache<Real>& c : kernel.Cache)
@@ -797,6 +802,9 @@ int vtkHeightMapToNormalMap::RequestData(
   job.GreenUp = this->GreenUp;
   job.Strength = this->Strength;
   job.Out = map->GetVoidPointer(0);
+  // Floating-point maps with NaN are done twice (RunFloating): the progress may pass 1 there.
+  vtkSurfaceDetail::Progress progress(this, 0.0, 1.0, outExt[3] - outExt[2] + 1);
+  job.Progress = &progress;
 
   const int stride = contiguous->GetNumberOfComponents();
   switch (contiguous->GetDataType())
@@ -809,6 +817,11 @@ int vtkHeightMapToNormalMap::RequestData(
                                           "(e.g. vtkImageCast).");
       output->Initialize();
       return 0;
+  }
+  if (progress.Aborted())
+  {
+    // Stopped by the user (AbortExecute): no error, and no half-made map.
+    output->Initialize();
   }
   return 1;
 }

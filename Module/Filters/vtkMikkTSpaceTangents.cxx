@@ -205,7 +205,14 @@ int vtkMikkTSpaceTangents::RequestData(
   const Faces faces = MakeFaces(input);
   const auto frames = vtkSurfaceDetailMikkTSpace::Compute(input->GetPoints()->GetData(),
     inPD->GetNormals(), inPD->GetTCoords(), faces.Cells, this->AngularThreshold, this);
+  if (frames.Aborted)
+  {
+    // Stopped by the user (AbortExecute): no error, and no half-made output.
+    output->Initialize();
+    return 1;
+  }
   Assemble(input, inPD, faces, frames, output);
+  this->UpdateProgress(1.0);
   vtkSurfaceDetailGhosts::RemoveUnrequested(outputVector->GetInformationObject(0), output);
   if (frames.NonFinitePoints > 0)
   {

@@ -21,6 +21,7 @@
 #include "vtkSurfaceDetailBVH.h"
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailProgress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -404,6 +405,7 @@ struct CastRows
   BakeBuffers& Out;
   std::vector<RowReport>& Reports;
   BakeSettings Settings;
+  vtkSurfaceDetail::Progress& Progress;
 
   struct Scratch
   {
@@ -413,13 +415,15 @@ struct CastRows
   vtkSMPThreadLocal<Scratch> Local;
 
   CastRows(const CoarseMesh& c, const DetailedMesh& d, const RowBuckets& r, BakeBuffers& o,
-    std::vector<RowReport>& reports, const BakeSettings& settings)
+    std::vector<RowReport>& reports, const BakeSettings& settings,
+    vtkSurfaceDetail::Progress& progress)
     : Coarse(c)
     , Detailed(d)
     , Rows(r)
     , Out(o)
     , Reports(reports)
     , Settings(settings)
+    , Progress(progress)
   {
   }
 
@@ -433,7 +437,7 @@ struct CastRows
   void operator()(vtkIdType begin, vtkIdType end)
   {
     Scratch& s = this->Local.Local();
-    for (vtkIdType j = begin; j < end; ++j)
+    for (vtkIdType j = begin; j < end && !this->Progress.Aborted(); ++j)
     {
       this->Rasterise(static_cast<int>(j), s);
       for (int i = 0; i < this->Out.W; ++i)
@@ -443,6 +447,7 @@ struct CastRows
           this->BakeTexel(i, static_cast<int>(j), s.Owner[i]);
         }
       }
+      this->Progress.Advance(1);
     }
   }
 
@@ -761,12 +766,12 @@ struct CastSummary
 };
 
 CastSummary CastRays(const CoarseMesh& coarse, const DetailedMesh& detailed,
-  const BakeSettings& settings, BakeBuffers& buffers)
+  const BakeSettings& settings, BakeBuffers& buffers, vtkSurfaceDetail::Progress& progress)
 {
   RowBuckets rows;
   rows.Build(coarse, buffers.H);
   std::vector<RowReport> reports(buffers.H);
-  CastRows cast(coarse, detailed, rows, buffers, reports, settings);
+  CastRows cast(coarse, detailed, rows, buffers, reports, settings, progress);
   vtkSMPTools::For(0, buffers.H, cast);
 
   CastSummary summary;
@@ -901,6 +906,12 @@ int vtkNormalMapBaker::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkNormalMapBaker::SetSourceData(vtkPolyData* detailed)
+{
+  this->SetInputData(1, detailed);
 }
 
 //------------------------------------------------------------------------------
@@ -1063,9 +1074,16 @@ int vtkNormalMapBaker::RequestData(
   settings.MaxRayDistance = this->MaxRayDistance;
   settings.CageOffset = this->CageOffset;
   settings.TangentSpace = this->Space == Tangent;
-  const CastSummary found = CastRays(coarse, detailed, settings, buffers);
+  vtkSurfaceDetail::Progress progress(this, 0.2, 0.9, H);
+  const CastSummary found = CastRays(coarse, detailed, settings, buffers, progress);
+  if (progress.Aborted())
+  {
+    // Stopped by the user (AbortExecute): no error, and no half-baked maps.
+    normalMap->Initialize();
+    heightMap->Initialize();
+    return 1;
+  }
   this->ReportFindings(found.Covered, found.Unhit, found.Overlapping, found.OverlapCells);
-  this->UpdateProgress(0.9);
 
   const float flat[3] = { 0.0f, 0.0f, settings.TangentSpace ? 1.0f : 0.0f };
   FillMissed(buffers, flat);
@@ -1076,6 +1094,7 @@ int vtkNormalMapBaker::RequestData(
   {
     WriteHeightMap(buffers, heightMap);
   }
+  this->UpdateProgress(1.0);
   return 1;
 }
 

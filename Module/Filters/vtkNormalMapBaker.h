@@ -72,6 +72,17 @@ public:
   vtkTypeMacro(vtkNormalMapBaker, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * The detailed mesh: shortcuts for SetInputConnection(1, ...) and SetInputData(1, ...).
+   */
+  void SetSourceConnection(vtkAlgorithmOutput* algOutput)
+  {
+    this->SetInputConnection(1, algOutput);
+  }
+  void SetSourceData(vtkPolyData* detailed);
+  ///@}
+
   enum SpaceType
   {
     Tangent = 0,

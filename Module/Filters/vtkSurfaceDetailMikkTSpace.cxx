@@ -9,6 +9,8 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
+#include "vtkSurfaceDetailProgress.h"
+
 #include <algorithm>
 #include <cstring>
 #include <numeric>
@@ -42,24 +44,24 @@ public:
   {
   }
 
-  void Run(vtkAlgorithm* progress)
+  // False when the filter's AbortExecute stopped it.
+  bool Run(vtkAlgorithm* filter)
   {
     this->Weld();
     this->BuildTriangles();
     this->BuildLinks();
-    if (progress)
-    {
-      progress->UpdateProgress(0.3);
-    }
+    filter->UpdateProgress(0.3);
     this->ResolveGroupWithAnyOrientation();
-    this->EvaluateVertices();
-    this->FixQuadsWithOneDegenerateTriangle();
-    if (progress)
+    vtkSurfaceDetail::Progress progress(filter, 0.3, 0.7, this->NumberOfPoints);
+    this->EvaluateVertices(progress);
+    if (progress.Aborted())
     {
-      progress->UpdateProgress(0.7);
+      return false;
     }
+    this->FixQuadsWithOneDegenerateTriangle();
     this->SetPointFrames();
     this->SplitMixedPoints();
+    return true;
   }
 
 private:
@@ -319,7 +321,7 @@ private:
 
   // Per vertex, in parallel: its fan, the spaces of its groups and the frames of its
   // corners; a vertex's first frame goes to the output array at its point.
-  void EvaluateVertices()
+  void EvaluateVertices(vtkSurfaceDetail::Progress& progress)
   {
     const Index nPts = this->NumberOfPoints;
     this->State.reset(new VertexState[nPts]);
@@ -338,7 +340,7 @@ private:
         DirectionMemo& memo = memos.Local();
         memo.Reserve(this->NumberOfTriangles);
         CornerFrames& local = differing.Local();
-        for (Index v = static_cast<Index>(begin); v < end; ++v)
+        for (Index v = static_cast<Index>(begin); v < end && !progress.Aborted(); ++v)
         {
           if (this->Links.GetNcells(v) == 0)
           {
@@ -351,6 +353,7 @@ private:
           this->EvaluateGroups(fan);
           this->SetFrames(v, n, fan, local);
         }
+        progress.Advance(end - begin);
       });
     for (const auto& local : differing)
     {
@@ -504,8 +507,14 @@ struct Worker
     const M mesh{ p->GetPointer(0), n->GetPointer(0), t->GetPointer(0),
       static_cast<size_t>(t->GetNumberOfComponents()) };
     MikkTSpace<M> mikk(mesh, static_cast<Index>(p->GetNumberOfTuples()), faces, threshold);
-    mikk.Run(progress);
-    frames = mikk.Result();
+    if (mikk.Run(progress))
+    {
+      frames = mikk.Result();
+    }
+    else
+    {
+      frames.Aborted = true;
+    }
   }
 };
 

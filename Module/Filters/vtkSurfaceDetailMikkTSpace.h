@@ -40,6 +40,8 @@ struct Frames
   vtkSmartPointer<vtkDataArray> Connectivity;
   /// The points with a non-finite coordinate.
   vtkIdType NonFinitePoints = 0;
+  /// Whether the filter's AbortExecute stopped the computation (the rest is then empty).
+  bool Aborted = false;
 };
 
 /**

@@ -21,6 +21,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
+#include "vtkSurfaceDetailProgress.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
@@ -416,6 +417,7 @@ struct PointWorker
   Real* DPdv = nullptr;
   Real* DNdu = nullptr;
   Real* DNdv = nullptr;
+  vtkSurfaceDetail::Progress* Progress = nullptr;
   vtkSMPThreadLocal<vtkIdType> Arbitrary; // points with an arbitrary frame
   vtkSMPThreadLocal<unsigned char> NonFinite;
 
@@ -434,12 +436,13 @@ struct PointWorker
   void operator()(vtkIdType begin, vtkIdType end)
   {
     const vtkIdType rowLength = this->G.U + 1;
-    for (vtkIdType r = begin; r < end; ++r)
+    for (vtkIdType r = begin; r < end && !this->Progress->Aborted(); ++r)
     {
       for (vtkIdType col = 0; col < rowLength; col += Block)
       {
         this->DoBlock(r, col, static_cast<int>(std::min<vtkIdType>(Block, rowLength - col)));
       }
+      this->Progress->Advance(1);
     }
   }
 
@@ -764,7 +767,8 @@ enum class Outcome
 {
   Done,
   NonFinite,
-  OutOfMemory
+  OutOfMemory,
+  Aborted // AbortExecute was set while the points were made
 };
 
 struct Requested
@@ -773,8 +777,8 @@ struct Requested
 };
 
 template <typename Real, typename RealArray>
-Outcome GeneratePoints(
-  const Grid& g, vtkIdType numPoints, Requested want, vtkPolyData* output, vtkIdType& arbitrary)
+Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, Requested want, vtkPolyData* output,
+  vtkIdType& arbitrary, vtkSurfaceDetail::Progress& progress)
 {
   bool allocated = true;
   auto newArray = [numPoints, &allocated](auto* array, const char* name, int components)
@@ -804,7 +808,12 @@ Outcome GeneratePoints(
 
   // Grain: a few thousand points amortise the scheduling; the split never changes values.
   const vtkIdType numRows = static_cast<vtkIdType>(g.Rows.size());
+  worker.Progress = &progress;
   vtkSMPTools::For(0, numRows, std::max<vtkIdType>(1, 4096 / (g.U + 1)), worker);
+  if (progress.Aborted())
+  {
+    return Outcome::Aborted;
+  }
 
   for (unsigned char bad : worker.NonFinite)
   {
@@ -913,13 +922,6 @@ int vtkParametricSurfaceSource::RequestData(
                                              << function->GetDimension()
                                              << "; only surfaces (dimension 2) can be "
                                                 "tessellated.");
-    return 0;
-  }
-  if (this->UResolution < 1 || this->VResolution < 1)
-  {
-    vtkErrorMacro("Resolution " << this->UResolution << " x " << this->VResolution
-                                << " is invalid: UResolution and VResolution must be at "
-                                   "least 1.");
     return 0;
   }
   const double umin = function->GetMinimumU(), umax = function->GetMaximumU();
@@ -1099,9 +1101,16 @@ int vtkParametricSurfaceSource::RequestData(
   vtkIdType arbitrary = 0;
   const Requested want{ this->GenerateNormals, this->GenerateTextureCoordinates,
     this->GenerateTangents, this->GenerateDerivatives };
+  vtkSurfaceDetail::Progress progress(this, 0.0, 0.9, static_cast<vtkIdType>(g.Rows.size()));
   const Outcome outcome = this->OutputPointsPrecision == DOUBLE_PRECISION
-    ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, want, output, arbitrary)
-    : GeneratePoints<float, vtkFloatArray>(g, numPoints, want, output, arbitrary);
+    ? GeneratePoints<double, vtkDoubleArray>(g, numPoints, want, output, arbitrary, progress)
+    : GeneratePoints<float, vtkFloatArray>(g, numPoints, want, output, arbitrary, progress);
+  if (outcome == Outcome::Aborted)
+  {
+    // Stopped by the user (AbortExecute): no error, and no half-made output.
+    output->Initialize();
+    return 1;
+  }
   if (outcome == Outcome::OutOfMemory)
   {
     output->Initialize();
@@ -1149,6 +1158,7 @@ int vtkParametricSurfaceSource::RequestData(
   {
     rows.MarkGhosts(U, output);
   }
+  this->UpdateProgress(1.0);
   return 1;
 }
 

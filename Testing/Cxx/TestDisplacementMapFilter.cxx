@@ -31,6 +31,7 @@
 #include <vtkSMPTools.h>
 #include <vtkSphereSource.h>
 #include <vtkTexture.h>
+#include <vtkTrivialProducer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
 
@@ -2748,4 +2749,70 @@ TEST(DisplacementMapFilter, NonFiniteTextureCoordinatesStayLocal)
       }
     }
   }
+}
+
+// OutputPointsPrecision picks the type of the output points, normals and tangents as VTK's
+// filters do; the values agree with the other precision's to float's precision.
+TEST(DisplacementMapFilter, OutputPointsPrecision)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  for (const bool floatInput : { true, false })
+  {
+    auto mesh = MakeMesh(s, 32, 16, true, floatInput);
+    vtkSmartPointer<vtkPolyData> outputs[3];
+    for (int precision : { vtkAlgorithm::DEFAULT_PRECISION, vtkAlgorithm::SINGLE_PRECISION,
+           vtkAlgorithm::DOUBLE_PRECISION })
+    {
+      vtkNew<vtkDisplacementMapFilter> f;
+      f->SetInputData(mesh);
+      f->SetSourceData(image);
+      f->SetScale(0.1);
+      f->SetMidlevel(0.5);
+      f->SetOutputPointsPrecision(precision);
+      f->Update();
+      vtkPolyData* out = f->GetOutput();
+      const int expected = precision == vtkAlgorithm::SINGLE_PRECISION ||
+          (precision == vtkAlgorithm::DEFAULT_PRECISION && floatInput)
+        ? VTK_FLOAT
+        : VTK_DOUBLE;
+      EXPECT_EQ(out->GetPoints()->GetDataType(), expected) << precision << " " << floatInput;
+      EXPECT_EQ(out->GetPointData()->GetNormals()->GetDataType(), expected);
+      EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetDataType(), expected);
+      outputs[precision] = vtkSmartPointer<vtkPolyData>::New();
+      outputs[precision]->DeepCopy(out);
+    }
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      outputs[vtkAlgorithm::SINGLE_PRECISION]->GetPoint(i, a);
+      outputs[vtkAlgorithm::DOUBLE_PRECISION]->GetPoint(i, b);
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(a[c], b[c], 1e-6);
+      }
+    }
+  }
+}
+
+// SetSourceConnection and SetSourceData are the height map's port, as VTK's two-input filters
+// name their second input.
+TEST(DisplacementMapFilter, SourceIsTheHeightMap)
+{
+  const Surface s = Torus();
+  auto image = MakeHeightImage(s.Height, 64, 32);
+  auto mesh = MakeMesh(s, 32, 16, true, true);
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(image);
+  vtkNew<vtkDisplacementMapFilter> byPort, bySource;
+  byPort->SetInputData(0, mesh);
+  byPort->SetInputConnection(1, producer->GetOutputPort());
+  bySource->SetInputData(0, mesh);
+  bySource->SetSourceConnection(producer->GetOutputPort());
+  byPort->Update();
+  bySource->Update();
+  EXPECT_EQ(bySource->GetInputConnection(1, 0), producer->GetOutputPort());
+  EXPECT_TRUE(SameBits(
+    byPort->GetOutput()->GetPoints()->GetData(), bySource->GetOutput()->GetPoints()->GetData()));
+  EXPECT_GT(byPort->GetOutput()->GetNumberOfPoints(), 0);
 }
