@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDisplacementDerivatives.h"
 #include "vtkDisplacementNormals.h"
 #include "vtkDisplacementPolygons.h"
 #include "vtkDisplacementSampling.h"
