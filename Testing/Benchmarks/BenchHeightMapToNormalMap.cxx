@@ -13,6 +13,8 @@
 // units, between the VTK pipeline's map and ours (Central/Sobel, ClampToEdge, as VTK's
 // boundary handling duplicates the edge texels) -- a check that both do the same job.
 
+#include "BenchmarkMemory.h"
+
 #include "vtkHeightMapToNormalMap.h"
 
 #include <vtkDataArray.h>
@@ -157,6 +159,33 @@ void BM_HeightMapToNormalMap(benchmark::State& state)
   state.SetItemsProcessed(state.iterations() * Size * Size);
 }
 
+// The floor: the bytes of the normal map the filter must write (3 components of the output
+// type per texel), written with std::fill into a new array at every iteration. Arguments:
+// output type, threads (0 = all; 1 = one), fresh (1: fresh pages, as a first execution's
+// output; 0: memory used before).
+void BM_Floor(benchmark::State& state)
+{
+  const int type = static_cast<int>(state.range(0));
+  const ScopedThreads threads(static_cast<int>(state.range(1)));
+  const bool fresh = state.range(2) != 0;
+  BenchmarkMemory::UseFreshPages(fresh);
+  vtkSmartPointer<vtkDataArray> map;
+  for (auto _ : state)
+  {
+    BenchmarkMemory::BeginIteration(state, fresh, [&] { map = nullptr; });
+    map = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
+    map->SetNumberOfComponents(3);
+    map->SetNumberOfTuples(static_cast<vtkIdType>(Size) * Size);
+    auto* bytes = static_cast<unsigned char*>(map->GetVoidPointer(0));
+    const vtkIdType n = map->GetDataSize() * map->GetDataTypeSize();
+    vtkSMPTools::For(
+      0, n, 1 << 20, [bytes](vtkIdType b, vtkIdType e) { std::fill(bytes + b, bytes + e, 1); });
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(std::string(state.range(1) == 1 ? "1 thread/" : "") + TypeName(type) +
+    (fresh ? "/fresh" : "/warm"));
+}
+
 void VtkPipeline(benchmark::State& state, bool sobel)
 {
   const int type = static_cast<int>(state.range(0));
@@ -252,6 +281,10 @@ BENCHMARK(BM_HeightMapToNormalMap)
     { VTK_UNSIGNED_CHAR, VTK_FLOAT }, { 0 }, { 1 } })
   ->Unit(benchmark::kMillisecond)
   ->MeasureProcessCPUTime();
+BENCHMARK(BM_Floor)
+  ->ArgsProduct({ { VTK_UNSIGNED_CHAR, VTK_FLOAT }, { 0, 1 }, { 1, 0 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 // Arguments: output type, 8-bit heights?, threads.
 BENCHMARK(BM_VtkGradientPipeline)
   ->ArgsProduct({ { VTK_UNSIGNED_CHAR, VTK_UNSIGNED_SHORT, VTK_FLOAT }, { 0 }, { 0 } })
