@@ -1,15 +1,15 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's brick wall: the rectangle x in [-2,2], y in [0,3.5] as one quad whose corners
-// carry texture coordinates, as the seed's glTexCoord2f() calls give them (top-left,
+// The brick wall: the rectangle x in [-2,2], y in [0,3.5] as one quad whose corners
+// carry texture coordinates, as glTexCoord2f() calls give them in classic OpenGL code (top-left,
 // bottom-left, bottom-right, top-right), five ways side by side:
 // - Whole: (0,1) (0,0) (1,0) (1,1), the picture once;
 // - Repeated: 0..4 x 0..1.5, vtkTexture::Repeat: the picture tiles;
 // - Mirrored: the same coordinates with vtkTexture::MirroredRepeat: every other tile flips;
 // - Tilted photo: a picture of the wall taken askew (here: the bricks turned by 12 degrees);
-// - Straightened: the seed's quick fix, only the slanted part of that photo that holds
+// - Straightened: the quick fix, only the slanted part of that photo that holds
 //   straight bricks mapped onto the rectangle, corner by corner.
-// The wall is drawn unlit, as the seed's GL_REPLACE shows the texture's own colours.
+// The wall is drawn unlit, as GL_REPLACE shows the texture's own colours.
 #include "ExampleScene.h"
 
 #include <vtkActor.h>

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's bump mapping (Blinn 1978) on seed 000's torus: the surface stays smooth, only
+// Bump mapping (Blinn 1978) on a torus: the surface stays smooth, only
 // its normals are tilted by the slopes of a height map, at every pixel. Left: the plain
 // torus; right: vtkSurfaceDetailMapper's BumpMapping with a quilt of round bumps, lit from
 // the upper right, so each bump is bright on its upper right side. The silhouette stays
@@ -44,7 +44,7 @@ int main(int argc, char* argv[])
     actor->GetProperty()->SetDiffuse(0.85);
     actor->GetProperty()->SetSpecular(0.3);
     actor->GetProperty()->SetSpecularPower(30);
-    actor->RotateX(-90); // seed 000's z up becomes the scene's y up
+    actor->RotateX(-90); // the donut's z up becomes the scene's y up
 
     vtkNew<vtkRenderer> renderer;
     renderer->SetViewport(0.5 * k, 0, 0.5 * (k + 1), 1);

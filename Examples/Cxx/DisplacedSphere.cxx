@@ -1,10 +1,10 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 000's displacement mapping, p* = p + d(u,v) n, on seed 004's sphere: the points really
+// Displacement mapping, p* = p + d(u,v) n, on a sphere: the points really
 // move (the silhouette is bumpy), and vtkDisplacementMapFilter's four NormalModes shade the
 // moved surface side by side, lit from the upper right:
 // - None keeps the sphere's normals: the bumps show only in the outline, not in the shading;
-// - Approximate is the seed's formula (no d dn/du terms): close to Exact on gentle bumps;
+// - Approximate is the textbook formula (no d dn/du terms): close to Exact on gentle bumps;
 // - Exact adds the change of the normal (from the source's dNdu, dNdv);
 // - Mesh averages the displaced triangles' normals: right, but faceted where triangles are big.
 #include "ExampleScene.h"

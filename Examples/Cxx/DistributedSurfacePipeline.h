@@ -3,7 +3,7 @@
 // The pipeline of the DistributedSurface example, kept apart so that its test can build the
 // same surface serially and compare it with what the ranks wrote.
 //
-// A donut (seed 000's torus, joined in u and v) with a procedural height map of bumps that
+// A donut (a torus, joined in u and v) with a procedural height map of bumps that
 // repeat across both seams, displaced with Exact normals from the source's analytic
 // derivatives; its tangent frames are re-orthogonalised to the new normals.
 

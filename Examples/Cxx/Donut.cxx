@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 000's donut, z up: P = ((R + r cos 2 pi v) cos 2 pi u, (R + r cos 2 pi v) sin 2 pi u,
+// The donut, z up: P = ((R + r cos 2 pi v) cos 2 pi u, (R + r cos 2 pi v) sin 2 pi u,
 // r sin 2 pi v) with Data/checkerboard.png, dark square at (0,0). Seen from outside, s runs
 // along the ring and t round the tube; the checks stay square and meet across both seams
 // (VTK's vtkParametricTorus is the same surface mirrored).
@@ -33,7 +33,7 @@ int main(int argc, char* argv[])
   actor->SetTexture(checks);
   actor->GetProperty()->SetAmbient(0.3);
   actor->GetProperty()->SetDiffuse(0.8);
-  actor->RotateX(-90); // seed 000's z up becomes the scene's y up
+  actor->RotateX(-90); // the donut's z up becomes the scene's y up
 
   const double eye[3] = { 1.0, 2.2, 4.0 };
   const double focus[3] = { 0, 0, 0 };

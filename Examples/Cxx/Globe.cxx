@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's Earth: an equirectangular map on vtkParametricSphere, whose texture coordinates
+// The Earth: an equirectangular map on vtkParametricSphere, whose texture coordinates
 // (theta / 2 pi, 1 - alpha / pi) put the north pole at the top of the image and longitude 0
 // (s = 0.5) on -x. The map is Debian's xplanet-images earth.jpg; where it is missing, or with
 // --procedural-map, a map drawn here: continents as ellipses at their places, ice caps and a

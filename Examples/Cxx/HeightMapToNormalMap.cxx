@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 000's bump map to normal map: a procedural height map (a raised bump, a sunken
+// A bump map made a normal map: a procedural height map (a raised bump, a sunken
 // crater and a band of ridges) becomes a normal map with vtkHeightMapToNormalMap, and the
 // normal map lights a flat square through VTK's own normal mapping, the light coming from
 // the right. Writes, into the folder given as the only argument:

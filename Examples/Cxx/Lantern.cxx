@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's cylinder, a paper lantern: the picture is wrapped round the cylinder as paper is,
+// The cylinder, a paper lantern: the picture is wrapped round the cylinder as paper is,
 // u round (from +x towards -z) and v up. Data/test_card.png must read left to right and
 // upright from outside, with no seam where u = 0 meets u = 1 (duplicated vertices, texture
 // coordinates 0 and 1): the camera looks at that seam.
@@ -14,7 +14,7 @@
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkParametricCylinder> cylinder; // the seed's: radius 1, height 2
+  vtkNew<vtkParametricCylinder> cylinder; // radius 1, height 2
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(cylinder);
   source->SetUResolution(96);

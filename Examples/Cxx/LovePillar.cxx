@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's love pillar: a heart-shaped Bezier profile in x-z extruded up +y by
-// vtkParametricExtrusion, u along the profile and v up, as in the seed's code. Arc-length
+// The love pillar: a heart-shaped Bezier profile in x-z extruded up +y by
+// vtkParametricExtrusion, u along the profile and v up, as texturing code usually has it. Arc-length
 // parameterisation keeps the card's squares the same width all round. The seam sits on the
 // corner at the dip between the lobes, where the normals may differ on each side.
 #include "ExampleScene.h"

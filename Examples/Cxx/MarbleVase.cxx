@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's marble vase: a Bezier profile (radius, height) turned about +y by
+// The marble vase: a Bezier profile (radius, height) turned about +y by
 // vtkParametricRevolution, in Data/marble.png (procedural marble: veins along
 // sin(2 pi (2s + t + turbulence))). Arc-length parameterisation spreads the marble evenly
 // along the profile even where its control points bunch up; the base closes on the axis.

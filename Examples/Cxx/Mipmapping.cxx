@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's minification: a checkerboard floor running to the horizon, four ways side by side.
+// The minification: a checkerboard floor running to the horizon, four ways side by side.
 // Nearest picks one texel per pixel and shimmers into moire far away; Linear blends four
 // texels but minifies the same way; Mipmapped samples a smaller copy of the texture where
 // a pixel covers many texels, which turns the distance grey, too soon along the view; and

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's point about normal maps: a detailed model and a coarse one with a normal map
+// The point of normal maps: a detailed model and a coarse one with a normal map
 // baked from it look alike, at a fraction of the polygons. The detailed model is a vase
 // (vtkParametricRevolution) with a quilt of bumps displaced into its geometry by
 // vtkDisplacementMapFilter; the coarse model is the same vase at a hundredth of the

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 000's relief mapping (Policarpo, Oliveira & Comba 2005) on seed 004's brick wall,
+// Relief mapping (Policarpo, Oliveira & Comba 2005) on the brick wall,
 // beside normal mapping with the same normals. The wall is one flat rectangle of two
 // triangles' worth of detail: normal mapping only tilts the shading, so the mortar joints
 // stay visible however obliquely the wall is seen. Relief mapping marches each view ray

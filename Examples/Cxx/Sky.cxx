@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 004's sky: a panorama on the inside of a sphere around the camera. Seen from inside,
+// The sky: a panorama on the inside of a sphere around the camera. Seen from inside,
 // u (from +x towards -z) runs right to left, so the texture coordinates are mirrored,
 // s = 1 - u (TextureRepeat -1, TextureOffset 1), for the panorama to read as painted. The sky
 // is not lit: its texture is what the eye sees (LightingOff). The panorama is drawn here:

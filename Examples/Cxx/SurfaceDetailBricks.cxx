@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 000's surface detail on seed 004's brick wall: the same flat wall (no displaced
+// Surface detail on the brick wall: the same flat wall (no displaced
 // geometry) drawn four ways side by side, lit by a point light from the upper right: plain
 // texture, normal mapping, bump mapping and parallax mapping. The textures are the
 // project's Data/brick_color.png and Data/brick_height.png (16-bit); the normal map is made
@@ -34,7 +34,7 @@ int main(int argc, char* argv[])
 {
   const std::string folder = argc > 1 ? argv[1] : ".";
 
-  // Seed 004's wall, x in [-2,2], y in [0,3.5], tangents with handedness for the maps.
+  // The wall, x in [-2,2], y in [0,3.5], tangents with handedness for the maps.
   vtkNew<vtkParametricRectangle> wall;
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(wall);

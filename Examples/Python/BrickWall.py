@@ -1,10 +1,10 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's brick wall: the rectangle x in [-2,2], y in [0,3.5] as one quad whose corners carry
-texture coordinates (top-left, bottom-left, bottom-right, top-right, as the seed's
+"""The brick wall: the rectangle x in [-2,2], y in [0,3.5] as one quad whose corners carry
+texture coordinates (top-left, bottom-left, bottom-right, top-right, as classic OpenGL code
 glTexCoord2f() calls), five ways: the picture whole; repeated (0..4 x 0..1.5); mirrored
 repeat; a photo of the wall taken askew (the bricks turned by 12 degrees); and that photo
-straightened by mapping only its slanted part that holds straight bricks. Unlit, as the seed's
+straightened by mapping only its slanted part that holds straight bricks. Unlit, as classic OpenGL code
 GL_REPLACE. (Examples/Cxx/BrickWall.cxx draws the same.)
 
 Usage: python3 BrickWall.py [<output folder>]   (writes BrickWall.png)

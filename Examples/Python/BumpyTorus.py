@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's bump mapping (Blinn 1978) on seed 000's torus: only the normals are tilted by the
+"""Bump mapping (Blinn 1978) on a torus: only the normals are tilted by the
 slopes of a height map. Left: the plain torus; right: vtkSurfaceDetailMapper's BumpMapping with
 a quilt of round bumps, lit from the upper right; the silhouette stays round.
 (Examples/Cxx/BumpyTorus.cxx draws the same.)
@@ -39,7 +39,7 @@ for k, technique in enumerate((vtkSurfaceDetailMapper.None_, vtkSurfaceDetailMap
     actor.GetProperty().SetDiffuse(0.85)
     actor.GetProperty().SetSpecular(0.3)
     actor.GetProperty().SetSpecularPower(30)
-    actor.RotateX(-90)  # seed 000's z up becomes the scene's y up
+    actor.RotateX(-90)  # the donut's z up becomes the scene's y up
 
     renderer = vtkRenderer()
     renderer.SetViewport(0.5 * k, 0, 0.5 * (k + 1), 1)

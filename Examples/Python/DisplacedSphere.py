@@ -1,8 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 000's displacement mapping, p* = p + d(u,v) n, on seed 004's sphere: the points move (the
+"""Displacement mapping, p* = p + d(u,v) n, on a sphere: the points move (the
 silhouette is bumpy), and vtkDisplacementMapFilter's four NormalModes shade the moved surface
-side by side: None keeps the sphere's normals, Approximate is the seed's formula, Exact adds the
+side by side: None keeps the sphere's normals, Approximate is the textbook formula, Exact adds the
 change of the normal, Mesh averages the displaced triangles' normals.
 (Examples/Cxx/DisplacedSphere.cxx draws the same.)
 

@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's cylinder, a paper lantern: the picture wrapped round vtkParametricCylinder as
+"""The cylinder, a paper lantern: the picture wrapped round vtkParametricCylinder as
 paper is, u round (from +x towards -z) and v up; it reads left to right and upright from
 outside, with no seam where u = 0 meets u = 1. (Examples/Cxx/Lantern.cxx draws the same.)
 
@@ -14,7 +14,7 @@ import example_scene
 from surfacedetail import vtkParametricCylinder, vtkParametricSurfaceSource
 
 source = vtkParametricSurfaceSource()
-source.SetParametricFunction(vtkParametricCylinder())  # the seed's: radius 1, height 2
+source.SetParametricFunction(vtkParametricCylinder())  # radius 1, height 2
 source.SetUResolution(96)
 source.SetVResolution(4)
 source.SetTextureRepeat(2, 1)  # the card twice round

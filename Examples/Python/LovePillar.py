@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's love pillar: a heart-shaped Bezier profile in x-z extruded up +y by
+"""The love pillar: a heart-shaped Bezier profile in x-z extruded up +y by
 vtkParametricExtrusion, u along the profile (by arc length) and v up.
 (Examples/Cxx/LovePillar.cxx draws the same.)
 

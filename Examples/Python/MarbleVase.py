@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's marble vase: a Bezier profile (radius, height) turned about +y by
+"""The marble vase: a Bezier profile (radius, height) turned about +y by
 vtkParametricRevolution, in Data/marble.png (procedural marble), spread by arc length along the
 profile. (Examples/Cxx/MarbleVase.cxx draws the same.)
 

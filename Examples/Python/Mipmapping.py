@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's minification: a checkerboard floor running to the horizon, four ways side by side:
+"""The minification: a checkerboard floor running to the horizon, four ways side by side:
 Nearest and Linear shimmer into moire far away, Mipmapped turns the distance grey too soon, and
 Anisotropic keeps the checks sharp further out. (Examples/Cxx/Mipmapping.cxx draws the same.)
 

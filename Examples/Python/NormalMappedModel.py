@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's point about normal maps: a detailed model and a coarse one with a normal map baked
+"""The point of normal maps: a detailed model and a coarse one with a normal map baked
 from it look alike, at a fraction of the polygons. Left: a vase with a quilt of bumps displaced
 into its geometry by vtkDisplacementMapFilter, VTK's plain mapper; right: the same vase at a
 hundredth of the triangles with the normal map vtkNormalMapBaker bakes from the detailed one,

@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 000's relief mapping (Policarpo, Oliveira & Comba 2005) on seed 004's brick wall,
+"""Relief mapping (Policarpo, Oliveira & Comba 2005) on the brick wall,
 beside normal mapping with the same normals. Relief mapping marches each view ray through a
 box 0.1 units deep under the flat wall: the bricks hide the joints behind them and, with
 self-shadowing, shade the joints away from the light at the upper right.

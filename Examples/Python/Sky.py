@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Seed 004's sky: a panorama on the inside of a sphere around the camera. Seen from inside,
+"""The sky: a panorama on the inside of a sphere around the camera. Seen from inside,
 u (from +x towards -z) runs right to left, so the texture coordinates are mirrored,
 s = 1 - u, for the panorama to read as painted; the sky is not lit. The panorama is drawn
 here: ground and mountains below the horizon, a gradient, clouds and a sun above it.

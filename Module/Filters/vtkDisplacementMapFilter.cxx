@@ -581,7 +581,7 @@ void vtkDisplacementMapFilter::ReportBadPointIds(vtkIdType numPts)
 //------------------------------------------------------------------------------
 vtkDataArray* vtkDisplacementMapFilter::InputTangents(vtkPolyData* input)
 {
-  // DESIGN.md's 4-component frame goes by its name "Tangents".
+  // The 4-component frame (Documentation/Conventions.md) goes by its name "Tangents".
   vtkDataArray* t = input->GetPointData()->GetTangents();
   t = t ? t : input->GetPointData()->GetArray("Tangents");
   const bool usable = t && (t->GetNumberOfComponents() == 3 || t->GetNumberOfComponents() == 4);

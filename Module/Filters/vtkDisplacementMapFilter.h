@@ -10,7 +10,7 @@
  *
  *     p' = p + Scale * (h(s,t) - Midlevel) * n
  *
- * which is displacement mapping as in seed 000: p*(u,v) = p(u,v) + d(u,v) n(u,v) with
+ * which is displacement mapping as the textbooks give it: p*(u,v) = p(u,v) + d(u,v) n(u,v) with
  * d = Scale * (h - Midlevel).
  *
  * Sampling the height map. The image is a texture: its origin and spacing are ignored,
@@ -50,7 +50,8 @@
  *   weighted by the polygons it shares with the point); on a regular grid this is a central
  *   difference, so the normal converges at second order in the mesh spacing
  *   (TestDisplacementMapFilterAccuracy measures both).
- * - Approximate: the seed's formula, which drops the d n_s and d n_t terms:
+ * - Approximate: the textbook formula (Blinn's for bump mapping), which drops the d n_s and
+ *   d n_t terms:
  *   m* = P_s x P_t + d_s (n x P_t) - d_t (n x P_s), where P_s x P_t is taken as its part
  *   along n, (n . (P_s x P_t)) n, so that a map without slope gives back n itself. d_s and
  *   d_t are the analytic derivatives of the chosen interpolant (bilinear or bicubic), not
@@ -82,7 +83,7 @@
  * their texture-coordinate differences. "dPdu", "dPdv", "dNdu" and "dNdv" pass through
  * unchanged: they describe the input surface (nobody asked for them to be recomputed).
  *
- * Tangents. When the point data has tangents (3 or 4 components, DESIGN.md's frame), the
+ * Tangents. When the point data has tangents (3 or 4 components, the frame of Documentation/Conventions.md), the
  * output tangents are re-orthogonalised to the new normals; the handedness w is kept.
  * All other point and cell arrays pass through.
  *

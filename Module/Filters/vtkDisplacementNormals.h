@@ -198,7 +198,7 @@ inline void RescaledCross(double qs[3], double qt[3], double m[3])
 
 /**
  * The direction @a m of a point's displaced normal from its unit input normal @a n, its
- * displacement @a d and slopes @a ds, @a dt: the seed's formula (Approximate), or (Exact) the
+ * displacement @a d and slopes @a ds, @a dt: the textbook formula (Approximate), or (Exact) the
  * cross product of the displaced surface's derivatives. P_s and P_t count only across n (n
  * defines the tangent plane), so that a map without slope gives back n itself, and the result
  * is oriented by n . (P_s x P_t), whatever the orientation of the parameterisation. Where

@@ -12,7 +12,7 @@
  * (vtkSurfaceDetailConventions.h EncodeNormal; decode with DecodeNormal or its GLSL twin).
  *
  * Schemes (all estimate the same derivative; texel (i,j), W x H texels):
- * - Forward: dh/ds = W*(h[i+1] - h[i]), exactly the seed's Cg code
+ * - Forward: dh/ds = W*(h[i+1] - h[i]), exactly the classic Cg code's
  *   `w*(tex2D(d, u + 1/w) - tex2D(d, u))`; first order (it is centred half a texel away).
  * - Central: W*(h[i+1] - h[i-1])/2; second order.
  * - Sobel: central differences smoothed across by (1,2,1)/4; second order.
@@ -26,7 +26,7 @@
  * is filled with the plane), within the range of the finite heights; one warning with the
  * count.
  *
- * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, the seed's relief map). For
+ * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, Policarpo and Oliveira's relief map). For
  * floating-point input h is the height as given, the same value the normal map and
  * vtkDisplacementMapFilter use, so a relief rendered with DepthScale d shows the surface
  * whose normal map this is when Strength = d; heights outside [0,1] are clamped to it with

@@ -141,7 +141,7 @@ void Assemble(vtkPolyData* input, vtkPointData* inPD, const Faces& faces,
     output->GetPointData()->CopyData(inPD, src, Identity(nOut));
   }
   // VTK 9.1 takes only 3-component tangent attributes, so the frame is the named array of
-  // DESIGN.md; an input array of that name must not survive next to it.
+  // Documentation/Conventions.md; an input array of that name must not survive next to it.
   frames.Tangents->SetName("Tangents");
   output->GetPointData()->RemoveArray("Tangents");
   output->GetPointData()->AddArray(frames.Tangents);

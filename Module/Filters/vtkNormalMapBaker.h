@@ -5,7 +5,7 @@
  * @brief   Bakes the normals (and heights) of a detailed mesh into a normal map of a coarse one.
  *
  * A detailed surface of millions of triangles shades almost the same as a coarse one with a
- * normal map of the detail (seed 004: a 30,000-polygon head as a 632-polygon head and a
+ * normal map of the detail (the classic example: a 30,000-polygon head as a 632-polygon head and a
  * map). This filter makes that map, as Blender, xNormal and Substance do, by casting rays.
  *
  * Input port 0 is the coarse mesh: polygons (or triangle strips) with point texture

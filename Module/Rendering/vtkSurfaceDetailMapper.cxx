@@ -458,7 +458,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   // unit of texture coordinate by forward or central differences with the texture's own wrap mode.
   // Differences of linearly interpolated heights taken one texel apart equal the linear
   // interpolation of these texel differences (both use the same weights), so one lookup gives
-  // exactly what seed 000's three-lookup Cg code computes, at a third of the texture traffic. With
+  // exactly what the classic three-lookup Cg code computes, at a third of the texture traffic. With
   // ClampToBorder the height outside is the border colour's first component and its
   // differences are 0 (the sampler's border below): the identity holds there as well.
   const int wrap = this->HeightMap->GetWrap();

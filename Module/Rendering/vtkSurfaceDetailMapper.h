@@ -6,7 +6,7 @@
  *
  * vtkSurfaceDetailMapper is a vtkOpenGLPolyDataMapper that perturbs the shading normal
  * (and, for parallax and relief, the texture coordinate) per fragment, so that a coarse mesh shows
- * the detail of a normal map or a height map without moving any geometry (seed 000).
+ * the detail of a normal map or a height map without moving any geometry.
  * Everything else is VTK's own: the actor's ambient, diffuse, specular colours and
  * specular power, the headlight, light kits, positional and spot lights, actor transforms
  * and cameras. The detail is applied by computing the perturbed normal in view coordinates
@@ -21,7 +21,7 @@
  *   tangents are taken with w = +1). Unlike vtkProperty::SetNormalTexture, mirrored texture
  *   coordinates (w = -1) shade correctly.
  * - BumpMapping: the normal of the surface z = BumpScale*h(s,t) over the unit texture
- *   square, h the first channel of SetHeightMap, by forward (seed 000) or central
+ *   square, h the first channel of SetHeightMap, by forward or central
  *   differences at the height map's own texel size. With TangentFree on, the tangent frame
  *   comes from screen-space derivatives (Mikkelsen 2010) and no tangent array is needed.
  * - ParallaxMapping: parallax mapping with offset limiting (Welsh 2004): the texture
@@ -173,7 +173,7 @@ public:
 
   ///@{
   /**
-   * Finite differences for the height gradient: Forward (seed 000's Cg code, one texel
+   * Finite differences for the height gradient: Forward (the classic Cg code's, one texel
    * ahead) or Central (one texel either side, second-order accurate). Default Forward.
    */
   vtkSetClampMacro(Differences, int, Forward, Central);

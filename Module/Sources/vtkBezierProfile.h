@@ -4,7 +4,7 @@
  * @class   vtkBezierProfile
  * @brief   A composite cubic Bézier curve in 2-D with exact derivatives and arc length.
  *
- * The profile of seed 004's extrusion ("love pillar") and surface of revolution ("marble
+ * The profile of the gallery's extrusion ("love pillar") and surface of revolution ("marble
  * vase"). 3k+1 control points define k cubic segments that share end points; the curve is
  * evaluated over one parameter t in [0,1] across all segments (segment i covers
  * [i/k, (i+1)/k]). Evaluate() returns the point and its exact first and second
@@ -83,7 +83,7 @@ public:
   /** Length of the whole curve (0 when invalid). */
   double GetLength();
 
-  /** The default profiles of the seed 004 scenes, replacing the current control points. */
+  /** The default profiles of the gallery's scenes, replacing the current control points. */
   void SetToVase();
   void SetToHeart();
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricCylinder
- * @brief   Seed 004's y-up cylinder (a label wrapped round a can) on the unit square.
+ * @brief   A y-up cylinder (a label wrapped round a can) on the unit square.
  *
  * With theta = 2*pi*u (turning from +x towards -z),
  * P(u,v) = (Radius cos(theta), Height*v, -Radius sin(theta)): u runs round the side and v
@@ -26,13 +26,13 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Radius of the cylinder. Default 1 (the seed's). */
+  /** Radius of the cylinder. Default 1. */
   vtkSetMacro(Radius, double);
   vtkGetMacro(Radius, double);
   ///@}
 
   ///@{
-  /** Height along +y, from y = 0. Default 2 (the seed's). */
+  /** Height along +y, from y = 0. Default 2. */
   vtkSetMacro(Height, double);
   vtkGetMacro(Height, double);
   ///@}

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricDonut
- * @brief   Seed 000's torus ("donut"), z up, on the unit square.
+ * @brief   A torus ("donut"), z up, on the unit square.
  *
  * P(u,v) = ((R + r cos 2 pi v) cos 2 pi u, (R + r cos 2 pi v) sin 2 pi u, r sin 2 pi v) with
  * R = RingRadius and r = CrossSectionRadius: u runs round the ring (counter-clockwise seen

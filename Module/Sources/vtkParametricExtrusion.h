@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricExtrusion
- * @brief   Seed 004's extrusion ("love pillar"): a Bézier profile in x-z swept up y.
+ * @brief   An extrusion (the gallery's "love pillar"): a Bézier profile in x-z swept up y.
  *
  * The profile gives (x, z) at parameter u; P(u,v) = (x, Height*v, z). u runs along the
- * profile (texture s), v up (texture t), as in the seed's code. Du x Dv = Height*(-z', 0, x')
+ * profile (texture s), v up (texture t), as texturing code usually has it. Du x Dv = Height*(-z', 0, x')
  * points outward for a closed profile traversed from +x towards -z (the way
  * vtkParametricCylinder turns). The default profile is the heart of
  * vtkBezierProfile::SetToHeart(), whose seam sits at the dip between the lobes.

@@ -2,11 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricRectangle
- * @brief   A parallelogram on the unit square, as seed 004 maps a brick wall.
+ * @brief   A parallelogram on the unit square, as a textured brick wall is mapped.
  *
  * P(u,v) = Origin + u*(Point1 - Origin) + v*(Point2 - Origin): u runs from Origin to Point1
  * (texture s), v from Origin to Point2 (texture t), as vtkPlaneSource's corners. The normal
- * is (Point1 - Origin) x (Point2 - Origin). The default is seed 004's wall, x in [-2, 2],
+ * is (Point1 - Origin) x (Point2 - Origin). The default is the gallery's wall, x in [-2, 2],
  * y in [0, 3.5], facing +z.
  *
  * @sa vtkParametricSurfaceSource vtkPlaneSource

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricRevolution
- * @brief   Seed 004's surface of revolution ("marble vase"): a Bézier profile turned about y.
+ * @brief   A surface of revolution (the gallery's "marble vase"): a Bézier profile turned about y.
  *
  * The profile gives (r, y) at parameter v; with theta = 2*pi*u (turning from +x towards -z),
  * P(u,v) = (r cos(theta), y, -r sin(theta)). u runs round (texture s), v along the profile

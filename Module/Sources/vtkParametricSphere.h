@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkParametricSphere
- * @brief   Seed 004's y-up sphere on the unit square, for equirectangular textures.
+ * @brief   A y-up sphere on the unit square, for equirectangular textures.
  *
  * With theta = 2*pi*u (turning from +x towards -z) and alpha = pi*(1 - v) (the angle from
  * +y), P(u,v) = Radius*(sin(alpha) cos(theta), cos(alpha), -sin(alpha) sin(theta)).

@@ -185,7 +185,7 @@ inline double Normalize(double v[3])
 }
 
 /**
- * Builds the tangent of the DESIGN.md frame from unit normal @a n and the derivatives
+ * Builds the tangent frame of Documentation/Conventions.md from unit normal @a n and the derivatives
  * @a dPds, @a dPdt: @a t[0..2] = normalize(dPds - n*dot(n,dPds)), @a t[3] = handedness.
  * When dP/ds has no part across @a n, the tangent comes from dP/dt instead
  * (T = cross(B, N) with w = +1); when neither has, @a t is any unit vector orthogonal to

@@ -53,7 +53,7 @@ inline vtkSmartPointer<vtkImageData> MakeImage(const Layout& layout, int type, i
   return image;
 }
 
-// Heights at texel centres (DESIGN.md: texel i covers [i, i+1)/Size), float.
+// Heights at texel centres (Documentation/Conventions.md: texel i covers [i, i+1)/Size), float.
 inline vtkSmartPointer<vtkImageData> Heights(const Layout& layout = Layout())
 {
   auto image = MakeImage(layout, VTK_FLOAT, 1);

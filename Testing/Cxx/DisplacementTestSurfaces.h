@@ -94,7 +94,7 @@ struct Surface
   }
 };
 
-// Seed 004's sphere (DESIGN.md): alpha = pi (1 - v), theta = 2 pi u from +x towards -z.
+// vtkParametricSphere: alpha = pi (1 - v), theta = 2 pi u from +x towards -z.
 // The height is smooth at the poles (sin^2(pi v) sin(4 pi u) ~ rho^2 sin(2 theta)) and
 // periodic in v, so that Repeat, vtkTexture's one wrap mode for both axes, reads it right.
 inline Surface Sphere(double scale = 0.15)
@@ -201,7 +201,7 @@ inline Surface Rectangle(double scale = 0.1)
 
 // A (U+1) x (V+1) grid of points with the seam and pole points duplicated (as a
 // parametric source makes them), two triangles per quad, tcoords (u,v), unit normals,
-// DESIGN.md tangents (4 components), optionally dPdu/dPdv and (with them) dNdu/dNdv; all in
+// Tangents of Documentation/Conventions.md (4 components), optionally dPdu/dPdv and (with them) dNdu/dNdv; all in
 // double, or all in float.
 inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, bool derivatives,
   bool floatPoints = false, bool normalDerivatives = false)

@@ -75,7 +75,7 @@ Vec Tuple(vtkDataArray* array, vtkIdType id)
   return { array->GetComponent(id, 0), array->GetComponent(id, 1), array->GetComponent(id, 2) };
 }
 
-// Seed 004's sphere (DESIGN.md): alpha = pi (1 - v), theta = 2 pi u from +x towards -z; its
+// vtkParametricSphere: alpha = pi (1 - v), theta = 2 pi u from +x towards -z; its
 // derivatives in u and v, and its outward normal P / R.
 Vec SphereDu(double u, double v)
 {

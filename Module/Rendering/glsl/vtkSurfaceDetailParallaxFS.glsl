@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Parallax mapping with offset limiting (Welsh 2004). The height map's first channel is the
 // height h; the surface seen at a fragment lies DepthScale*(1 - h) below the mesh along its
-// normal (DESIGN.md: depth in object units, the top of the relief is the mesh itself). The
+// normal (Documentation/Conventions.md: depth in object units, the top of the relief is the mesh itself). The
 // texture coordinate moves by that depth times the tangential part of the view vector,
 // without the 1/(V.N) that makes plain parallax swim at grazing angles. The texture frame
 // (dP/ds, dP/dt) comes from screen-space derivatives, so no tangent array is needed.

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Relief mapping (Policarpo, Oliveira & Comba 2005, seed 000). The mesh is the top of a
-// box DepthScale deep (object units, DESIGN.md); depth d in [0,1] is SD_RELIEF_DEPTH(tc)
+// Relief mapping (Policarpo, Oliveira & Comba 2005). The mesh is the top of a
+// box DepthScale deep (object units, Documentation/Conventions.md); depth d in [0,1] is SD_RELIEF_DEPTH(tc)
 // (the relief map's alpha, or 1 - h of the height map, defined by the mapper). The eye ray
 // is marched through the box in (s, t, depth) coordinates: a linear search to the first
 // sample under the height field, so thin features are not stepped over, then a binary

@@ -5,7 +5,7 @@
 // The mapper passes each of VTK's per-light diffuse terms through sdShadowed.
 
 // Depth (as a fraction of DepthScale) over which an occluder fades a light out: soft
-// enough that shadow edges do not alias, hard enough to read as the seed's shadows.
+// enough that shadow edges do not alias, hard enough to read as Policarpo and Oliveira's shadows.
 const float sdShadowSoftness = 0.04;
 // Occlusion (same units) that casts no shadow: the view search's steps may pass a corner
 // of the height field that the denser or offset shadow steps then graze (shadow acne).
