@@ -61,7 +61,7 @@ cat > "$out/index.html" <<HTML
 </head>
 <body>
 <h1>SurfaceDetail gallery</h1>
-<p>$count scenes from the seeds, each rendered by its example program (Mesa llvmpipe under
+<p>$count scenes, each rendered by its example program (Mesa llvmpipe under
 Xvfb). Each is also an image test: <code>ctest -R TestExample</code>.</p>
 $figures</body>
 </html>
