@@ -9,6 +9,11 @@
 # The meshes and the baked maps go to $BAKE_DIR if set (and stay there), else to a temporary
 # folder that is removed at the end.
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$src/build}"
 blender="${BLENDER:-blender}"

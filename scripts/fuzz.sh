@@ -8,6 +8,11 @@
 # $BUILD_DIR/fuzz-artifacts: fix the bug, then add that input to the target's corpus folder so
 # that ctest replays it from then on.
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$src/build-sanitizers}"
 seconds="${FUZZ_SECONDS:-60}"

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
-# The main job: install what is missing, build, render the gallery of example scenes (the seed
-# scenes) as PNG images into $BUILD_DIR/gallery, and write $BUILD_DIR/gallery/index.html, a
+# The main job: install what is missing, build, render the gallery of example scenes
+# as PNG images into $BUILD_DIR/gallery, and write $BUILD_DIR/gallery/index.html, a
 # page that shows every picture with its caption.
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export BUILD_DIR="${BUILD_DIR:-$src/build}"
 bash "$src/scripts/build.sh"

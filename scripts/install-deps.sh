@@ -4,6 +4,11 @@
 # Installs the Debian 12 packages SurfaceDetail needs, and only those that are missing,
 # so that a warm machine starts at once.
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 
 packages=(
   build-essential cmake pkg-config git

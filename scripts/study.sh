@@ -7,6 +7,11 @@
 # picture to $BUILD_DIR/study-images, and the machine it ran on to machine.txt.
 # Extra arguments go to the program (e.g. --rounds 31, --scenes wall-70).
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$src/build}"
 out="${STUDY_OUT:-$src/Documentation/study}"

@@ -6,6 +6,11 @@
 # warnings as errors. Undefined behaviour stops the program; LeakSanitizer reports leaks at
 # exit, except inside Mesa and X (scripts/lsan.supp says which and why).
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export BUILD_DIR="${BUILD_DIR:-$src/build-sanitizers}"
 export CC=clang CXX=clang++

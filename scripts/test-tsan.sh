@@ -16,6 +16,11 @@
 # suppressed; the same functors run either way (vtkSMPTools::For), and the stress test checks
 # that TBB gives the same bits in the ordinary build.
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$src/build-tsan}"
 export CC=clang CXX=clang++

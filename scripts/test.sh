@@ -4,6 +4,11 @@
 # Install what is missing, build, and run every test (unit, accuracy, stress, image) with
 # ctest under a virtual X server (Mesa llvmpipe).
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export BUILD_DIR="${BUILD_DIR:-$src/build}"
 bash "$src/scripts/build.sh"

@@ -466,10 +466,15 @@ std::string Compare(const std::string& made, const std::string& committed)
 
 int main(int argc, char* argv[])
 {
-  if (argc != 2 && !(argc == 4 && std::string(argv[2]) == "--compare"))
+  const bool help = argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  if (help || (argc != 2 && !(argc == 4 && std::string(argv[2]) == "--compare")))
   {
-    std::cerr << "usage: " << argv[0] << " <output-folder> [--compare <folder>]\n";
-    return 2;
+    (help ? std::cout : std::cerr)
+      << "Usage: SurfaceDetailMakeData <output-folder> [--compare <folder>]\n\n"
+         "Makes every texture in Data/ from formulas and writes the PNGs into <output-folder>;\n"
+         "with --compare, fails unless each holds the same pixels as the file of that name in\n"
+         "<folder>.\n";
+    return help ? 0 : 2;
   }
   const std::string out = argv[1];
   if (!vtksys::SystemTools::MakeDirectory(out))

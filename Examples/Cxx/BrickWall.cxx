@@ -54,6 +54,12 @@ vtkSmartPointer<vtkPolyData> Wall(const double st[4][2])
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "BrickWall",
+        "The brick wall as one textured quad, five ways side by side: the picture once,\nrepeated, "
+        "mirrored, a tilted photo, and that photo straightened."))
+  {
+    return 0;
+  }
   vtkSmartPointer<vtkTexture> bricks = ExampleScene::LoadTexture("brick_color.png");
   if (!bricks)
   {

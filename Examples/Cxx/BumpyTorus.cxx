@@ -16,6 +16,12 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "BumpyTorus",
+        "Bump mapping on a torus: plain (left) and with vtkSurfaceDetailMapper's bump\nmapping of "
+        "a quilt of round bumps (right), lit from the upper right."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricDonut> donut;
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(donut);

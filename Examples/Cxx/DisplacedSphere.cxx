@@ -19,6 +19,12 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "DisplacedSphere",
+        "Displacement mapping on a sphere: vtkDisplacementMapFilter moves the points, and\nits "
+        "four NormalModes shade the moved surface side by side."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricSphere> sphere;
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(sphere);

@@ -41,20 +41,46 @@ int main(int argc, char* argv[])
   int resolution = 1024;
   int threads = 0;
   std::string output = "DistributedSurface.pvtp";
-  for (int a = 1; a + 1 < argc; a += 2)
+  // Any argument it does not know, or --help, answers with the usage and writes nothing: a
+  // mistyped option must not start a run that writes hundreds of megabytes.
+  bool help = false;
+  bool understood = true;
+  for (int a = 1; a < argc && understood && !help; ++a)
   {
-    if (!std::strcmp(argv[a], "--resolution"))
+    const bool hasValue = a + 1 < argc;
+    if (!std::strcmp(argv[a], "--help") || !std::strcmp(argv[a], "-h"))
     {
-      resolution = std::atoi(argv[a + 1]);
+      help = true;
     }
-    else if (!std::strcmp(argv[a], "--threads"))
+    else if (!std::strcmp(argv[a], "--resolution") && hasValue)
     {
-      threads = std::atoi(argv[a + 1]);
+      resolution = std::atoi(argv[++a]);
     }
-    else if (!std::strcmp(argv[a], "--output"))
+    else if (!std::strcmp(argv[a], "--threads") && hasValue)
     {
-      output = argv[a + 1];
+      threads = std::atoi(argv[++a]);
     }
+    else if (!std::strcmp(argv[a], "--output") && hasValue)
+    {
+      output = argv[++a];
+    }
+    else
+    {
+      understood = false;
+    }
+  }
+  if (help || !understood)
+  {
+    if (rank == 0)
+    {
+      std::fprintf(help ? stdout : stderr,
+        "Usage: mpirun -np P DistributedSurface [--resolution N] [--threads T] [--output F]\n\n"
+        "Generates and displaces a surface of 2N x N quads (default N = 1024), one piece per\n"
+        "rank, T vtkSMPTools threads per rank (default: all cores), and writes it to F\n"
+        "(default DistributedSurface.pvtp, with one .vtp per rank beside it).\n");
+    }
+    controller->Finalize();
+    return help ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   if (resolution < 1)
   {

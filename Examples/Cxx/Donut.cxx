@@ -14,6 +14,11 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "Donut",
+        "The donut with a checkerboard: the checks stay square and meet across both seams."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricDonut> donut;
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(donut);

@@ -24,11 +24,40 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <string>
 
 namespace ExampleScene
 {
+/// True when the arguments ask for help (--help or -h): the program then prints its usage
+/// and stops without rendering or writing anything.
+inline bool AskedForHelp(int argc, char* argv[])
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Answers --help for an example that takes only an output folder: prints what the example
+/// draws and where the picture goes, and returns true (the program should then return 0).
+inline bool PrintedUsage(int argc, char* argv[], const char* name, const char* what)
+{
+  if (!AskedForHelp(argc, argv))
+  {
+    return false;
+  }
+  std::cout << "Usage: " << name << " [output folder]\n\n"
+            << what << "\n\nWrites <output folder>/" << name
+            << ".png (default: the current folder).\n";
+  return true;
+}
+
 /// The folder to write into: the first argument, or the current folder.
 inline std::string OutputFolder(int argc, char* argv[])
 {

@@ -76,6 +76,16 @@ vtkSmartPointer<vtkImageData> ProceduralEarth(int width, int height)
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::AskedForHelp(argc, argv))
+  {
+    std::cout << "Usage: Globe [--procedural-map] [output folder]\n\n"
+                 "The Earth on vtkParametricSphere, north up and longitude 0 on -x. The map is\n"
+              << EarthMap
+              << "; with --procedural-map, or where it is missing, a\n"
+                 "map drawn by the program.\n\n"
+                 "Writes <output folder>/Globe.png (default: the current folder).\n";
+    return 0;
+  }
   bool procedural = false;
   std::string folder = ".";
   for (int i = 1; i < argc; ++i)

@@ -35,6 +35,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -119,10 +120,17 @@ void RenderLit(vtkAlgorithmOutput* normalMap, const std::string& path)
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  const bool help =
+    argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0);
+  if (argc != 2 || help)
   {
-    std::cerr << "Usage: " << argv[0] << " <output folder>\n";
-    return 1;
+    (help ? std::cout : std::cerr)
+      << "Usage: HeightMapToNormalMap <output folder>\n\n"
+         "A procedural height map made a normal map by vtkHeightMapToNormalMap, and a flat\n"
+         "square lit through it; then the same for Data/brick_height.png. Writes\n"
+         "HeightMapToNormalMap_height.png, _normal.png, .png, _bricks_normal.png and\n"
+         "_bricks.png (each name begins HeightMapToNormalMap) into the folder.\n";
+    return help ? 0 : 1;
   }
   const std::string folder = argv[1];
 

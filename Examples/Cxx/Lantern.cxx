@@ -14,6 +14,11 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "Lantern",
+        "The cylinder as a paper lantern wrapped in a test card, seen at its seam."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricCylinder> cylinder; // radius 1, height 2
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(cylinder);

@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The love pillar: a heart-shaped Bezier profile in x-z extruded up +y by
-// vtkParametricExtrusion, u along the profile and v up, as texturing code usually has it. Arc-length
-// parameterisation keeps the card's squares the same width all round. The seam sits on the
-// corner at the dip between the lobes, where the normals may differ on each side.
+// vtkParametricExtrusion, u along the profile and v up, as texturing code usually has it.
+// Arc-length parameterisation keeps the card's squares the same width all round. The seam sits on
+// the corner at the dip between the lobes, where the normals may differ on each side.
 #include "ExampleScene.h"
 
 #include <vtkActor.h>
@@ -15,6 +15,11 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "LovePillar",
+        "A heart-shaped Bezier profile extruded by vtkParametricExtrusion, in a test card."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricExtrusion> pillar; // the default profile is the heart, height 2
   pillar->GetProfile()->ArcLengthParameterizationOn();
   vtkNew<vtkParametricSurfaceSource> source;

@@ -15,6 +15,11 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "MarbleVase",
+        "A Bezier profile turned by vtkParametricRevolution, in procedural marble."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricRevolution> vase; // the default profile is the vase
   vase->GetProfile()->ArcLengthParameterizationOn();
   vtkNew<vtkParametricSurfaceSource> source;

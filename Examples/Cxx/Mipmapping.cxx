@@ -17,6 +17,12 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "Mipmapping",
+        "A checkerboard floor to the horizon: nearest, linear, mipmapped and "
+        "anisotropic\nminification side by side."))
+  {
+    return 0;
+  }
   // The floor: 100 units wide, 400 deep, in y = 0; a 2-unit tile of 8 x 8 checks.
   vtkNew<vtkParametricRectangle> floor;
   floor->SetOrigin(-50, 0, 5);

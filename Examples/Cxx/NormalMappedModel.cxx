@@ -53,6 +53,12 @@ vtkSmartPointer<vtkActor> Actor(vtkPolyDataMapper* mapper)
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "NormalMappedModel",
+        "A detailed displaced vase beside a coarse one with a normal map baked from it "
+        "by\nvtkNormalMapBaker: they look alike at a fraction of the polygons."))
+  {
+    return 0;
+  }
   vtkNew<vtkDisplacementMapFilter> displace;
   displace->SetInputData(Vase(384, 256));
   displace->SetInputData(1, ExampleScene::QuiltHeights(768, 512, 24, 16));

@@ -22,6 +22,11 @@
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(argc, argv, "ReliefBricks",
+        "Relief mapping on the brick wall beside normal mapping with the same normals."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricRectangle> wall; // x in [-2,2], y in [0,3.5]
   vtkNew<vtkParametricSurfaceSource> source;
   source->SetParametricFunction(wall);
@@ -80,8 +85,7 @@ int main(int argc, char* argv[])
     camera->SetViewUp(0, 1, 0);
     camera->SetViewAngle(42);
     renderer->ResetCameraClippingRange();
-    ExampleScene::AddLabel(renderer,
-      k == 0 ? "NormalMapping" : "ReliefMapping, SelfShadowing");
+    ExampleScene::AddLabel(renderer, k == 0 ? "NormalMapping" : "ReliefMapping, SelfShadowing");
     window->AddRenderer(renderer);
   }
   return ExampleScene::WritePicture(window, ExampleScene::OutputFolder(argc, argv), "ReliefBricks");

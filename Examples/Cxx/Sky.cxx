@@ -94,6 +94,11 @@ vtkSmartPointer<vtkImageData> Panorama(int width, int height)
 
 int main(int argc, char* argv[])
 {
+  if (ExampleScene::PrintedUsage(
+        argc, argv, "Sky", "A panorama on the inside of a sphere around the camera."))
+  {
+    return 0;
+  }
   vtkNew<vtkParametricSphere> sphere;
   sphere->SetRadius(50);
   vtkNew<vtkParametricSurfaceSource> source;

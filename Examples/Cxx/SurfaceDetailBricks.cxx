@@ -7,6 +7,8 @@
 // from the heights by vtkHeightMapToNormalMap.
 // Usage: SurfaceDetailBricks <output folder>   (writes SurfaceDetailBricks.png there)
 
+#include "ExampleScene.h"
+
 #include <vtkSurfaceDetailMapper.h>
 
 #include <vtkActor.h>
@@ -32,7 +34,12 @@
 
 int main(int argc, char* argv[])
 {
-  const std::string folder = argc > 1 ? argv[1] : ".";
+  if (ExampleScene::PrintedUsage(argc, argv, "SurfaceDetailBricks",
+        "The flat brick wall four ways: plain texture, normal, bump and parallax mapping."))
+  {
+    return 0;
+  }
+  const std::string folder = ExampleScene::OutputFolder(argc, argv);
 
   // The wall, x in [-2,2], y in [0,3.5], tangents with handedness for the maps.
   vtkNew<vtkParametricRectangle> wall;

@@ -20,6 +20,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 import example_scene
 
+example_scene.answer_help(__doc__)
+
 TILT_DEGREES = 12.0
 
 

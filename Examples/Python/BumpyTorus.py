@@ -14,6 +14,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkTexture
 import example_scene
 from surfacedetail import vtkParametricDonut, vtkParametricSurfaceSource, vtkSurfaceDetailMapper
 
+example_scene.answer_help(__doc__)
+
 source = vtkParametricSurfaceSource()
 source.SetParametricFunction(vtkParametricDonut())
 source.SetUResolution(128)

@@ -15,6 +15,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import example_scene
 from surfacedetail import vtkDisplacementMapFilter, vtkParametricSphere, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 source = vtkParametricSurfaceSource()
 source.SetParametricFunction(vtkParametricSphere())
 source.SetUResolution(192)

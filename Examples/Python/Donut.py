@@ -13,6 +13,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 import example_scene
 from surfacedetail import vtkParametricDonut, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 source = vtkParametricSurfaceSource()
 source.SetParametricFunction(vtkParametricDonut())
 source.SetUResolution(128)

@@ -17,6 +17,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkTexture
 import example_scene
 from surfacedetail import vtkParametricSphere, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 EARTH_MAP = "/usr/share/xplanet/images/earth.jpg"
 
 # Longitude, latitude of the centre and the half-widths, in degrees.

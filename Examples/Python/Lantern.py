@@ -13,6 +13,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 import example_scene
 from surfacedetail import vtkParametricCylinder, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 source = vtkParametricSurfaceSource()
 source.SetParametricFunction(vtkParametricCylinder())  # radius 1, height 2
 source.SetUResolution(96)

@@ -13,6 +13,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 import example_scene
 from surfacedetail import vtkParametricExtrusion, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 pillar = vtkParametricExtrusion()  # the default profile is the heart, height 2
 pillar.GetProfile().ArcLengthParameterizationOn()
 source = vtkParametricSurfaceSource()

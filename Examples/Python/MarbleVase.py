@@ -13,6 +13,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 import example_scene
 from surfacedetail import vtkParametricRevolution, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 vase = vtkParametricRevolution()  # the default profile is the vase
 vase.GetProfile().ArcLengthParameterizationOn()
 source = vtkParametricSurfaceSource()

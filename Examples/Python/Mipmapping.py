@@ -13,6 +13,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import example_scene
 from surfacedetail import vtkParametricRectangle, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 # The floor: 100 units wide, 400 deep, in y = 0; a 2-unit tile of 8 x 8 checks.
 floor = vtkParametricRectangle()
 floor.SetOrigin(-50, 0, 5)

@@ -16,6 +16,8 @@ import example_scene
 from surfacedetail import (vtkDisplacementMapFilter, vtkNormalMapBaker, vtkParametricRevolution,
                            vtkParametricSurfaceSource, vtkSurfaceDetailMapper)
 
+example_scene.answer_help(__doc__)
+
 
 def vase(u_resolution, v_resolution):
     source = vtkParametricSurfaceSource()

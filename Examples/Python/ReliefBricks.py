@@ -17,6 +17,8 @@ import example_scene
 from surfacedetail import (vtkHeightMapToNormalMap, vtkOIIOImageReader, vtkParametricRectangle,
                            vtkParametricSurfaceSource, vtkSurfaceDetailMapper)
 
+example_scene.answer_help(__doc__)
+
 source = vtkParametricSurfaceSource()
 source.SetParametricFunction(vtkParametricRectangle())  # x in [-2,2], y in [0,3.5]
 source.SetUResolution(8)

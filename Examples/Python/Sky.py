@@ -16,6 +16,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkTexture
 import example_scene
 from surfacedetail import vtkParametricSphere, vtkParametricSurfaceSource
 
+example_scene.answer_help(__doc__)
+
 
 def smooth_step(a, b, x):
     t = min(1.0, max(0.0, (x - a) / (b - a)))

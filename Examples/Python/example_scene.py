@@ -23,6 +23,14 @@ from vtkmodules.vtkRenderingCore import (vtkLight, vtkRenderer, vtkRenderWindow,
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, "Data")
 
 
+def answer_help(usage):
+    """Prints the script's usage (its docstring) and exits, writing nothing, when the arguments
+    ask for help (--help or -h)."""
+    if any(a in ("--help", "-h") for a in sys.argv[1:]):
+        print(usage.strip())
+        sys.exit(0)
+
+
 def output_folder():
     """The folder to write into: the last argument that is not an option, or '.'."""
     folders = [a for a in sys.argv[1:] if not a.startswith("--")]

@@ -922,13 +922,18 @@ bool ParseOptions(int argc, char* argv[], Options& options)
 
 int main(int argc, char* argv[])
 {
+  const char* usage =
+    "Usage: SurfaceDetailStudy --out <folder> [--rounds N] [--size N] [--repeats N]\n"
+    "                          [--scenes a,b,...] [--images <folder>] [--no-filters] "
+    "[--no-render]\n\n"
+    "The run time against error study: every technique at its settings, timed and compared\n"
+    "with its truth; writes tables and plots into <folder>. scripts/study.sh runs it.\n";
+  const bool help = argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
   Options options;
-  if (!ParseOptions(argc, argv, options))
+  if (help || !ParseOptions(argc, argv, options))
   {
-    std::cerr << "Usage: " << argv[0]
-              << " --out <folder> [--rounds N] [--size N] [--repeats N] [--scenes a,b,...]"
-                 " [--no-filters] [--no-render]\n";
-    return 1;
+    (help ? std::cout : std::cerr) << usage;
+    return help ? 0 : 1;
   }
   vtksys::SystemTools::MakeDirectory(options.Out);
   if (!options.Images.empty())

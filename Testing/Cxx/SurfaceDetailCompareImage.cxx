@@ -9,15 +9,20 @@
 #include "SurfaceDetailImageComparison.h"
 
 #include <iostream>
+#include <string>
 
 int main(int argc, char* argv[])
 {
   const char* baseline = SurfaceDetailImageComparison::Argument(argc, argv, "-V");
   const char* temporary = SurfaceDetailImageComparison::Argument(argc, argv, "-T");
-  if (argc != 6 || !baseline || !temporary)
+  const bool help = argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  if (help || argc != 6 || !baseline || !temporary)
   {
-    std::cerr << "usage: " << argv[0] << " <candidate.png> -V <baseline.png> -T <folder>\n";
-    return 2;
+    (help ? std::cout : std::cerr)
+      << "Usage: SurfaceDetailCompareImage <candidate.png> -V <baseline.png> -T <folder>\n\n"
+         "The project's strict image comparison: passes when the candidate matches the baseline\n"
+         "or one of its alternates; otherwise writes it and the difference into <folder>, fails.\n";
+    return help ? 0 : 2;
   }
   vtkSmartPointer<vtkImageData> candidate = SurfaceDetailImageComparison::ReadPNG(argv[1]);
   if (!candidate)
