@@ -80,8 +80,6 @@ void Load3(const R* a, vtkIdType i, double scale, double v[3])
   v[2] = scale * a[3 * i + 2];
 }
 
-using Lanes = double[Block];
-
 /// The passes work on blocks of points, each quantity of the block held as an array over it
 /// ("lanes"). The square roots and divisions that make vectors unit then run over independent
 /// points, which the processor overlaps (and the compiler vectorises), where one point after
