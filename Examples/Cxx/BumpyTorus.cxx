@@ -35,7 +35,7 @@ int main(int argc, char* argv[])
   heights->SetWrap(vtkTexture::Repeat);
 
   auto window = ExampleScene::MakeWindow(1200, 520);
-  const int techniques[2] = { vtkSurfaceDetailMapper::None, vtkSurfaceDetailMapper::BumpMapping };
+  const int techniques[2] = { vtkSurfaceDetailMapper::Plain, vtkSurfaceDetailMapper::BumpMapping };
   for (int k = 0; k < 2; ++k)
   {
     vtkNew<vtkSurfaceDetailMapper> mapper;
@@ -63,7 +63,7 @@ int main(int argc, char* argv[])
     camera->SetViewUp(0, 1, 0);
     camera->SetViewAngle(35);
     renderer->ResetCameraClippingRange();
-    ExampleScene::AddLabel(renderer, vtkSurfaceDetailMapper::GetTechniqueAsString(techniques[k]));
+    ExampleScene::AddLabel(renderer, mapper->GetTechniqueAsString());
     window->AddRenderer(renderer);
   }
   return ExampleScene::WritePicture(window, ExampleScene::OutputFolder(argc, argv), "BumpyTorus");

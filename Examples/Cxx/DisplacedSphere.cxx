@@ -3,7 +3,7 @@
 // Displacement mapping, p* = p + d(u,v) n, on a sphere: the points really
 // move (the silhouette is bumpy), and vtkDisplacementMapFilter's four NormalModes shade the
 // moved surface side by side, lit from the upper right:
-// - None keeps the sphere's normals: the bumps show only in the outline, not in the shading;
+// - Input keeps the sphere's normals: the bumps show only in the outline, not in the shading;
 // - Approximate is the textbook formula (no d dn/du terms): close to Exact on gentle bumps;
 // - Exact adds the change of the normal (from the source's dNdu, dNdv);
 // - Mesh averages the displaced triangles' normals: right, but faceted where triangles are big.
@@ -33,15 +33,15 @@ int main(int argc, char* argv[])
   source->GenerateDerivativesOn(); // dPdu, dPdv, dNdu, dNdv for the Exact normals
 
   auto window = ExampleScene::MakeWindow(1600, 460);
-  const int modes[4] = { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+  const int modes[4] = { vtkDisplacementMapFilter::Input, vtkDisplacementMapFilter::Approximate,
     vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh };
-  const char* names[4] = { "None", "Approximate", "Exact", "Mesh" };
+  const char* names[4] = { "Input", "Approximate", "Exact", "Mesh" };
   for (int k = 0; k < 4; ++k)
   {
     vtkNew<vtkDisplacementMapFilter> displace;
     displace->SetInputConnection(0, source->GetOutputPort());
     displace->SetInputData(1, ExampleScene::QuiltHeights(512, 256, 16, 8));
-    displace->SetScale(0.12);
+    displace->SetScaleFactor(0.12);
     displace->SetMidlevel(0.0);
     displace->SetWrapToRepeat();
     displace->SetInterpolationToCubic();

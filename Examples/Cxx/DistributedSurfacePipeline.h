@@ -67,7 +67,7 @@ struct Pipeline
     this->Source->GenerateDerivativesOn();
     this->Displace->SetInputConnection(0, this->Source->GetOutputPort());
     this->Displace->SetInputData(1, this->HeightMap);
-    this->Displace->SetScale(0.08);
+    this->Displace->SetScaleFactor(0.08);
     this->Displace->SetMidlevel(0.5);
     this->Displace->SetInterpolationToCubic();
     this->Displace->SetNormalModeToExact();

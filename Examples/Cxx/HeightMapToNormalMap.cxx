@@ -151,8 +151,8 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkHeightMapToNormalMap> toNormals;
   toNormals->SetInputData(heights);
-  toNormals->SetSchemeToSobel();
-  toNormals->SetStrength(0.15);
+  toNormals->SetDifferenceSchemeToSobel();
+  toNormals->SetBumpScale(0.15);
   toNormals->SetWrapToClampToEdge();
   toNormals->SetOutputScalarTypeToUnsignedChar();
 
@@ -175,8 +175,8 @@ int main(int argc, char* argv[])
     reader->SetFileName(bricks.c_str());
     vtkNew<vtkHeightMapToNormalMap> brickNormals;
     brickNormals->SetInputConnection(reader->GetOutputPort());
-    brickNormals->SetSchemeToSobel();
-    brickNormals->SetStrength(0.015);
+    brickNormals->SetDifferenceSchemeToSobel();
+    brickNormals->SetBumpScale(0.015);
     brickNormals->SetWrapToRepeat();
     Write(brickNormals->GetOutputPort(), folder + "/HeightMapToNormalMap_bricks_normal.png");
     RenderLit(brickNormals->GetOutputPort(), folder + "/HeightMapToNormalMap_bricks.png");

@@ -62,7 +62,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkDisplacementMapFilter> displace;
   displace->SetInputData(Vase(384, 256));
   displace->SetInputData(1, ExampleScene::QuiltHeights(768, 512, 24, 16));
-  displace->SetScale(0.03);
+  displace->SetScaleFactor(0.03);
   displace->SetMidlevel(0.0);
   displace->SetInterpolationToLinear();
   displace->SetNormalModeToExact();

@@ -39,7 +39,7 @@ int main(int argc, char* argv[])
   heights->SetFileName(SURFACEDETAIL_DATA_DIR "/brick_height.png");
   vtkNew<vtkHeightMapToNormalMap> relief;
   relief->SetInputConnection(heights->GetOutputPort());
-  relief->SetStrength(depth / 3.75); // the texture square is 4 x 3.5 units on the wall
+  relief->SetBumpScale(depth / 3.75); // the texture square is 4 x 3.5 units on the wall
   relief->OutputReliefOn();
   vtkNew<vtkTexture> reliefMap;
   reliefMap->SetInputConnection(relief->GetOutputPort());

@@ -57,7 +57,7 @@ int main(int argc, char* argv[])
   constexpr double strength = 0.006; // bumps of z = 0.006*h over the texture square
   vtkNew<vtkHeightMapToNormalMap> normals;
   normals->SetInputConnection(heights->GetOutputPort());
-  normals->SetStrength(strength);
+  normals->SetBumpScale(strength);
 
   vtkNew<vtkTexture> colourTexture;
   colourTexture->SetInputConnection(colours->GetOutputPort());
@@ -75,7 +75,7 @@ int main(int argc, char* argv[])
   window->SetSize(1600, 460);
   window->SetMultiSamples(0);
   window->SetOffScreenRendering(1);
-  const int techniques[4] = { vtkSurfaceDetailMapper::None, vtkSurfaceDetailMapper::NormalMapping,
+  const int techniques[4] = { vtkSurfaceDetailMapper::Plain, vtkSurfaceDetailMapper::NormalMapping,
     vtkSurfaceDetailMapper::BumpMapping, vtkSurfaceDetailMapper::ParallaxMapping };
   for (int k = 0; k < 4; ++k)
   {
@@ -114,7 +114,7 @@ int main(int argc, char* argv[])
     renderer->ResetCameraClippingRange();
 
     vtkNew<vtkTextActor> label;
-    label->SetInput(vtkSurfaceDetailMapper::GetTechniqueAsString(techniques[k]));
+    label->SetInput(mapper->GetTechniqueAsString());
     label->GetTextProperty()->SetFontSize(22);
     label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     label->GetPositionCoordinate()->SetValue(0.04, 0.04);

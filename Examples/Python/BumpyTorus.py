@@ -28,7 +28,7 @@ heights.InterpolateOn()
 heights.SetWrap(vtkTexture.Repeat)
 
 window = example_scene.make_window(1200, 520)
-for k, technique in enumerate((vtkSurfaceDetailMapper.None_, vtkSurfaceDetailMapper.BumpMapping)):
+for k, technique in enumerate((vtkSurfaceDetailMapper.Plain, vtkSurfaceDetailMapper.BumpMapping)):
     mapper = vtkSurfaceDetailMapper()
     mapper.SetInputConnection(source.GetOutputPort())
     mapper.SetHeightMap(heights)
@@ -54,7 +54,7 @@ for k, technique in enumerate((vtkSurfaceDetailMapper.None_, vtkSurfaceDetailMap
     camera.SetViewUp(0, 1, 0)
     camera.SetViewAngle(35)
     renderer.ResetCameraClippingRange()
-    example_scene.add_label(renderer, vtkSurfaceDetailMapper.GetTechniqueAsString(technique))
+    example_scene.add_label(renderer, mapper.GetTechniqueAsString())
     window.AddRenderer(renderer)
 
 sys.exit(example_scene.write_picture(window, example_scene.output_folder(), "BumpyTorus"))

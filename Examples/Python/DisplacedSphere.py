@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Displacement mapping, p* = p + d(u,v) n, on a sphere: the points move (the
 silhouette is bumpy), and vtkDisplacementMapFilter's four NormalModes shade the moved surface
-side by side: None keeps the sphere's normals, Approximate is the textbook formula, Exact adds the
+side by side: Input keeps the sphere's normals, Approximate is the textbook formula, Exact adds the
 change of the normal, Mesh averages the displaced triangles' normals.
 (Examples/Cxx/DisplacedSphere.cxx draws the same.)
 
@@ -24,7 +24,7 @@ source.SetVResolution(96)
 source.GenerateDerivativesOn()  # dPdu, dPdv, dNdu, dNdv for the Exact normals
 
 heights = example_scene.quilt_heights(512, 256, 16, 8)
-modes = (("None", vtkDisplacementMapFilter.None_),
+modes = (("Input", vtkDisplacementMapFilter.Input),
          ("Approximate", vtkDisplacementMapFilter.Approximate),
          ("Exact", vtkDisplacementMapFilter.Exact), ("Mesh", vtkDisplacementMapFilter.Mesh))
 
@@ -33,7 +33,7 @@ for k, (name, mode) in enumerate(modes):
     displace = vtkDisplacementMapFilter()
     displace.SetInputConnection(0, source.GetOutputPort())
     displace.SetInputData(1, heights)
-    displace.SetScale(0.12)
+    displace.SetScaleFactor(0.12)
     displace.SetMidlevel(0.0)
     displace.SetWrapToRepeat()
     displace.SetInterpolationToCubic()

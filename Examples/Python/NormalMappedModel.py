@@ -33,7 +33,7 @@ def vase(u_resolution, v_resolution):
 displace = vtkDisplacementMapFilter()
 displace.SetInputData(vase(384, 256))
 displace.SetInputData(1, example_scene.quilt_heights(768, 512, 24, 16))
-displace.SetScale(0.03)
+displace.SetScaleFactor(0.03)
 displace.SetMidlevel(0.0)
 displace.SetInterpolationToLinear()
 displace.SetNormalModeToExact()

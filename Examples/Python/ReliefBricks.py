@@ -30,7 +30,7 @@ heights = vtkOIIOImageReader()
 heights.SetFileName(os.path.join(example_scene.DATA_DIR, "brick_height.png"))
 relief = vtkHeightMapToNormalMap()
 relief.SetInputConnection(heights.GetOutputPort())
-relief.SetStrength(depth / 3.75)  # the texture square is 4 x 3.5 units on the wall
+relief.SetBumpScale(depth / 3.75)  # the texture square is 4 x 3.5 units on the wall
 relief.OutputReliefOn()
 relief_map = vtkTexture()
 relief_map.SetInputConnection(relief.GetOutputPort())

@@ -99,7 +99,7 @@ struct Displacer
   const Fits<R, Id>& FitSums;
   vtkSMPThreadLocal<std::vector<double>>& Scratch; // each thread's sums over polygons
   vtkSurfaceDetail::Progress& Progress;
-  double Scale;
+  double ScaleFactor;
   double Midlevel;
   int Mode;
 
@@ -116,11 +116,11 @@ struct Displacer
     this->Map.Sample(b.Count, b.S, b.T, b.D, b.Ds, b.Dt);
   }
 
-  // The heights in D, Ds, Dt made displacements d = Scale (h - Midlevel) and their slopes,
+  // The heights in D, Ds, Dt made displacements d = ScaleFactor (h - Midlevel) and their slopes,
   // finite whatever the scale.
   void Displacements(PointBlock& b) const
   {
-    const double scale = this->Scale, midlevel = this->Midlevel;
+    const double scale = this->ScaleFactor, midlevel = this->Midlevel;
     for (int k = 0; k < b.Count; ++k)
     {
       b.D[k] = Finite(scale * (b.D[k] - midlevel));
@@ -327,8 +327,8 @@ public:
     vtkSMPThreadLocal<std::vector<double>> scratch;
     const bool mesh = mode == vtkDisplacementMapFilter::Mesh;
     vtkSurfaceDetail::Progress progress(f, 0.2, 0.95, mesh ? 2 * n : n);
-    const Displacer<R, Id> pass{ this->In, this->Out, *map, fits, scratch, progress, f->GetScale(),
-      f->GetMidlevel(), mode };
+    const Displacer<R, Id> pass{ this->In, this->Out, *map, fits, scratch, progress,
+      f->GetScaleFactor(), f->GetMidlevel(), mode };
     vtkSMPTools::For(0, n, grain, pass);
     MergeSeamPoints(pass, groups);
     if (mesh)
@@ -341,7 +341,7 @@ public:
     {
       return Outcome::Aborted;
     }
-    if (mode != vtkDisplacementMapFilter::None)
+    if (mode != vtkDisplacementMapFilter::Input)
     {
       MergeSeamNormals(pass, groups);
     }
@@ -402,7 +402,7 @@ private:
   void AllocateOutputs(int mode)
   {
     this->Out.Points = this->Write(this->OutPoints, "Points", 3);
-    if (mode != vtkDisplacementMapFilter::None)
+    if (mode != vtkDisplacementMapFilter::Input)
     {
       this->Out.Normals = this->Write(this->OutNormals, this->InNormals->GetName(), 3);
     }
@@ -461,7 +461,7 @@ int vtkDisplacementMapFilter::RequestUpdateExtent(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkSurfaceDetailGhosts::RequestOneMoreLevel(inInfo, outInfo);
-  if (!this->MergeSeams && this->NormalMode == None)
+  if (!this->MergeSeams && this->NormalMode == Input)
   {
     // Each point moves on its own: no neighbours needed.
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
@@ -585,7 +585,7 @@ vtkDataArray* vtkDisplacementMapFilter::InputTangents(vtkPolyData* input)
   vtkDataArray* t = input->GetPointData()->GetTangents();
   t = t ? t : input->GetPointData()->GetArray("Tangents");
   const bool usable = t && (t->GetNumberOfComponents() == 3 || t->GetNumberOfComponents() == 4);
-  return this->NormalMode != None && usable ? t : nullptr;
+  return this->NormalMode != Input && usable ? t : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -615,7 +615,7 @@ int vtkDisplacementMapFilter::RequestData(
   {
     return 0;
   }
-  if (this->Scale == 0.0 && this->NormalMode != Mesh)
+  if (this->ScaleFactor == 0.0 && this->NormalMode != Mesh)
   {
     // Nothing moves, so nothing changes: the input itself, bit for bit.
     if (!vtkSurfaceDetailCells::PointIdsInRange(input->GetPolys(), input->GetNumberOfPoints()))
@@ -725,8 +725,8 @@ const char* vtkDisplacementMapFilter::GetNormalModeAsString()
 {
   switch (this->NormalMode)
   {
-    case None:
-      return "None";
+    case Input:
+      return "Input";
     case Approximate:
       return "Approximate";
     case Mesh:
@@ -740,7 +740,7 @@ const char* vtkDisplacementMapFilter::GetNormalModeAsString()
 void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "ScaleFactor: " << this->ScaleFactor << "\n";
   os << indent << "Midlevel: " << this->Midlevel << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "Wrap: " << this->GetWrapAsString() << "\n";

@@ -8,10 +8,10 @@
  * port 1 (`SetInputConnection(1, ...)`) is a 2-D vtkImageData, the height map h. Every point
  * moves to
  *
- *     p' = p + Scale * (h(s,t) - Midlevel) * n
+ *     p' = p + ScaleFactor * (h(s,t) - Midlevel) * n
  *
  * which is displacement mapping as the textbooks give it: p*(u,v) = p(u,v) + d(u,v) n(u,v) with
- * d = Scale * (h - Midlevel).
+ * d = ScaleFactor * (h - Midlevel).
  *
  * Sampling the height map. The image is a texture: its origin and spacing are ignored,
  * row 0 is t = 0 and texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H), as
@@ -35,7 +35,7 @@
  * treated as Midlevel; when the surface reads any, one warning gives the map's count of them.
  *
  * Normals (`NormalMode`). Let P_s = dp/ds, P_t = dp/dt, n the unit input normal and
- * d = Scale (h - Midlevel). Differentiating p* = p + d n by the product rule gives
+ * d = ScaleFactor (h - Midlevel). Differentiating p* = p + d n by the product rule gives
  *     p*_s = P_s + d_s n + d n_s,   p*_t = P_t + d_t n + d n_t,   n* ~ p*_s x p*_t.
  * - Exact: exactly that, m* = (P_s + d_s n + d n_s) x (P_t + d_t n + d n_t). The
  *   derivatives of the unit normal, n_s and n_t, come from the surface itself where the point
@@ -59,7 +59,7 @@
  *   curvature, which no resolution removes.
  * - Mesh: the area-weighted average of the displaced polygons' normals, each polygon
  *   oriented as the input normals of its points (vtkPolyDataNormals without splitting).
- * - None: the input normals are kept.
+ * - Input: the input normals are kept.
  * In Approximate and Exact, P_s and P_t first lose their parts along n (the input normal
  * defines the tangent plane), and the output normal is m* / |m*| times the sign of
  * n . (P_s x P_t), so the result never depends on the orientation of the
@@ -83,9 +83,9 @@
  * their texture-coordinate differences. "dPdu", "dPdv", "dNdu" and "dNdv" pass through
  * unchanged: they describe the input surface (nobody asked for them to be recomputed).
  *
- * Tangents. When the point data has tangents (3 or 4 components, the frame of Documentation/Conventions.md), the
- * output tangents are re-orthogonalised to the new normals; the handedness w is kept.
- * All other point and cell arrays pass through.
+ * Tangents. When the point data has tangents (3 or 4 components, the frame of
+ * Documentation/Conventions.md), the output tangents are re-orthogonalised to the new normals; the
+ * handedness w is kept. All other point and cell arrays pass through.
  *
  * Seams. With `MergeSeams` on (the default), points that coincide within
  * `SeamTolerance` (relative to the bounding-box diagonal), such as the duplicated points of
@@ -104,7 +104,7 @@
  * outputs, a point moved beyond float's range gets the largest float of that sign (never
  * infinity), and normals and tangents stay finite and unit.
  *
- * Scale 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
+ * ScaleFactor 0 gives back the input bit for bit (points, normals, tangents; Mesh mode still
  * recomputes the normals from the faces).
  *
  * Pieces: the filter works on whatever piece it gets; the height map is always requested
@@ -138,23 +138,23 @@ public:
   vtkTypeMacro(vtkDisplacementMapFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum WrapModes
+  enum WrapType
   {
     ClampToEdge = 0,
     Repeat = 1,
     MirroredRepeat = 2
   };
 
-  enum InterpolationModes
+  enum InterpolationType
   {
     Nearest = 0,
     Linear = 1,
     Cubic = 2
   };
 
-  enum NormalModes
+  enum NormalModeType
   {
-    None = 0,
+    Input = 0,
     Approximate = 1,
     Exact = 2,
     Mesh = 3
@@ -165,8 +165,8 @@ public:
    * Displacement per unit of height above Midlevel, in the input's length units.
    * Default 1.
    */
-  vtkSetMacro(Scale, double);
-  vtkGetMacro(Scale, double);
+  vtkSetMacro(ScaleFactor, double);
+  vtkGetMacro(ScaleFactor, double);
   ///@}
 
   ///@{
@@ -215,9 +215,9 @@ public:
   /**
    * How the output normals are computed (see the class description). Default Exact.
    */
-  vtkSetClampMacro(NormalMode, int, None, Mesh);
+  vtkSetClampMacro(NormalMode, int, Input, Mesh);
   vtkGetMacro(NormalMode, int);
-  void SetNormalModeToNone() { this->SetNormalMode(None); }
+  void SetNormalModeToInput() { this->SetNormalMode(Input); }
   void SetNormalModeToApproximate() { this->SetNormalMode(Approximate); }
   void SetNormalModeToExact() { this->SetNormalMode(Exact); }
   void SetNormalModeToMesh() { this->SetNormalMode(Mesh); }
@@ -278,13 +278,13 @@ protected:
   bool CheckSurface(vtkPolyData* input);
   bool CheckHeightMap(vtkImageData* image);
 
-  // The input tangents that the output re-orthogonalises, or null (None mode, or none).
+  // The input tangents that the output re-orthogonalises, or null (Input mode, or no tangents).
   vtkDataArray* InputTangents(vtkPolyData* input);
 
   // Reports cells that name points the input does not have.
   void ReportBadPointIds(vtkIdType numPts);
 
-  double Scale = 1.0;
+  double ScaleFactor = 1.0;
   double Midlevel = 0.0;
   int Component = 0;
   int Wrap = Repeat;

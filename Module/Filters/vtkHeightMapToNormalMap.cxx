@@ -171,7 +171,7 @@ struct NormalMapKernel
         : this->Row(c, keep[0], keep) + 1 + this->I0;
       this->Slopes<false>(m, c0, p, n, gx, gy);
       // Finite heights near the type's limits can overflow a difference to +inf and another
-      // to -inf (their sum is NaN), or meet Strength 0 (0*inf): rare, so checked, not avoided.
+      // to -inf (their sum is NaN), or meet BumpScale 0 (0*inf): rare, so checked, not avoided.
       if (this->Normals(c, n) > 0)
       {
         this->Slopes<true>(m, c0, p, n, gx, gy);
@@ -526,7 +526,7 @@ struct Job
   int OutExt[4]; // i0, i1, j0, j1 in input indices
   int Scheme, Wrap, OutputScalarType, OutComps;
   bool GreenUp;
-  double Strength;
+  double BumpScale;
   void* Out;
   vtkSurfaceDetail::Progress* Progress;
 };
@@ -556,8 +556,8 @@ KernelReport RunKernel(const InT* in, int stride, const Job& job)
   kernel.GreenUp = job.GreenUp;
   // A scale that overflows Real would turn flat texels (0 * inf) into NaN: saturate it.
   const double top = static_cast<double>(std::numeric_limits<Real>::max());
-  kernel.Sx = static_cast<Real>(std::min(std::max(job.Strength * job.W * scale, -top), top));
-  kernel.Sy = static_cast<Real>(std::min(std::max(job.Strength * job.H * scale, -top), top));
+  kernel.Sx = static_cast<Real>(std::min(std::max(job.BumpScale * job.W * scale, -top), top));
+  kernel.Sy = static_cast<Real>(std::min(std::max(job.BumpScale * job.H * scale, -top), top));
   kernel.HScale = static_cast<Real>(scale);
   kernel.HOffset = static_cast<Real>(offset);
   kernel.Progress = job.Progress;
@@ -611,10 +611,10 @@ void RunFloating(
   }
   if (relief && report.OutOfRange > 0)
   {
-    vtkWarningWithObjectMacro(
-      self, << report.OutOfRange << " height(s) lie outside [0,1]; their relief depth 1 - h is "
-            << "clamped to [0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise Strength "
-            << "instead.");
+    vtkWarningWithObjectMacro(self,
+      << report.OutOfRange << " height(s) lie outside [0,1]; their relief depth 1 - h is "
+      << "clamped to [0,1]. Rescale the heights (e.g. vtkImageShiftScale) and raise BumpScale "
+      << "instead.");
   }
 }
 
@@ -657,9 +657,9 @@ void vtkHeightMapToNormalMap::SetOutputScalarType(int type)
 }
 
 //------------------------------------------------------------------------------
-const char* vtkHeightMapToNormalMap::GetSchemeAsString()
+const char* vtkHeightMapToNormalMap::GetDifferenceSchemeAsString()
 {
-  switch (this->Scheme)
+  switch (this->DifferenceScheme)
   {
     case Forward:
       return "Forward";
@@ -749,9 +749,9 @@ int vtkHeightMapToNormalMap::RequestData(
       << " tuples for " << w << "x" << h << " texels: give one height per point.");
     return 0;
   }
-  if (!std::isfinite(this->Strength))
+  if (!std::isfinite(this->BumpScale))
   {
-    vtkErrorMacro("Strength is " << this->Strength << ": set a finite value.");
+    vtkErrorMacro("BumpScale is " << this->BumpScale << ": set a finite value.");
     return 0;
   }
   // The kernels read the array's memory directly; other layouts are copied once.
@@ -795,12 +795,12 @@ int vtkHeightMapToNormalMap::RequestData(
   job.OutExt[1] = outExt[1] - ext[0];
   job.OutExt[2] = outExt[2] - ext[2];
   job.OutExt[3] = outExt[3] - ext[2];
-  job.Scheme = this->Scheme;
+  job.Scheme = this->DifferenceScheme;
   job.Wrap = this->Wrap;
   job.OutputScalarType = this->OutputScalarType;
   job.OutComps = comps;
   job.GreenUp = this->GreenUp;
-  job.Strength = this->Strength;
+  job.BumpScale = this->BumpScale;
   job.Out = map->GetVoidPointer(0);
   // Floating-point maps with NaN are done twice (RunFloating): the progress may pass 1 there.
   vtkSurfaceDetail::Progress progress(this, 0.0, 1.0, outExt[3] - outExt[2] + 1);
@@ -830,8 +830,8 @@ int vtkHeightMapToNormalMap::RequestData(
 void vtkHeightMapToNormalMap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Scheme: " << this->GetSchemeAsString() << "\n";
-  os << indent << "Strength: " << this->Strength << "\n";
+  os << indent << "DifferenceScheme: " << this->GetDifferenceSchemeAsString() << "\n";
+  os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
   os << indent << "GreenUp: " << (this->GreenUp ? "On" : "Off") << "\n";
   os << indent << "OutputScalarType: " << vtkImageScalarTypeNameMacro(this->OutputScalarType)

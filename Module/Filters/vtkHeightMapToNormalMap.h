@@ -5,7 +5,7 @@
  * @brief   Turns a height map into a tangent-space normal map (optionally a relief map).
  *
  * The output is the normal map of the surface z = k*h(s,t) over the unit texture square,
- * k being Strength: n = normalize(-k*dh/ds, -k*dh/dt, 1), derivatives taken per unit of
+ * k being BumpScale: n = normalize(-k*dh/ds, -k*dh/dt, 1), derivatives taken per unit of
  * texture coordinate (texel differences times the image's width or height), so the map
  * does not change with the image's resolution, only gets more accurate. Spacing and origin
  * are ignored: a height map lives in texture space. Each component is stored as 0.5*n + 0.5
@@ -26,10 +26,10 @@
  * is filled with the plane), within the range of the finite heights; one warning with the
  * count.
  *
- * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, Policarpo and Oliveira's relief map). For
- * floating-point input h is the height as given, the same value the normal map and
+ * OutputRelief adds A = depth = 1 - h (0 = top, 1 = deepest, Policarpo and Oliveira's relief map).
+ * For floating-point input h is the height as given, the same value the normal map and
  * vtkDisplacementMapFilter use, so a relief rendered with DepthScale d shows the surface
- * whose normal map this is when Strength = d; heights outside [0,1] are clamped to it with
+ * whose normal map this is when BumpScale = d; heights outside [0,1] are clamped to it with
  * a warning (rescale first, e.g. with vtkImageShiftScale).
  *
  * The output holds one array, "NormalMap" (RGB) or "ReliefMap" (RGBA), of
@@ -54,7 +54,7 @@ public:
   vtkTypeMacro(vtkHeightMapToNormalMap, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum SchemeType
+  enum DifferenceSchemeType
   {
     Forward = 0,
     Central = 1,
@@ -74,22 +74,22 @@ public:
   /**
    * The finite-difference scheme. Default Central.
    */
-  vtkSetClampMacro(Scheme, int, Forward, Scharr);
-  vtkGetMacro(Scheme, int);
-  void SetSchemeToForward() { this->SetScheme(Forward); }
-  void SetSchemeToCentral() { this->SetScheme(Central); }
-  void SetSchemeToSobel() { this->SetScheme(Sobel); }
-  void SetSchemeToScharr() { this->SetScheme(Scharr); }
-  const char* GetSchemeAsString();
+  vtkSetClampMacro(DifferenceScheme, int, Forward, Scharr);
+  vtkGetMacro(DifferenceScheme, int);
+  void SetDifferenceSchemeToForward() { this->SetDifferenceScheme(Forward); }
+  void SetDifferenceSchemeToCentral() { this->SetDifferenceScheme(Central); }
+  void SetDifferenceSchemeToSobel() { this->SetDifferenceScheme(Sobel); }
+  void SetDifferenceSchemeToScharr() { this->SetDifferenceScheme(Scharr); }
+  const char* GetDifferenceSchemeAsString();
   ///@}
 
   ///@{
   /**
-   * Strength k: the map is the normal map of z = k*h(s,t) over the unit texture square.
+   * BumpScale k: the map is the normal map of z = k*h(s,t) over the unit texture square.
    * Default 1. Must be finite (a non-finite value is an error at execution).
    */
-  vtkSetMacro(Strength, double);
-  vtkGetMacro(Strength, double);
+  vtkSetMacro(BumpScale, double);
+  vtkGetMacro(BumpScale, double);
   ///@}
 
   ///@{
@@ -145,8 +145,8 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Scheme = Central;
-  double Strength = 1.0;
+  int DifferenceScheme = Central;
+  double BumpScale = 1.0;
   int Wrap = Repeat;
   bool GreenUp = true;
   int OutputScalarType = VTK_UNSIGNED_CHAR;

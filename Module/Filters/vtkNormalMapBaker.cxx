@@ -731,7 +731,7 @@ T Quantise(double c)
 }
 
 template <typename T>
-void Encode(const BakeBuffers& buf, const float background[3], T* out)
+void Encode(const BakeBuffers& buf, const float background[3], bool greenUp, T* out)
 {
   vtkSMPTools::For(0, static_cast<vtkIdType>(buf.State.size()),
     [&](vtkIdType begin, vtkIdType end)
@@ -741,7 +741,7 @@ void Encode(const BakeBuffers& buf, const float background[3], T* out)
         double n[3], rgb[3];
         const float* src = buf.State[texel] == Empty ? background : &buf.Normal[3 * texel];
         std::copy_n(src, 3, n);
-        EncodeNormal(n, true, rgb);
+        EncodeNormal(n, greenUp, rgb);
         for (int k = 0; k < 3; ++k)
         {
           out[3 * texel + k] = Quantise<T>(rgb[k]);
@@ -832,8 +832,8 @@ std::string OutsideUnitSquare(const std::vector<double>& uv, const TriangleList&
   return message.str();
 }
 
-void WriteNormalMap(
-  const BakeBuffers& buffers, const float background[3], int type, vtkImageData* image)
+void WriteNormalMap(const BakeBuffers& buffers, const float background[3], bool greenUp, int type,
+  vtkImageData* image)
 {
   ShapeImage(image, buffers.W, buffers.H);
   auto array = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
@@ -843,13 +843,13 @@ void WriteNormalMap(
   switch (type)
   {
     case VTK_UNSIGNED_SHORT:
-      Encode(buffers, background, static_cast<unsigned short*>(array->GetVoidPointer(0)));
+      Encode(buffers, background, greenUp, static_cast<unsigned short*>(array->GetVoidPointer(0)));
       break;
     case VTK_FLOAT:
-      Encode(buffers, background, static_cast<float*>(array->GetVoidPointer(0)));
+      Encode(buffers, background, greenUp, static_cast<float*>(array->GetVoidPointer(0)));
       break;
     default:
-      Encode(buffers, background, static_cast<unsigned char*>(array->GetVoidPointer(0)));
+      Encode(buffers, background, greenUp, static_cast<unsigned char*>(array->GetVoidPointer(0)));
   }
   image->GetPointData()->SetScalars(array);
 }
@@ -1089,7 +1089,9 @@ int vtkNormalMapBaker::RequestData(
   FillMissed(buffers, flat);
   GrowMargin(buffers, this->Margin);
 
-  WriteNormalMap(buffers, flat, this->OutputScalarType, normalMap);
+  // Green down is a tangent-space convention; object-space maps hold the normal as it is.
+  const bool greenUp = this->GreenUp || !settings.TangentSpace;
+  WriteNormalMap(buffers, flat, greenUp, this->OutputScalarType, normalMap);
   if (this->BakeHeight)
   {
     WriteHeightMap(buffers, heightMap);
@@ -1134,6 +1136,7 @@ void vtkNormalMapBaker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Space: " << this->GetSpaceAsString() << "\n";
   os << indent << "OutputScalarType: " << vtkImageScalarTypeNameMacro(this->OutputScalarType)
      << "\n";
+  os << indent << "GreenUp: " << (this->GreenUp ? "On" : "Off") << "\n";
   os << indent << "BakeHeight: " << (this->BakeHeight ? "On" : "Off") << "\n";
   os << indent << "NumberOfCoveredTexels: " << this->NumberOfCoveredTexels << "\n";
   os << indent << "NumberOfUnhitTexels: " << this->NumberOfUnhitTexels << "\n";

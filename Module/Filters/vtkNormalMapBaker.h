@@ -150,6 +150,17 @@ public:
 
   ///@{
   /**
+   * On (default): +Y of a tangent-space map is +t (OpenGL, Blender), as
+   * vtkHeightMapToNormalMap and vtkSurfaceDetailMapper have it. Off: -Y (DirectX, Unreal);
+   * only the green channel changes. Object-space maps are not affected.
+   */
+  vtkSetMacro(GreenUp, bool);
+  vtkGetMacro(GreenUp, bool);
+  vtkBooleanMacro(GreenUp, bool);
+  ///@}
+
+  ///@{
+  /**
    * Off (default): output port 1 is an empty image, and its information says so (an empty
    * whole extent). On: it holds the baked heights.
    */
@@ -194,6 +205,7 @@ protected:
   int Margin = 4;
   int Space = Tangent;
   int OutputScalarType = VTK_UNSIGNED_CHAR;
+  bool GreenUp = true;
   bool BakeHeight = false;
 
   vtkIdType NumberOfCoveredTexels = 0;

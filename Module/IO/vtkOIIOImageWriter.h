@@ -37,7 +37,7 @@ public:
   vtkTypeMacro(vtkOIIOImageWriter, vtkImageWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum FloatPrecisions
+  enum FloatPrecisionType
   {
     Half = 0,
     Single = 1

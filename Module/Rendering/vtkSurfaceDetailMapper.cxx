@@ -111,9 +111,9 @@ void vtkSurfaceDetailMapper::SetUniformSetting(T& member, T value)
   }
 }
 
-void vtkSurfaceDetailMapper::SetNormalStrength(double strength)
+void vtkSurfaceDetailMapper::SetNormalScale(double scale)
 {
-  this->SetUniformSetting(this->NormalStrength, strength);
+  this->SetUniformSetting(this->NormalScale, scale);
 }
 
 void vtkSurfaceDetailMapper::SetGreenUp(bool greenUp)
@@ -168,12 +168,18 @@ vtkMTimeType vtkSurfaceDetailMapper::GetMTime()
 }
 
 //------------------------------------------------------------------------------
-const char* vtkSurfaceDetailMapper::GetTechniqueAsString(int technique)
+const char* vtkSurfaceDetailMapper::GetTechniqueAsString()
+{
+  return TechniqueName(this->Technique);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSurfaceDetailMapper::TechniqueName(int technique)
 {
   switch (technique)
   {
-    case None:
-      return "None";
+    case Plain:
+      return "Plain";
     case NormalMapping:
       return "NormalMapping";
     case BumpMapping:
@@ -190,7 +196,7 @@ const char* vtkSurfaceDetailMapper::GetTechniqueAsString(int technique)
 //------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
 {
-  this->ActiveTechnique = None;
+  this->ActiveTechnique = Plain;
   this->ActiveUsesTangents = false;
   this->ActiveUsesNormalMap = false;
   this->ActiveUsesHeightMap = false;
@@ -212,7 +218,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
   vtkPolyData* input = this->CurrentInput;
   vtkPointData* pd = input ? input->GetPointData() : nullptr;
   vtkDataArray* tangents = nullptr;
-  if (technique != None && pd)
+  if (technique != Plain && pd)
   {
     tangents = pd->GetTangents() ? pd->GetTangents() : pd->GetArray("Tangents");
     vtkDataArray* tcoords = pd->GetTCoords();
@@ -222,7 +228,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     vtkDataArray* reliefScalars = reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
     std::ostringstream err;
     double heightScale = 1.0;
-    const char* name = GetTechniqueAsString(technique);
+    const char* name = TechniqueName(technique);
     if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
     {
       err << name << " needs smooth shading; the actor's property has flat interpolation. "
@@ -310,7 +316,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     if (!err.str().empty())
     {
       problem = err.str() + " Rendering without surface detail.";
-      technique = None;
+      technique = Plain;
     }
   }
 
@@ -324,12 +330,12 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
   }
 
   // Lighting off means no normal is ever read: nothing to do but draw as VTK does.
-  if (technique == None || !act->GetProperty()->GetLighting())
+  if (technique == Plain || !act->GetProperty()->GetLighting())
   {
-    technique = None;
+    technique = Plain;
   }
   this->ActiveTechnique = technique;
-  if (technique != None)
+  if (technique != Plain)
   {
     this->ActiveUsesTangents = usesTangents;
     this->ActiveUsesNormalMap = usesNormalMap;
@@ -358,7 +364,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
 //------------------------------------------------------------------------------
 bool vtkSurfaceDetailMapper::AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act)
 {
-  if (this->ActiveTechnique == None || !cellBO ||
+  if (this->ActiveTechnique == Plain || !cellBO ||
     act->GetProperty()->GetRepresentation() != VTK_SURFACE)
   {
     return false;
@@ -429,7 +435,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   // lights the relief without a normal map).
   const int components = this->ActiveTechnique == BumpMapping ? 2 : 3;
   if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp &&
-    this->Differences == this->HeightUploadDifferences &&
+    this->DifferenceScheme == this->HeightUploadDifferenceScheme &&
     components == this->HeightUploadComponents)
   {
     return;
@@ -474,7 +480,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
     j = vtkSurfaceDetail::WrapIndex(j, h, wrap);
     return values[static_cast<size_t>(j) * w + i];
   };
-  const bool central = this->Differences == Central;
+  const bool central = this->DifferenceScheme == Central;
   const int back = central ? 1 : 0;
   const double span = central ? 2.0 : 1.0;
   const int gradient = components - 2; // the channel of dh/ds
@@ -508,7 +514,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   this->HeightTexture->SetMinificationFilter(filter);
   this->HeightTexture->SetMagnificationFilter(filter);
   this->HeightUploadStamp = stamp;
-  this->HeightUploadDifferences = this->Differences;
+  this->HeightUploadDifferenceScheme = this->DifferenceScheme;
   this->HeightUploadComponents = components;
 }
 
@@ -850,7 +856,7 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   if (this->ActiveUsesNormalMap)
   {
     program->SetUniformi("sdNormalMap", TextureUnit(this->NormalMap));
-    const float strength = static_cast<float>(this->NormalStrength);
+    const float strength = static_cast<float>(this->NormalScale);
     const float scaleXY[2] = { strength, this->GreenUp ? strength : -strength };
     program->SetUniform2f("sdNormalScaleXY", scaleXY);
   }
@@ -897,10 +903,10 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
     this->SetTechnique(other->GetTechnique());
     this->SetNormalMap(other->GetNormalMap());
     this->SetHeightMap(other->GetHeightMap());
-    this->SetNormalStrength(other->GetNormalStrength());
+    this->SetNormalScale(other->GetNormalScale());
     this->SetGreenUp(other->GetGreenUp());
     this->SetBumpScale(other->GetBumpScale());
-    this->SetDifferences(other->GetDifferences());
+    this->SetDifferenceScheme(other->GetDifferenceScheme());
     this->SetTangentFree(other->GetTangentFree());
     this->SetDepthScale(other->GetDepthScale());
     this->SetReliefMap(other->GetReliefMap());
@@ -917,14 +923,15 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
 void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Technique: " << GetTechniqueAsString(this->Technique) << "\n";
-  os << indent << "ActiveTechnique: " << GetTechniqueAsString(this->ActiveTechnique) << "\n";
+  os << indent << "Technique: " << TechniqueName(this->Technique) << "\n";
+  os << indent << "ActiveTechnique: " << TechniqueName(this->ActiveTechnique) << "\n";
   os << indent << "NormalMap: " << this->NormalMap << "\n";
   os << indent << "HeightMap: " << this->HeightMap << "\n";
-  os << indent << "NormalStrength: " << this->NormalStrength << "\n";
+  os << indent << "NormalScale: " << this->NormalScale << "\n";
   os << indent << "GreenUp: " << (this->GreenUp ? "On" : "Off") << "\n";
   os << indent << "BumpScale: " << this->BumpScale << "\n";
-  os << indent << "Differences: " << (this->Differences == Central ? "Central" : "Forward") << "\n";
+  os << indent
+     << "DifferenceScheme: " << (this->DifferenceScheme == Central ? "Central" : "Forward") << "\n";
   os << indent << "TangentFree: " << (this->TangentFree ? "On" : "Off") << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "ReliefMap: " << this->ReliefMap << "\n";

@@ -13,9 +13,9 @@
  * and handing it to VTK's lighting code in place of the interpolated one.
  *
  * Techniques (SetTechnique):
- * - None: exactly the plain mapper (no shader changes, no extra textures or attributes).
+ * - Plain: exactly the plain mapper (no shader changes, no extra textures or attributes).
  * - NormalMapping: tangent-space normal map (SetNormalMap; RGB = 0.5*n + 0.5, green up
- *   by default, see GreenUp) with NormalStrength scaling its tangential part. Needs point
+ *   by default, see GreenUp) with NormalScale scaling its tangential part. Needs point
  *   normals, 2-component texture coordinates and a tangent array with handedness
  *   ("Tangents", 4 components, w = +-1, as vtkParametricSurfaceSource makes; 3-component
  *   tangents are taken with w = +1). Unlike vtkProperty::SetNormalTexture, mirrored texture
@@ -38,7 +38,7 @@
  *   OutputRelief; needs tangents) or from the height map, shaded then with the normal
  *   map if one is set (needs tangents) or else with the normal of the relief surface
  *   itself, from the height gradient and DepthScale (no tangents). The relief with
- *   DepthScale d is the surface vtkDisplacementMapFilter makes with Scale d and
+ *   DepthScale d is the surface vtkDisplacementMapFilter makes with ScaleFactor d and
  *   Midlevel 1. The march uses each fragment's own dP/ds, dP/dt (screen-space
  *   derivatives), so depth is in object units on curved and stretched meshes alike.
  *   SelfShadowing traces from the hit toward every light that shades it (headlight,
@@ -52,17 +52,17 @@
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
  * input lacks, a normal map with fewer than 3 components or of a type other than unsigned
  * char or float with direct scalars, a height map of a signed integer type) is reported
- * once with vtkErrorMacro, and the actor is rendered as with Technique None until fixed.
+ * once with vtkErrorMacro, and the actor is rendered as with Technique Plain until fixed.
  *
  * Shader code exists only for what is switched on. The program is rebuilt when the set of
  * shader features changes (technique, TangentFree, which maps are read, SelfShadowing,
  * DepthCorrection), never per frame; strengths, scales, step counts, GreenUp and the maps
- * themselves are uniforms and textures. Changing NormalStrength, GreenUp, BumpScale,
+ * themselves are uniforms and textures. Changing NormalScale, GreenUp, BumpScale,
  * DepthScale, LinearSearchSteps, BinarySearchSteps or AdaptiveSteps modifies the
  * mapper (GetMTime, and a ModifiedEvent for observers) but neither rebuilds the shader nor
  * re-uploads the vertex buffers: the next render just sets the new uniform. GetMTime also
  * includes the normal, height and relief maps' textures. The height map is
- * uploaded as a float texture holding h and its finite differences (Differences), so bump
+ * uploaded as a float texture holding h and its finite differences (DifferenceScheme), so bump
  * mapping reads one texel per fragment.
  *
  * Flat interpolation, lighting off or a non-surface representation draw as the plain
@@ -93,14 +93,14 @@ public:
 
   enum TechniqueType
   {
-    None = 0,
+    Plain = 0,
     NormalMapping,
     BumpMapping,
     ParallaxMapping,
     ReliefMapping
   };
 
-  enum DifferenceType
+  enum DifferenceSchemeType
   {
     Forward = 0,
     Central
@@ -108,16 +108,16 @@ public:
 
   ///@{
   /**
-   * The surface-detail technique. Default None.
+   * The surface-detail technique. Default Plain.
    */
-  vtkSetClampMacro(Technique, int, None, ReliefMapping);
+  vtkSetClampMacro(Technique, int, Plain, ReliefMapping);
   vtkGetMacro(Technique, int);
-  void SetTechniqueToNone() { this->SetTechnique(None); }
+  void SetTechniqueToPlain() { this->SetTechnique(Plain); }
   void SetTechniqueToNormalMapping() { this->SetTechnique(NormalMapping); }
   void SetTechniqueToBumpMapping() { this->SetTechnique(BumpMapping); }
   void SetTechniqueToParallaxMapping() { this->SetTechnique(ParallaxMapping); }
   void SetTechniqueToReliefMapping() { this->SetTechnique(ReliefMapping); }
-  static const char* GetTechniqueAsString(int technique);
+  const char* GetTechniqueAsString();
   ///@}
 
   ///@{
@@ -148,8 +148,8 @@ public:
   /**
    * Scale of the normal map's tangential part (1 = as stored, 0 = flat). Default 1.
    */
-  void SetNormalStrength(double strength);
-  vtkGetMacro(NormalStrength, double);
+  void SetNormalScale(double scale);
+  vtkGetMacro(NormalScale, double);
   ///@}
 
   ///@{
@@ -174,12 +174,13 @@ public:
   ///@{
   /**
    * Finite differences for the height gradient: Forward (the classic Cg code's, one texel
-   * ahead) or Central (one texel either side, second-order accurate). Default Forward.
+   * ahead) or Central (one texel either side, second-order accurate). Default Central, as
+   * vtkHeightMapToNormalMap's.
    */
-  vtkSetClampMacro(Differences, int, Forward, Central);
-  vtkGetMacro(Differences, int);
-  void SetDifferencesToForward() { this->SetDifferences(Forward); }
-  void SetDifferencesToCentral() { this->SetDifferences(Central); }
+  vtkSetClampMacro(DifferenceScheme, int, Forward, Central);
+  vtkGetMacro(DifferenceScheme, int);
+  void SetDifferenceSchemeToForward() { this->SetDifferenceScheme(Forward); }
+  void SetDifferenceSchemeToCentral() { this->SetDifferenceScheme(Central); }
   ///@}
 
   ///@{
@@ -263,7 +264,7 @@ public:
   ///@}
 
   /**
-   * The technique used in the last render: the requested one, or None when the input
+   * The technique used in the last render: the requested one, or Plain when the input
    * could not support it (see the class documentation).
    */
   vtkGetMacro(ActiveTechnique, int);
@@ -274,7 +275,7 @@ public:
   void ShallowCopy(vtkAbstractMapper* m) override;
 
   /**
-   * Includes the uniform-only settings (NormalStrength, GreenUp, BumpScale, DepthScale and
+   * Includes the uniform-only settings (NormalScale, GreenUp, BumpScale, DepthScale and
    * the relief's step settings),
    * which are kept out of the time the shader and vertex-buffer rebuild checks compare:
    * changing them re-renders with new uniforms, not a new program or new buffers.
@@ -301,13 +302,13 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
 
-  int Technique = None;
+  int Technique = Plain;
   vtkTexture* NormalMap = nullptr;
   vtkTexture* HeightMap = nullptr;
-  double NormalStrength = 1.0;
+  double NormalScale = 1.0;
   bool GreenUp = true;
   double BumpScale = 1.0;
-  int Differences = Forward;
+  int DifferenceScheme = Central;
   bool TangentFree = false;
   double DepthScale = 0.05;
   vtkTexture* ReliefMap = nullptr;
@@ -321,6 +322,8 @@ private:
   vtkSurfaceDetailMapper(const vtkSurfaceDetailMapper&) = delete;
   void operator=(const vtkSurfaceDetailMapper&) = delete;
 
+  static const char* TechniqueName(int technique);
+
   // Works out what the input and textures allow; reports a problem once.
   void ResolveTechnique(vtkActor* act);
   // Whether the primitive being built or drawn gets the detail shading.
@@ -333,7 +336,7 @@ private:
   // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
   void AddReliefShadows(std::string& fs);
 
-  int ActiveTechnique = None;
+  int ActiveTechnique = Plain;
   bool ActiveUsesTangents = false;
   bool ActiveUsesNormalMap = false;
   bool ActiveUsesHeightMap = false;
@@ -343,7 +346,7 @@ private:
   std::map<const vtkOpenGLHelper*, std::string> BuiltShaderKeys;
   vtkSmartPointer<vtkTextureObject> HeightTexture;
   vtkMTimeType HeightUploadStamp = 0;
-  int HeightUploadDifferences = Forward;
+  int HeightUploadDifferenceScheme = Central;
   int HeightUploadComponents = 0;
   // When a uniform-only setting last changed; GetMTime leaves it out while the superclass
   // decides whether to rebuild (IgnoreUniformTime).

@@ -140,7 +140,7 @@ void BM_DisplacementMapFilter(benchmark::State& state)
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, mesh);
   filter->SetInputData(1, HeightImage());
-  filter->SetScale(Scale);
+  filter->SetScaleFactor(Scale);
   filter->SetMidlevel(Mid);
   filter->SetNormalMode(mode == ExactByFits ? vtkDisplacementMapFilter::Exact : mode);
   filter->SetInterpolationToLinear();
@@ -157,7 +157,7 @@ void BM_DisplacementMapFilter(benchmark::State& state)
     if (reexecute)
     {
       // A Scale slider: a new Scale each time, the mesh untouched.
-      filter->SetScale(Scale * (1.0 + 1e-6 * (++k % 2)));
+      filter->SetScaleFactor(Scale * (1.0 + 1e-6 * (++k % 2)));
     }
     else
     {
@@ -173,7 +173,7 @@ void BM_DisplacementMapFilter(benchmark::State& state)
     }
     filter->Update();
   }
-  filter->SetScale(Scale);
+  filter->SetScaleFactor(Scale);
   filter->Update();
   Report(state, c, filter->GetOutput(), filter->GetOutput()->GetPointData()->GetNormals());
   state.counters["threads"] = vtkSMPTools::GetEstimatedNumberOfThreads();
@@ -421,7 +421,7 @@ void BM_FusedKernel(benchmark::State& state)
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, c.Mesh);
   filter->SetInputData(1, image);
-  filter->SetScale(Scale);
+  filter->SetScaleFactor(Scale);
   filter->SetMidlevel(Mid);
   filter->SetNormalModeToApproximate();
   filter->SetInterpolationToLinear();

@@ -145,8 +145,8 @@ void BM_HeightMapToNormalMap(benchmark::State& state)
   vtkImageData* heights = bytes ? ByteHeights() : Heights();
   vtkNew<vtkHeightMapToNormalMap> filter;
   filter->SetInputData(heights);
-  filter->SetScheme(scheme);
-  filter->SetStrength(Strength);
+  filter->SetDifferenceScheme(scheme);
+  filter->SetBumpScale(Strength);
   filter->SetOutputScalarType(type);
   for (auto _ : state)
   {
@@ -155,7 +155,7 @@ void BM_HeightMapToNormalMap(benchmark::State& state)
     benchmark::DoNotOptimize(filter->GetOutput()->GetScalarPointer());
   }
   state.SetLabel(std::string(state.range(3) == 1 ? "1 thread/" : "") +
-    (bytes ? "uchar heights/" : "") + filter->GetSchemeAsString() + "/" + TypeName(type));
+    (bytes ? "uchar heights/" : "") + filter->GetDifferenceSchemeAsString() + "/" + TypeName(type));
   state.SetItemsProcessed(state.iterations() * Size * Size);
 }
 
@@ -240,9 +240,10 @@ void VtkPipeline(benchmark::State& state, bool sobel)
 
   vtkNew<vtkHeightMapToNormalMap> ours;
   ours->SetInputData(bytes ? ByteHeights() : Heights());
-  ours->SetScheme(sobel ? vtkHeightMapToNormalMap::Sobel : vtkHeightMapToNormalMap::Central);
+  ours->SetDifferenceScheme(
+    sobel ? vtkHeightMapToNormalMap::Sobel : vtkHeightMapToNormalMap::Central);
   ours->SetWrapToClampToEdge();
-  ours->SetStrength(Strength);
+  ours->SetBumpScale(Strength);
   ours->SetOutputScalarType(type);
   ours->Update();
   state.counters["max_diff"] = MaxDifference(encode->GetOutput()->GetPointData()->GetScalars(),

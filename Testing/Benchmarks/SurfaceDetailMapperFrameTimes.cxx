@@ -94,7 +94,7 @@ vtkSmartPointer<vtkTexture> ReliefTexture(double depth, double textureSide)
 {
   vtkNew<vtkHeightMapToNormalMap> relief;
   relief->SetInputData(Texture(1, true)->GetInput());
-  relief->SetStrength(depth / textureSide);
+  relief->SetBumpScale(depth / textureSide);
   relief->OutputReliefOn();
   relief->Update();
   return SurfaceDetailTruthScenes::RepeatedTexture(relief->GetOutput());
@@ -192,7 +192,7 @@ int main(int argc, char* argv[])
   const int relief = SDM::ReliefMapping;
   const std::vector<Variant> variants = {
     { "vtkOpenGLPolyDataMapper (plain)", -1 },
-    { "None", SDM::None },
+    { "Plain", SDM::Plain },
     { "NormalMapping", SDM::NormalMapping },
     { "BumpMapping", SDM::BumpMapping },
     { "BumpMapping, TangentFree", SDM::BumpMapping, true },

@@ -213,8 +213,8 @@ vtkSmartPointer<vtkImageData> NormalMap(
 {
   vtkNew<vtkHeightMapToNormalMap> maps;
   maps->SetInputData(heights);
-  maps->SetStrength(strength);
-  maps->SetScheme(scheme);
+  maps->SetBumpScale(strength);
+  maps->SetDifferenceScheme(scheme);
   maps->SetWrapToRepeat();
   maps->SetOutputRelief(relief);
   maps->Update();
@@ -309,7 +309,7 @@ struct Variant
 
 const char* NormalModeName(int mode)
 {
-  static const char* names[] = { "None", "Approximate", "Exact", "Mesh" };
+  static const char* names[] = { "Input", "Approximate", "Exact", "Mesh" };
   return names[mode];
 }
 
@@ -317,7 +317,7 @@ std::vector<Variant> Variants(const Scene& scene)
 {
   std::vector<Variant> variants;
   variants.push_back({ "no detail", "coarse mesh, plain mapper", Kind::Plain });
-  for (int mode : { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+  for (int mode : { vtkDisplacementMapFilter::Input, vtkDisplacementMapFilter::Approximate,
          vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh })
   {
     // The finest is a quarter of the truth's resolution, so that the truth stays well
@@ -458,7 +458,7 @@ vtkSmartPointer<vtkActor> MakeActor(
     case Kind::Bump:
       mapper->SetTechniqueToBumpMapping();
       mapper->SetHeightMap(in.Heights);
-      mapper->SetDifferences(v.Differences);
+      mapper->SetDifferenceScheme(v.Differences);
       mapper->SetTangentFree(v.TangentFree);
       break;
     case Kind::Parallax:

@@ -258,7 +258,7 @@ void DisplacementStudy(std::FILE* csv, std::FILE* md, int repeats)
     int NormalMode;
     bool Derivatives;
   };
-  const Mode modes[] = { { "None (undisplaced normals)", vtkDisplacementMapFilter::None, false },
+  const Mode modes[] = { { "None (undisplaced normals)", vtkDisplacementMapFilter::Input, false },
     { "Approximate", vtkDisplacementMapFilter::Approximate, false },
     { "Exact (dNdu, dNdv from the source)", vtkDisplacementMapFilter::Exact, true },
     { "Exact (fitted from neighbours)", vtkDisplacementMapFilter::Exact, false },
@@ -276,7 +276,7 @@ void DisplacementStudy(std::FILE* csv, std::FILE* md, int repeats)
       vtkNew<vtkDisplacementMapFilter> displace;
       displace->SetInputConnection(source->GetOutputPort());
       displace->SetInputData(1, heights);
-      displace->SetScale(DisplacementScale);
+      displace->SetScaleFactor(DisplacementScale);
       displace->SetMidlevel(0.5);
       displace->SetWrapToRepeat();
       displace->SetInterpolationToCubic();
@@ -322,7 +322,7 @@ void NormalMapStudy(std::FILE* csv, std::FILE* md, int repeats)
   const double k = 0.05;
   std::fprintf(md,
     "\n## vtkHeightMapToNormalMap: Scheme against slope error\n\n"
-    "Strength %.2f on a periodic analytic height field (slopes up to about 21 degrees), Wrap "
+    "BumpScale %.2f on a periodic analytic height field (slopes up to about 21 degrees), Wrap "
     "Repeat. The decoded normal at each texel centre against (-k dh/ds, -k dh/dt, 1).\n\n"
     "| Scheme | size | output | time ms | mean error (deg) | max error (deg) |\n"
     "|---|---|---|---|---|---|\n",
@@ -355,8 +355,8 @@ void NormalMapStudy(std::FILE* csv, std::FILE* md, int repeats)
       {
         vtkNew<vtkHeightMapToNormalMap> maps;
         maps->SetInputData(heights);
-        maps->SetStrength(k);
-        maps->SetScheme(scheme);
+        maps->SetBumpScale(k);
+        maps->SetDifferenceScheme(scheme);
         maps->SetWrapToRepeat();
         maps->SetOutputScalarType(type);
         const double ms = TimeUpdates(maps, repeats);

@@ -81,7 +81,7 @@ inline vtkSmartPointer<vtkPolyData> Detailed(const Surface& s, int U, int V)
   vtkNew<vtkDisplacementMapFilter> displace;
   displace->SetInputData(0, mesh);
   displace->SetInputData(1, heights);
-  displace->SetScale(s.Scale);
+  displace->SetScaleFactor(s.Scale);
   displace->SetMidlevel(s.Midlevel);
   displace->SetInterpolationToCubic();
   displace->SetWrapToRepeat();

@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Scenes in which surface detail is judged against the surface it stands for: a parametric
 // surface with a coarse tessellation (what the mapper draws on) and a dense one displaced by
-// vtkDisplacementMapFilter with Scale = depth and Midlevel 1 (the truth, Documentation/Conventions.md's meaning
-// of a relief DepthScale deep), one camera and light for every picture of a scene, and the
-// pixels of a frame. TestSurfaceDetailRelief and the SurfaceDetailStudy program share them,
-// so that what the test asserts and what the study reports are measured the same way.
+// vtkDisplacementMapFilter with Scale = depth and Midlevel 1 (the truth,
+// Documentation/Conventions.md's meaning of a relief DepthScale deep), one camera and light for
+// every picture of a scene, and the pixels of a frame. TestSurfaceDetailRelief and the
+// SurfaceDetailStudy program share them, so that what the test asserts and what the study reports
+// are measured the same way.
 #ifndef SurfaceDetailTruthScenes_h
 #define SurfaceDetailTruthScenes_h
 
@@ -92,7 +93,7 @@ inline vtkSmartPointer<vtkPolyData> Displaced(const Surface& surface, vtkImageDa
   displace->SetInputData(
     Tessellate(surface, resolution, false, normalMode == vtkDisplacementMapFilter::Exact));
   displace->SetInputData(1, heights);
-  displace->SetScale(surface.Depth);
+  displace->SetScaleFactor(surface.Depth);
   displace->SetMidlevel(1.0);
   displace->SetWrapToRepeat();
   displace->SetInterpolationToLinear();

@@ -182,7 +182,7 @@ vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, in
   f->SetInputData(0, mesh);
   f->SetInputData(1, image);
   f->SetNormalMode(mode);
-  f->SetScale(scale);
+  f->SetScaleFactor(scale);
   f->SetMidlevel(mid);
   f->SetInterpolation(interp);
   f->SetWrap(wrap);
@@ -230,7 +230,7 @@ bool SameBits(vtkDataArray* a, vtkDataArray* b)
            a->GetNumberOfValues() * a->GetDataTypeSize()) == 0;
 }
 
-const int AllModes[4] = { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+const int AllModes[4] = { vtkDisplacementMapFilter::Input, vtkDisplacementMapFilter::Approximate,
   vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh };
 
 // Adds spherical texture coordinates to vtkSphereSource's output, piece by piece.
@@ -291,7 +291,7 @@ TEST(DisplacementMapFilter, SamplingMatchesOpenGLRules)
   {
     for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear })
     {
-      auto out = Displace(probes, image, vtkDisplacementMapFilter::None, 1.0, 0.0, interp, wrap);
+      auto out = Displace(probes, image, vtkDisplacementMapFilter::Input, 1.0, 0.0, interp, wrap);
       for (size_t k = 0; k < st.size(); ++k)
       {
         const double expected = interp == vtkDisplacementMapFilter::Linear
@@ -418,7 +418,7 @@ TEST(DisplacementMapFilter, SeamsAndPolesAreWatertight)
         SCOPED_TRACE(std::string("mode ") + std::to_string(mode) + " wrap " + std::to_string(wrap) +
           (floatPoints ? " float" : " double"));
         auto out = Displace(mesh, image, mode, 0.2, 0.5, vtkDisplacementMapFilter::Cubic, wrap);
-        check(out, mode != vtkDisplacementMapFilter::None, true);
+        check(out, mode != vtkDisplacementMapFilter::Input, true);
         EXPECT_TRUE(AllFinite(out));
       }
     }
@@ -428,7 +428,7 @@ TEST(DisplacementMapFilter, SeamsAndPolesAreWatertight)
   f->SetInputData(0, mesh);
   f->SetInputData(1, image);
   f->SetWrapToClampToEdge();
-  f->SetScale(0.2);
+  f->SetScaleFactor(0.2);
   f->MergeSeamsOff();
   f->Update();
   EXPECT_GT(check(f->GetOutput(), true, false), 0);
@@ -554,7 +554,7 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
         one->GetPointData()->GetArray("Tangents"), two->GetPointData()->GetArray("Tangents")))
         << mode << " " << floatPoints;
       // (None passes the NaN normal through.)
-      EXPECT_TRUE(mode == vtkDisplacementMapFilter::None || AllFinite(one))
+      EXPECT_TRUE(mode == vtkDisplacementMapFilter::Input || AllFinite(one))
         << mode << " " << floatPoints;
     }
   }
@@ -594,7 +594,7 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
         {
           before->DeepCopy(f->GetOutput());
         }
-        f->SetScale(scale);
+        f->SetScaleFactor(scale);
         f->Update();
         auto fresh = Displace(mesh, image, mode, scale, 0.5);
         EXPECT_TRUE(same(f->GetOutput(), fresh)) << what << ", mode " << mode;
@@ -693,7 +693,7 @@ void ExpectFreshAfter(vtkDisplacementMapFilter* f, const char* what, Change&& ch
   fresh->SetInputData(0, f->GetInputDataObject(0, 0));
   fresh->SetInputData(1, f->GetInputDataObject(1, 0));
   fresh->SetNormalMode(f->GetNormalMode());
-  fresh->SetScale(f->GetScale());
+  fresh->SetScaleFactor(f->GetScaleFactor());
   fresh->SetMidlevel(f->GetMidlevel());
   fresh->SetComponent(f->GetComponent());
   fresh->SetWrap(f->GetWrap());
@@ -722,7 +722,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterContainerModified)
     f->SetInputData(1, image);
     f->SetNormalMode(mode);
     f->SetMidlevel(0.5);
-    f->SetScale(0.2);
+    f->SetScaleFactor(0.2);
     ExpectFreshAfter(f, "points in place, then the polydata Modified()",
       [&]()
       {
@@ -782,7 +782,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterDerivativesModified)
       f->SetInputData(1, image);
       f->SetNormalMode(mode);
       f->SetMidlevel(0.5);
-      f->SetScale(0.2);
+      f->SetScaleFactor(0.2);
       vtkPointData* pd = mesh->GetPointData();
       auto scaleInPlace = [](vtkDataArray* a, double factor)
       {
@@ -834,7 +834,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
     f->SetInputData(1, image);
     f->SetNormalMode(mode);
     f->SetMidlevel(0.5);
-    f->SetScale(0.2);
+    f->SetScaleFactor(0.2);
     auto mesh = MakeMesh(torus, U, V, false);
     f->SetInputData(0, mesh);
     // The first input and everything that refers to it freed before the next one is made, so
@@ -904,7 +904,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
         mesh = MakeMesh(torus, U, V, false, true);
         f->SetInputData(0, mesh);
       });
-    if (mode != vtkDisplacementMapFilter::None)
+    if (mode != vtkDisplacementMapFilter::Input)
     {
       ExpectFreshAfter(f, "float input made double by a double tangent array",
         [&]()
@@ -928,7 +928,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
         vtkSMPTools::Initialize(1);
         f->Update();
         vtkSMPTools::Initialize(2);
-        f->SetScale(0.25);
+        f->SetScaleFactor(0.25);
       });
     vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
   }
@@ -965,7 +965,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterSettingsChange)
     f->SetInputData(1, image);
     f->SetNormalMode(mode);
     f->SetMidlevel(0.5);
-    f->SetScale(0.2);
+    f->SetScaleFactor(0.2);
     for (int other : AllModes)
     {
       if (other != mode)
@@ -999,7 +999,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterPieceChange)
     f->SetInputConnection(0, tcoords->GetOutputPort());
     f->SetInputData(1, image);
     f->SetNormalMode(mode);
-    f->SetScale(0.05);
+    f->SetScaleFactor(0.05);
     f->SetMidlevel(0.5);
     f->UpdatePiece(0, 2, 0);
     auto first = vtkSmartPointer<vtkPolyData>::New();
@@ -1111,7 +1111,7 @@ TEST(DisplacementMapFilter, PiecesPassThrough)
   vtkNew<vtkDisplacementMapFilter> f;
   f->SetInputConnection(0, tcoords->GetOutputPort());
   f->SetInputConnection(1, wavelet->GetOutputPort());
-  f->SetScale(0.001);
+  f->SetScaleFactor(0.001);
   f->SetNormalModeToApproximate();
   tcoords->Update();
   const vtkIdType whole = tcoords->GetOutput()->GetNumberOfPoints();
@@ -1285,7 +1285,7 @@ TEST(DisplacementMapFilter, NaNHeightsAreMidlevelWithOneWarning)
   f->SetInputData(0, probes);
   f->SetInputData(1, image);
   f->SetMidlevel(0.5);
-  f->SetScale(1.0);
+  f->SetScaleFactor(1.0);
   f->SetInterpolationToNearest();
   f->Update();
   EXPECT_EQ(obs->Warnings, 1);
@@ -1436,7 +1436,7 @@ TEST(DisplacementMapFilter, PointIdsOutOfRangeAreAnError)
   const Surface s = Rectangle();
   auto image = RandomImage(4, 4, 1);
   for (const int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
-         vtkDisplacementMapFilter::Mesh, vtkDisplacementMapFilter::None })
+         vtkDisplacementMapFilter::Mesh, vtkDisplacementMapFilter::Input })
   {
     for (const vtkIdType bad : { vtkIdType(25), vtkIdType(-1), vtkIdType(1) << 40 })
     {
@@ -1495,7 +1495,7 @@ TEST(DisplacementMapFilter, PointIdsOutOfRangeBesidePass1)
                  ids64 ? vtkIdType(1) << 40 : vtkIdType(VTK_TYPE_INT32_MAX) })
           {
             for (const int mode :
-              { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate })
+              { vtkDisplacementMapFilter::Input, vtkDisplacementMapFilter::Approximate })
             {
               for (const bool merge : { true, false })
               {
@@ -1542,7 +1542,7 @@ TEST(DisplacementMapFilter, PointIdsOutOfRangeBesidePass1)
                 pointsBefore->DeepCopy(mesh->GetPoints()->GetData());
                 auto connBefore = vtkSmartPointer<vtkDataArray>::Take(conn->NewInstance());
                 connBefore->DeepCopy(conn);
-                f->SetScale(0.5); // a new execution either way
+                f->SetScaleFactor(0.5); // a new execution either way
                 f->Update();
                 const int errors = obs->Errors;
                 EXPECT_GE(errors, 1);
@@ -1580,7 +1580,7 @@ TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
     ids->InsertNextValue(static_cast<int>(i));
   }
   mesh->GetPointData()->AddArray(ids);
-  auto out = Displace(mesh, MakeHeightImage(s.Height, 32, 16), vtkDisplacementMapFilter::None);
+  auto out = Displace(mesh, MakeHeightImage(s.Height, 32, 16), vtkDisplacementMapFilter::Input);
   EXPECT_TRUE(SameBits(out->GetPointData()->GetArray("Ids"), ids));
   EXPECT_TRUE(SameBits(out->GetPointData()->GetNormals(), mesh->GetPointData()->GetNormals()));
   EXPECT_EQ(out->GetNumberOfCells(), mesh->GetNumberOfCells());
@@ -1597,8 +1597,8 @@ TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
   std::ostringstream os;
   f->Print(os);
   for (const char* key :
-    { "Scale: 1", "Midlevel: 0.25", "Component: 0", "Wrap: MirroredRepeat", "Interpolation: Cubic",
-      "NormalMode: Approximate", "MergeSeams: On", "SeamTolerance: 1e-06" })
+    { "ScaleFactor: 1", "Midlevel: 0.25", "Component: 0", "Wrap: MirroredRepeat",
+      "Interpolation: Cubic", "NormalMode: Approximate", "MergeSeams: On", "SeamTolerance: 1e-06" })
   {
     EXPECT_NE(os.str().find(key), std::string::npos) << key;
   }
@@ -1772,7 +1772,7 @@ TEST(DisplacementMapFilter, FloatArraysAdversarialStayFinite)
             filter->SetInputData(0, mesh);
             filter->SetInputData(1, im);
             filter->SetNormalMode(mode);
-            filter->SetScale(scale);
+            filter->SetScaleFactor(scale);
             filter->SetInterpolation(vtkDisplacementMapFilter::Cubic);
             filter->Update();
             EXPECT_EQ(obs->Errors, 0) << what.str();
@@ -1862,7 +1862,7 @@ TEST(DisplacementMapFilter, FloatArraysBeyondFloatRangeAgreeWithDouble)
           {
             EXPECT_LT(angle, 2e-5) << what.str();
           }
-          again->SetScale(scale);
+          again->SetScaleFactor(scale);
           again->Update();
           EXPECT_TRUE(SameOutput(again->GetOutput(), outF)) << what.str() << " re-execution";
           vtkIdType clamped = 0;
@@ -1925,7 +1925,7 @@ TEST(DisplacementMapFilter, FloatArraysWithVanishingFitsAgreeWithDouble)
           auto outD = Displace(d, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
           auto outF = Displace(fl, image, mode, scale, 0.5, vtkDisplacementMapFilter::Cubic);
           EXPECT_LT(CheckAndCompare(outD, outF, what.str()), 2e-5) << what.str();
-          again->SetScale(scale);
+          again->SetScaleFactor(scale);
           again->Update();
           EXPECT_TRUE(SameOutput(again->GetOutput(), outF)) << what.str() << " re-execution";
         }
@@ -2018,7 +2018,7 @@ TEST(DisplacementMapFilter, MeshNormalsDoNotDependOnPointNumbering)
           f->SetMidlevel(0.5);
           for (double scale : { 0.1, 0.2 })
           {
-            f->SetScale(scale);
+            f->SetScaleFactor(scale);
             f->Update();
             auto out = vtkSmartPointer<vtkPolyData>::New();
             out->DeepCopy(f->GetOutput());
@@ -2124,7 +2124,7 @@ TEST(DisplacementMapFilter, DegenerateTrianglePairsAddNothingToMeshNormals)
       {
         for (vtkDisplacementMapFilter* f : { a.Get(), b.Get() })
         {
-          f->SetScale(scale);
+          f->SetScaleFactor(scale);
           f->Update();
         }
         ExpectSameOutputBits(a->GetOutput(), b->GetOutput(),
@@ -2151,7 +2151,7 @@ TEST(DisplacementMapFilter, DegenerateTrianglePairsAddNothingToMeshNormals)
           f->SetInputData(1, image);
           f->SetNormalMode(mode);
           f->SetMidlevel(0.5);
-          f->SetScale(0.1);
+          f->SetScaleFactor(0.1);
           f->MergeSeamsOff();
           f->Update();
         }
@@ -2215,7 +2215,7 @@ TEST(DisplacementMapFilter, EmptyLastPolygonIsNotRead)
         f->SetInputData(0, f == a.Get() ? mesh.Get() : withEmpty.Get());
         f->SetInputData(1, image);
         f->SetNormalMode(mode);
-        f->SetScale(0.1);
+        f->SetScaleFactor(0.1);
         f->Update();
       }
       ExpectSameOutputBits(a->GetOutput(), b->GetOutput(), "mode " + std::to_string(mode));
@@ -2296,7 +2296,7 @@ TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
             f->SetInputData(0, f == a.Get() ? mesh : renumbered);
             f->SetInputData(1, image);
             f->SetNormalMode(mode);
-            f->SetScale(0.1);
+            f->SetScaleFactor(0.1);
             f->SetMidlevel(0.5);
             f->SetInterpolation(vtkDisplacementMapFilter::Cubic);
             // The seam groups' means add their members in id order, which renumbering changes.
@@ -2307,8 +2307,8 @@ TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
             const std::string what = std::string(floatPoints ? "float" : "double") +
               (derivatives ? " dPdu/dPdv" : "") + " mode " + std::to_string(mode) + " threads " +
               std::to_string(threads) + " execution " + std::to_string(execution);
-            a->SetScale(0.1 + 0.05 * execution);
-            b->SetScale(0.1 + 0.05 * execution);
+            a->SetScaleFactor(0.1 + 0.05 * execution);
+            b->SetScaleFactor(0.1 + 0.05 * execution);
             a->Update();
             b->Update();
             vtkPolyData* x = a->GetOutput();
@@ -2711,7 +2711,7 @@ TEST(DisplacementMapFilter, NonFiniteTextureCoordinatesStayLocal)
         f->SetInputData(0, bad);
         f->SetInputData(1, image);
         f->SetNormalMode(mode);
-        f->SetScale(0.1);
+        f->SetScaleFactor(0.1);
         f->SetMidlevel(0.5);
         f->SetInterpolation(interp);
         f->Update();
@@ -2767,7 +2767,7 @@ TEST(DisplacementMapFilter, OutputPointsPrecision)
       vtkNew<vtkDisplacementMapFilter> f;
       f->SetInputData(mesh);
       f->SetSourceData(image);
-      f->SetScale(0.1);
+      f->SetScaleFactor(0.1);
       f->SetMidlevel(0.5);
       f->SetOutputPointsPrecision(precision);
       f->Update();

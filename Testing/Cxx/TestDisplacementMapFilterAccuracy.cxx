@@ -85,7 +85,7 @@ Errors Measure(const Surface& s, int U, int mode, int derivatives, vtkImageData*
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, mesh);
   filter->SetInputData(1, image);
-  filter->SetScale(s.Scale);
+  filter->SetScaleFactor(s.Scale);
   filter->SetMidlevel(s.Midlevel);
   filter->SetInterpolationToCubic();
   filter->SetWrapToRepeat();
@@ -306,7 +306,7 @@ TEST(DisplacementMapFilterAccuracy, ExactFromNormalDerivativesConverges)
       vtkNew<vtkDisplacementMapFilter> filter;
       filter->SetInputData(0, mesh);
       filter->SetInputData(1, MakeHeightImage(s.Height, W, W / 2));
-      filter->SetScale(s.Scale);
+      filter->SetScaleFactor(s.Scale);
       filter->SetMidlevel(s.Midlevel);
       filter->SetInterpolationToCubic();
       filter->Update();

@@ -64,7 +64,7 @@ vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, co
   filter->SetInputData(0, mesh);
   filter->SetInputData(1, image);
   filter->SetNormalMode(s.Mode);
-  filter->SetScale(s.Scale);
+  filter->SetScaleFactor(s.Scale);
   filter->SetMidlevel(s.Midlevel);
   filter->SetInterpolation(s.Interpolation);
   filter->SetWrap(s.Wrap);
@@ -94,7 +94,7 @@ Vec NormalOf(vtkPolyData* mesh, vtkIdType id)
 
 const char* ModeName(int mode)
 {
-  static const char* names[] = { "None", "Approximate", "Exact", "Mesh" };
+  static const char* names[] = { "Input", "Approximate", "Exact", "Mesh" };
   return names[mode];
 }
 
@@ -189,7 +189,7 @@ TEST(DisplacementMapFilterClosedForms, PoleMovesByTheMeanOfEveryMembersDisplacem
   vtkSmartPointer<vtkPolyData> mesh = MakeMesh(Sphere(), U, V, false);
   vtkSmartPointer<vtkImageData> image = RandomHeights(64, 32, 3);
   vtkDataArray* tc = mesh->GetPointData()->GetTCoords();
-  for (int mode : { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+  for (int mode : { vtkDisplacementMapFilter::Input, vtkDisplacementMapFilter::Approximate,
          vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh })
   {
     SCOPED_TRACE(ModeName(mode));

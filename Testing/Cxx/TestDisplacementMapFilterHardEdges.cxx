@@ -77,7 +77,7 @@ const char* ModeName(int mode)
     case vtkDisplacementMapFilter::Mesh:
       return "Mesh";
     default:
-      return "None";
+      return "Input";
   }
 }
 
@@ -245,7 +245,7 @@ vtkSmartPointer<vtkPolyData> Displace(
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, mesh);
   filter->SetInputData(1, MakeHeightImage(h, 16, 16));
-  filter->SetScale(scale);
+  filter->SetScaleFactor(scale);
   filter->SetMidlevel(midlevel);
   filter->SetInterpolationToLinear();
   filter->SetWrapToClampToEdge();

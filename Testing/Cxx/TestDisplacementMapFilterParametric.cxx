@@ -65,7 +65,7 @@ Result DisplaceSourceSphere(
   vtkNew<vtkDisplacementMapFilter> filter;
   filter->SetInputData(0, surface);
   filter->SetInputData(1, image);
-  filter->SetScale(truth.Scale);
+  filter->SetScaleFactor(truth.Scale);
   filter->SetMidlevel(truth.Midlevel);
   filter->SetInterpolationToCubic();
   filter->SetNormalMode(normalMode);
@@ -179,7 +179,7 @@ TEST(DisplacementMapFilterParametric, PiecesWithGhostCellsEqualTheWhole)
     vtkNew<vtkDisplacementMapFilter> displace;
     displace->SetInputConnection(source->GetOutputPort());
     displace->SetInputData(1, image);
-    displace->SetScale(0.1);
+    displace->SetScaleFactor(0.1);
     displace->SetMidlevel(0.5);
     displace->SetNormalModeToMesh();
     vtkNew<vtkPolyData> cut;

@@ -88,7 +88,7 @@ vtkSmartPointer<vtkPolyData> Run(const Case& c, int piece, int numPieces)
   vtkNew<vtkDisplacementMapFilter> displace;
   displace->SetInputConnection(0, source->GetOutputPort());
   displace->SetInputData(1, DistributedSurface::MakeHeightMap(64, 32));
-  displace->SetScale(0.1);
+  displace->SetScaleFactor(0.1);
   displace->SetMidlevel(0.5);
   displace->SetInterpolationToCubic();
   displace->SetNormalMode(c.NormalMode);

@@ -128,8 +128,8 @@ vtkSmartPointer<vtkImageData> MakeMap(vtkImageData* input, const Settings& s)
 {
   vtkNew<vtkHeightMapToNormalMap> filter;
   filter->SetInputData(input);
-  filter->SetScheme(s.Scheme);
-  filter->SetStrength(s.Strength);
+  filter->SetDifferenceScheme(s.Scheme);
+  filter->SetBumpScale(s.Strength);
   filter->SetWrap(s.Wrap);
   filter->SetGreenUp(s.GreenUp);
   filter->SetOutputScalarType(s.Type);
@@ -864,13 +864,13 @@ TEST(TestHeightMapToNormalMap, SubExtentMatchesWhole)
     30, 20, [](double s, double t) { return 0.5 + 0.4 * std::sin(9 * s + 5 * t * t); });
   vtkNew<vtkHeightMapToNormalMap> filter;
   filter->SetInputData(image);
-  filter->SetSchemeToScharr();
+  filter->SetDifferenceSchemeToScharr();
   filter->Update();
   vtkImageData* whole = filter->GetOutput();
   // A second filter: the first would not re-execute for an extent it already holds.
   vtkNew<vtkHeightMapToNormalMap> partial;
   partial->SetInputData(image);
-  partial->SetSchemeToScharr();
+  partial->SetDifferenceSchemeToScharr();
   const int part[6] = { 0, 6, 15, 19, 0, 0 };
   partial->UpdateExtent(part);
   vtkImageData* piece = partial->GetOutput();
@@ -951,7 +951,7 @@ TEST(TestHeightMapToNormalMap, NonFiniteHeightsAreRepairedWithOneWarning)
 
   // Slopes too steep for a float: the map saturates but never holds NaN.
   filter->SetInputData(FromRows(2, 1, { 0.0, 1.0 }));
-  filter->SetStrength(1e300);
+  filter->SetBumpScale(1e300);
   filter->Update();
   got = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetScalars());
   for (vtkIdType v = 0; v < got->GetNumberOfValues(); ++v)
@@ -1130,7 +1130,7 @@ TEST(TestHeightMapToNormalMap, BadInputIsAnError)
     { "no scalars", noScalars, 1.0, "no point scalars" },
     { "3-D", volume, 1.0, "3-D image" },
     { "empty", empty, 1.0, "empty" },
-    { "NaN strength", good, std::nan(""), "Strength" },
+    { "NaN strength", good, std::nan(""), "BumpScale" },
   };
   for (const Case& c : cases)
   {
@@ -1139,7 +1139,7 @@ TEST(TestHeightMapToNormalMap, BadInputIsAnError)
     messages->Watch(filter);
     messages->Watch(filter->GetExecutive());
     filter->SetInputData(c.Image);
-    filter->SetStrength(c.Strength);
+    filter->SetBumpScale(c.Strength);
     filter->Update();
     EXPECT_GE(messages->Errors, 1) << c.What;
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << c.What;
@@ -1158,16 +1158,16 @@ TEST(TestHeightMapToNormalMap, BadInputIsAnError)
 TEST(TestHeightMapToNormalMap, SettersAndPrintSelf)
 {
   vtkNew<vtkHeightMapToNormalMap> filter;
-  EXPECT_EQ(filter->GetScheme(), vtkHeightMapToNormalMap::Central);
+  EXPECT_EQ(filter->GetDifferenceScheme(), vtkHeightMapToNormalMap::Central);
   EXPECT_EQ(filter->GetWrap(), vtkHeightMapToNormalMap::Repeat);
   EXPECT_TRUE(filter->GetGreenUp());
   EXPECT_FALSE(filter->GetOutputRelief());
-  filter->SetSchemeToForward();
-  EXPECT_EQ(filter->GetScheme(), vtkHeightMapToNormalMap::Forward);
-  filter->SetSchemeToSobel();
-  EXPECT_EQ(filter->GetScheme(), vtkHeightMapToNormalMap::Sobel);
-  filter->SetSchemeToScharr();
-  EXPECT_STREQ(filter->GetSchemeAsString(), "Scharr");
+  filter->SetDifferenceSchemeToForward();
+  EXPECT_EQ(filter->GetDifferenceScheme(), vtkHeightMapToNormalMap::Forward);
+  filter->SetDifferenceSchemeToSobel();
+  EXPECT_EQ(filter->GetDifferenceScheme(), vtkHeightMapToNormalMap::Sobel);
+  filter->SetDifferenceSchemeToScharr();
+  EXPECT_STREQ(filter->GetDifferenceSchemeAsString(), "Scharr");
   filter->SetWrapToMirroredRepeat();
   EXPECT_STREQ(filter->GetWrapAsString(), "MirroredRepeat");
   filter->SetWrapToClampToEdge();
@@ -1176,11 +1176,11 @@ TEST(TestHeightMapToNormalMap, SettersAndPrintSelf)
   EXPECT_EQ(filter->GetOutputScalarType(), VTK_UNSIGNED_SHORT);
   filter->GreenUpOff();
   filter->OutputReliefOn();
-  filter->SetStrength(2.5);
+  filter->SetBumpScale(2.5);
   std::ostringstream os;
   filter->Print(os);
   const std::string text = os.str();
-  for (const char* expect : { "Scheme: Scharr", "Strength: 2.5", "Wrap: ClampToEdge",
+  for (const char* expect : { "DifferenceScheme: Scharr", "BumpScale: 2.5", "Wrap: ClampToEdge",
          "GreenUp: Off", "OutputScalarType: unsigned short", "OutputRelief: On" })
   {
     EXPECT_NE(text.find(expect), std::string::npos) << expect << "\n" << text;

@@ -93,8 +93,8 @@ int ExpectKernelNormals(vtkImageData* image, const Kernel& kernel, int wrap, dou
 {
   vtkNew<vtkHeightMapToNormalMap> filter;
   filter->SetInputData(image);
-  filter->SetScheme(kernel.Scheme);
-  filter->SetStrength(strength);
+  filter->SetDifferenceScheme(kernel.Scheme);
+  filter->SetBumpScale(strength);
   filter->SetWrap(wrap);
   filter->SetOutputScalarTypeToFloat();
   filter->Update();
@@ -148,8 +148,8 @@ TEST(HeightMapToNormalMapKernels, DiagonalNeighbourSeesTheCrossWeightAlone)
   {
     vtkNew<vtkHeightMapToNormalMap> filter;
     filter->SetInputData(image);
-    filter->SetScheme(scheme.first);
-    filter->SetStrength(k);
+    filter->SetDifferenceScheme(scheme.first);
+    filter->SetBumpScale(k);
     filter->SetOutputScalarTypeToFloat();
     filter->Update();
     vtkDataArray* map = filter->GetOutput()->GetPointData()->GetScalars();
@@ -159,7 +159,7 @@ TEST(HeightMapToNormalMapKernels, DiagonalNeighbourSeesTheCrossWeightAlone)
     for (int q = 0; q < 3; ++q)
     {
       EXPECT_NEAR(map->GetComponent(3 * W + 4, q), 0.5 * n[q] / length + 0.5, 1e-6)
-        << filter->GetSchemeAsString() << " component " << q;
+        << filter->GetDifferenceSchemeAsString() << " component " << q;
     }
   }
 }

@@ -447,6 +447,41 @@ TEST(NormalMapBaker, ScalarTypesEncodeTheSameNormals)
   EXPECT_EQ(baker->GetOutputScalarType(), VTK_UNSIGNED_CHAR);
 }
 
+// GreenUp off (DirectX) stores -Y: the green channel becomes 1 - green, red and blue stay;
+// an object-space map is the same either way.
+TEST(NormalMapBaker, GreenDownFlipsOnlyTheGreenOfTangentSpaceMaps)
+{
+  const Surface s = Torus();
+  vtkNew<vtkNormalMapBaker> baker;
+  baker->SetInputData(0, MakeMesh(s, 16, 8, false));
+  baker->SetInputData(1, Detailed(s, 128, 64));
+  baker->SetTextureSize(64, 64);
+  baker->SetMaxRayDistance(0.2);
+  baker->SetOutputScalarTypeToFloat();
+  EXPECT_TRUE(baker->GetGreenUp());
+  for (bool tangentSpace : { true, false })
+  {
+    baker->SetSpace(tangentSpace ? vtkNormalMapBaker::Tangent : vtkNormalMapBaker::Object);
+    baker->GreenUpOn();
+    vtkSmartPointer<vtkImageData> up = Bake(baker);
+    baker->GreenUpOff();
+    vtkSmartPointer<vtkImageData> down = Bake(baker);
+    vtkDataArray* u = up->GetPointData()->GetScalars();
+    vtkDataArray* d = down->GetPointData()->GetScalars();
+    ASSERT_EQ(u->GetNumberOfTuples(), d->GetNumberOfTuples());
+    int flipped = 0;
+    for (vtkIdType k = 0; k < u->GetNumberOfTuples(); ++k)
+    {
+      ASSERT_EQ(d->GetComponent(k, 0), u->GetComponent(k, 0));
+      ASSERT_EQ(d->GetComponent(k, 2), u->GetComponent(k, 2));
+      const double green = tangentSpace ? 1.0 - u->GetComponent(k, 1) : u->GetComponent(k, 1);
+      ASSERT_NEAR(d->GetComponent(k, 1), green, 1e-6);
+      flipped += std::abs(u->GetComponent(k, 1) - 0.5) > 0.01;
+    }
+    EXPECT_GT(flipped, 100) << "the maps must have green that flipping changes";
+  }
+}
+
 // Half of the unit square (the triangle below the diagonal), baked with a margin: texels
 // within Margin rings of it are filled, those beyond keep the flat background.
 TEST(NormalMapBaker, MarginAndUnhitTexels)

@@ -172,7 +172,7 @@ int main(int argc, char* argv[])
   window->AddRenderer(Side(mapped, 0.5));
 
   // The coarse torus without its map first: what the map has to make up for.
-  mapped->SetTechniqueToNone();
+  mapped->SetTechniqueToPlain();
   window->Render();
   const PictureError without = CompareHalves(Grab(window));
   mapped->SetTechniqueToNormalMapping();

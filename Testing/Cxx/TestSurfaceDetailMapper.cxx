@@ -447,15 +447,14 @@ TEST(vtkSurfaceDetailMapper, MTimeFollowsSettingsAndMaps)
     [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   mapper->AddObserver(vtkCommand::ModifiedEvent, count);
   // Each setter, with a value other than its current one.
-  const std::vector<std::function<void()>> settings = {
-    [&] { mapper->SetNormalStrength(mapper->GetNormalStrength() + 1.0); },
+  const std::vector<std::function<void()>> settings = { [&]
+    { mapper->SetNormalScale(mapper->GetNormalScale() + 1.0); },
     [&] { mapper->SetBumpScale(mapper->GetBumpScale() + 1.0); },
     [&] { mapper->SetDepthScale(mapper->GetDepthScale() + 1.0); },
     [&] { mapper->SetLinearSearchSteps(mapper->GetLinearSearchSteps() + 1); },
     [&] { mapper->SetBinarySearchSteps(mapper->GetBinarySearchSteps() + 1); },
     [&] { mapper->SetGreenUp(!mapper->GetGreenUp()); },
-    [&] { mapper->SetAdaptiveSteps(!mapper->GetAdaptiveSteps()); }
-  };
+    [&] { mapper->SetAdaptiveSteps(!mapper->GetAdaptiveSteps()); } };
   for (const auto& change : settings)
   {
     const vtkMTimeType before = mapper->GetMTime();
@@ -550,7 +549,7 @@ TEST(vtkSurfaceDetailMapper, NormalMapStrength)
   auto mapper = MakeMapper(MakeRectangle(false));
   mapper->SetTechniqueToNormalMapping();
   mapper->SetNormalMap(MakeNormalMap());
-  mapper->SetNormalStrength(2.0); // the map of z = 2k*h
+  mapper->SetNormalScale(2.0); // the map of z = 2k*h
   Scene scene(mapper);
   EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false, 2 * Strength), scene.Mat), 40.0);
 }
@@ -604,6 +603,7 @@ TEST(vtkSurfaceDetailMapper, BumpForwardDifferences)
 {
   auto mapper = MakeMapper(MakeRectangle(false));
   mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferenceSchemeToForward();
   mapper->SetHeightMap(MakeHeightMap());
   mapper->SetBumpScale(Strength);
   Scene scene(mapper);
@@ -617,7 +617,7 @@ TEST(vtkSurfaceDetailMapper, BumpCentralDifferencesMirroredSpecular)
 {
   auto mapper = MakeMapper(MakeRectangle(true));
   mapper->SetTechniqueToBumpMapping();
-  mapper->SetDifferencesToCentral();
+  mapper->SetDifferenceSchemeToCentral();
   mapper->SetHeightMap(MakeHeightMap());
   mapper->SetBumpScale(Strength);
   Scene scene(mapper);
@@ -631,7 +631,7 @@ TEST(vtkSurfaceDetailMapper, BumpRotatedNonUniformScale)
   // must tilt the bumps as it tilts the surface they stand on.
   auto mapper = MakeMapper(MakeRectangle(true));
   mapper->SetTechniqueToBumpMapping();
-  mapper->SetDifferencesToCentral();
+  mapper->SetDifferenceSchemeToCentral();
   mapper->SetHeightMap(MakeHeightMap());
   mapper->SetBumpScale(Strength);
   Scene scene(mapper);
@@ -649,7 +649,7 @@ TEST(vtkSurfaceDetailMapper, BumpTangentFree)
   auto mapper = MakeMapper(MakeRectangle(true, false));
   mapper->SetTechniqueToBumpMapping();
   mapper->TangentFreeOn();
-  mapper->SetDifferencesToCentral();
+  mapper->SetDifferenceSchemeToCentral();
   mapper->SetHeightMap(MakeHeightMap());
   mapper->SetBumpScale(Strength);
   Scene scene(mapper);
@@ -668,7 +668,7 @@ TEST(vtkSurfaceDetailMapper, BumpBackFaceMatchesFrontSurface)
     auto mapper = MakeMapper(MakeRectangle(false, !tangentFree));
     mapper->SetTechniqueToBumpMapping();
     mapper->SetTangentFree(tangentFree);
-    mapper->SetDifferencesToCentral();
+    mapper->SetDifferenceSchemeToCentral();
     mapper->SetHeightMap(MakeHeightMap());
     mapper->SetBumpScale(Strength);
     Scene scene(mapper);
@@ -701,6 +701,7 @@ TEST(vtkSurfaceDetailMapper, BumpClampToBorderEdge)
   heights->SetBorderColor(static_cast<float>(border), 0.f, 0.f, 0.f);
   auto mapper = MakeMapper(MakeRectangle(false));
   mapper->SetTechniqueToBumpMapping();
+  mapper->SetDifferenceSchemeToForward();
   mapper->SetHeightMap(heights);
   mapper->SetBumpScale(k);
   Scene scene(mapper);
@@ -726,7 +727,7 @@ TEST(vtkSurfaceDetailMapper, BumpClampToBorderEdge)
   EXPECT_GE(PSNR(scene.Render(), scene.Actor, field, scene.Mat), 40.0);
 }
 
-TEST(vtkSurfaceDetailMapper, NoneMatchesPlainMapper)
+TEST(vtkSurfaceDetailMapper, PlainMatchesVTKMapper)
 {
   auto poly = MakeRectangle(false);
   auto mapper = MakeMapper(poly);
@@ -936,7 +937,7 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     const auto image = scene.Render();
     scene.Render(); // reported once, not every frame
     EXPECT_EQ(errors->Errors, 1) << errors->Last;
-    EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::None);
+    EXPECT_EQ(mapper->GetActiveTechnique(), vtkSurfaceDetailMapper::Plain);
     if (c.Poly->GetPointData()->GetNormals())
     {
       EXPECT_GE(PSNR(image, scene.Actor, FlatNormal(), scene.Mat), 40.0);
@@ -992,7 +993,7 @@ TEST(vtkSurfaceDetailMapper, BumpUnsignedShortHeights)
   heights->RepeatOn();
   auto mapper = MakeMapper(MakeRectangle(false));
   mapper->SetTechniqueToBumpMapping();
-  mapper->SetDifferencesToCentral();
+  mapper->SetDifferenceSchemeToCentral();
   mapper->SetHeightMap(heights);
   mapper->SetBumpScale(Strength);
   Scene scene(mapper);
@@ -1038,7 +1039,7 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   const vtkMTimeType vbo = mapper->VBOTime();
   const vtkMTimeType mtime = mapper->GetMTime();
   const auto before = scene.Render();
-  mapper->SetNormalStrength(0.5);
+  mapper->SetNormalScale(0.5);
   EXPECT_GT(mapper->GetMTime(), mtime) << "a setting changed and the mapper looks unmodified";
   const auto after = scene.Render();
   EXPECT_NE(before, after) << "the new strength did not reach the picture";
@@ -1219,10 +1220,10 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   source->SetTechniqueToParallaxMapping();
   auto heights = MakeHeightMap();
   source->SetHeightMap(heights);
-  source->SetNormalStrength(0.5);
+  source->SetNormalScale(0.5);
   source->GreenUpOff();
   source->SetBumpScale(0.25);
-  source->SetDifferencesToCentral();
+  source->SetDifferenceSchemeToCentral();
   source->TangentFreeOn();
   source->SetDepthScale(0.2);
   auto relief = MakeNormalMap();
@@ -1237,10 +1238,10 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   EXPECT_EQ(copy->GetTechnique(), vtkSurfaceDetailMapper::ParallaxMapping);
   EXPECT_EQ(copy->GetHeightMap(), heights.Get());
   EXPECT_EQ(copy->GetNormalMap(), nullptr);
-  EXPECT_EQ(copy->GetNormalStrength(), 0.5);
+  EXPECT_EQ(copy->GetNormalScale(), 0.5);
   EXPECT_FALSE(copy->GetGreenUp());
   EXPECT_EQ(copy->GetBumpScale(), 0.25);
-  EXPECT_EQ(copy->GetDifferences(), vtkSurfaceDetailMapper::Central);
+  EXPECT_EQ(copy->GetDifferenceScheme(), vtkSurfaceDetailMapper::Central);
   EXPECT_TRUE(copy->GetTangentFree());
   EXPECT_EQ(copy->GetDepthScale(), 0.2);
   EXPECT_EQ(copy->GetReliefMap(), relief.Get());
@@ -1267,7 +1268,7 @@ TEST(vtkSurfaceDetailMapper, ReliefSettingsAreClamped)
   EXPECT_EQ(mapper->GetDepthScale(), 0.0);
 }
 
-// With Technique None the triangles' program is VTK's own, to the character.
+// With Technique Plain the triangles' program is VTK's own, to the character.
 class PlainMapperProbe : public vtkOpenGLPolyDataMapper
 {
 public:
@@ -1277,7 +1278,7 @@ public:
 };
 vtkStandardNewMacro(PlainMapperProbe);
 
-TEST(vtkSurfaceDetailMapper, NoneShaderIsThePlainShader)
+TEST(vtkSurfaceDetailMapper, PlainShaderIsVTKsShader)
 {
   auto poly = MakeRectangle(false);
   vtkNew<CountingMapper> ours;

@@ -5,7 +5,8 @@
 // positional light. Arguments:
 //   --technique none|normal|bump|bump-tangent-free|parallax|relief|relief-shadow|relief-map
 //   --surface rectangle|sphere|torus|vase
-//   --view head-on|oblique|grazing                 --light headlight|positional|raking|spot|lightkit
+//   --view head-on|oblique|grazing                 --light
+//   headlight|positional|raking|spot|lightkit
 //   --mutation none|light-10|flipped-maps|half-scale|flipped-handedness
 // A mutation makes one kind of mistake on purpose (the light turned by 10 degrees about the
 // camera's up axis, the height and normal maps upside down, BumpScale and DepthScale halved,
@@ -184,8 +185,8 @@ int main(int argc, char* argv[])
   auto heights = BrickTextures::Heights();
   vtkNew<vtkHeightMapToNormalMap> toNormals;
   toNormals->SetInputData(heights);
-  toNormals->SetStrength(strength);
-  toNormals->SetSchemeToCentral();
+  toNormals->SetBumpScale(strength);
+  toNormals->SetDifferenceSchemeToCentral();
   toNormals->SetWrap(vtkHeightMapToNormalMap::Repeat);
   toNormals->Update();
 
@@ -196,7 +197,7 @@ int main(int argc, char* argv[])
   mapper->SetNormalMap(MakeTexture(flip ? FlippedRows(normalMap) : normalMap));
   mapper->SetHeightMap(MakeTexture(flip ? FlippedRows(heights) : heights));
   mapper->SetBumpScale(strength);
-  mapper->SetDifferencesToCentral();
+  mapper->SetDifferenceSchemeToCentral();
   mapper->SetDepthScale(depth);
   if (technique == "normal")
   {
@@ -223,8 +224,8 @@ int main(int argc, char* argv[])
     // square's size on the surface (on average: the sides differ from place to place).
     vtkNew<vtkHeightMapToNormalMap> toRelief;
     toRelief->SetInputData(flip ? FlippedRows(heights) : heights);
-    toRelief->SetStrength(depth / MeanTextureSide(source));
-    toRelief->SetSchemeToCentral();
+    toRelief->SetBumpScale(depth / MeanTextureSide(source));
+    toRelief->SetDifferenceSchemeToCentral();
     toRelief->SetWrap(vtkHeightMapToNormalMap::Repeat);
     toRelief->OutputReliefOn();
     toRelief->Update();

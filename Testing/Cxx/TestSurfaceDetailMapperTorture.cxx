@@ -73,7 +73,7 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
   vtkSmartPointer<vtkImageData> heights = Heights();
   vtkNew<vtkHeightMapToNormalMap> normals;
   normals->SetInputData(heights);
-  normals->SetStrength(0.05);
+  normals->SetBumpScale(0.05);
   normals->Update();
 
   vtkSmartPointer<vtkPolyDataMapper> mapper;
@@ -109,7 +109,7 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
       {
         vtkNew<vtkHeightMapToNormalMap> relief;
         relief->SetInputData(heights);
-        relief->SetStrength(0.05);
+        relief->SetBumpScale(0.05);
         relief->OutputReliefOn();
         relief->Update();
         detail->SetReliefMap(SurfaceDetailTruthScenes::RepeatedTexture(relief->GetOutput()));

@@ -127,10 +127,12 @@ void CheckProgressAndAbort(
     EXPECT_EQ(watcher.Errors, 0);
     // The loop stops where it was told to: the event that asked for it is the last one, and
     // none reports the work finished.
-    const auto asked = std::find_if(watcher.Values.begin(), watcher.Values.end(),
-      [&](double v) { return v >= watcher.AbortAt; });
+    const auto asked = std::find_if(
+      watcher.Values.begin(), watcher.Values.end(), [&](double v) { return v >= watcher.AbortAt; });
     ASSERT_NE(asked, watcher.Values.end());
-    EXPECT_EQ(asked + 1, watcher.Values.end()) << "after " << *asked << ": " << watcher.Values.back() << " (" << (watcher.Values.end() - asked - 1) << " more)";
+    EXPECT_EQ(asked + 1, watcher.Values.end())
+      << "after " << *asked << ": " << watcher.Values.back() << " ("
+      << (watcher.Values.end() - asked - 1) << " more)";
     EXPECT_LT(watcher.Values.back(), 1.0);
   }
 }
@@ -165,7 +167,7 @@ TEST(SurfaceDetailProgress, DisplacementMapFilter)
         filter->SetInputData(mesh);
         filter->SetSourceData(image);
         filter->SetNormalMode(mode);
-        filter->SetScale(0.05);
+        filter->SetScaleFactor(0.05);
         return vtkSmartPointer<vtkAlgorithm>(filter);
       });
   }

@@ -132,8 +132,8 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
   vtkNew<vtkHeightMapToNormalMap> maps;
   maps->SetInputData(heights);
-  maps->SetStrength(surface.Depth / MeanTextureSide(surface));
-  maps->SetSchemeToCentral();
+  maps->SetBumpScale(surface.Depth / MeanTextureSide(surface));
+  maps->SetDifferenceSchemeToCentral();
   maps->SetWrap(vtkHeightMapToNormalMap::Repeat);
   maps->SetOutputRelief(look == Look::Relief);
   maps->Update();
@@ -530,8 +530,8 @@ vtkSmartPointer<vtkImageData> ReliefMap(double strength)
 {
   vtkNew<vtkHeightMapToNormalMap> maps;
   maps->SetInputData(BrickTextures::Heights(TruthBricks()));
-  maps->SetStrength(strength);
-  maps->SetSchemeToCentral();
+  maps->SetBumpScale(strength);
+  maps->SetDifferenceSchemeToCentral();
   maps->SetWrap(vtkHeightMapToNormalMap::Repeat);
   maps->OutputReliefOn();
   maps->Update();

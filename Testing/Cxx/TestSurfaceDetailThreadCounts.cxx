@@ -310,7 +310,7 @@ TEST(SurfaceDetailThreadCounts, DisplacementMapFilterIsBitIdenticalInEveryNormal
     [&]
     {
       std::vector<vtkSmartPointer<vtkDataObject>> outputs;
-      for (int mode : { vtkDisplacementMapFilter::None, vtkDisplacementMapFilter::Approximate,
+      for (int mode : { vtkDisplacementMapFilter::Input, vtkDisplacementMapFilter::Approximate,
              vtkDisplacementMapFilter::Exact, vtkDisplacementMapFilter::Mesh })
       {
         for (vtkPolyData* input : { full.GetPointer(), bare.GetPointer() })
@@ -319,7 +319,7 @@ TEST(SurfaceDetailThreadCounts, DisplacementMapFilterIsBitIdenticalInEveryNormal
           filter->SetInputData(0, input);
           filter->SetInputData(1, heights);
           filter->SetNormalMode(mode);
-          filter->SetScale(0.08);
+          filter->SetScaleFactor(0.08);
           filter->SetMidlevel(0.5);
           filter->SetInterpolationToCubic();
           filter->Update();
@@ -364,8 +364,8 @@ TEST(SurfaceDetailThreadCounts, HeightMapToNormalMapIsBitIdentical)
       {
         vtkNew<vtkHeightMapToNormalMap> filter;
         filter->SetInputData(heights);
-        filter->SetScheme(scheme);
-        filter->SetStrength(0.4);
+        filter->SetDifferenceScheme(scheme);
+        filter->SetBumpScale(0.4);
         filter->SetOutputScalarTypeToFloat();
         filter->SetOutputRelief(scheme == vtkHeightMapToNormalMap::Scharr);
         filter->Update();
@@ -383,7 +383,7 @@ TEST(SurfaceDetailThreadCounts, NormalMapBakerIsBitIdentical)
   vtkNew<vtkDisplacementMapFilter> displace;
   displace->SetInputData(0, Donut(160, 120, false, 1.0));
   displace->SetInputData(1, Heights());
-  displace->SetScale(0.05);
+  displace->SetScaleFactor(0.05);
   displace->SetMidlevel(0.5);
   displace->Update();
   auto detailed = vtkSmartPointer<vtkPolyData>::New();

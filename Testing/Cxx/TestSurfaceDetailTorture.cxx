@@ -292,9 +292,9 @@ TEST(SurfaceDetailTorture, HeightMapToNormalMap)
     vtkNew<vtkHeightMapToNormalMap> filter;
     ErrorCount errors(filter);
     filter->SetInputData(image);
-    filter->SetScheme(static_cast<int>(random() % 4));
+    filter->SetDifferenceScheme(static_cast<int>(random() % 4));
     filter->SetWrap(static_cast<int>(random() % 3));
-    filter->SetStrength(Extreme(random, true));
+    filter->SetBumpScale(Extreme(random, true));
     filter->SetOutputScalarType(random() % 3 == 0 ? VTK_FLOAT : VTK_UNSIGNED_CHAR);
     filter->SetOutputRelief(random() & 1);
     filter->Update();
@@ -488,7 +488,7 @@ TEST(SurfaceDetailTorture, DisplacementMapFilter)
     ErrorCount errors(filter);
     filter->SetInputData(0, mesh);
     filter->SetInputData(1, heights);
-    filter->SetScale(Extreme(random, true));
+    filter->SetScaleFactor(Extreme(random, true));
     filter->SetMidlevel(Extreme(random, true));
     filter->SetWrap(static_cast<int>(random() % 3));
     filter->SetInterpolation(static_cast<int>(random() % 3));

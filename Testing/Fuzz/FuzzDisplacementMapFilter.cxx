@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   filter->SetInterpolation(in.Count(0, 2));
   filter->SetNormalMode(in.Count(0, 3));
   filter->SetMergeSeams(in.Byte() % 2);
-  filter->SetScale(in.Float());
+  filter->SetScaleFactor(in.Float());
   filter->SetMidlevel(in.Float());
   vtkNew<vtkImageData> heights;
   heights->SetDimensions(in.Count(1, 8), in.Count(1, 8), 1);

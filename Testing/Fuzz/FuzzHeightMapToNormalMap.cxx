@@ -13,13 +13,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   vtkObject::GlobalWarningDisplayOff();
   FuzzInput in(data, size);
   vtkNew<vtkHeightMapToNormalMap> filter;
-  filter->SetScheme(in.Count(0, 3));
+  filter->SetDifferenceScheme(in.Count(0, 3));
   filter->SetWrap(in.Count(0, 2));
   filter->SetGreenUp(in.Byte() % 2);
   filter->SetOutputRelief(in.Byte() % 2);
   const int types[3] = { VTK_UNSIGNED_CHAR, VTK_UNSIGNED_SHORT, VTK_FLOAT };
   filter->SetOutputScalarType(types[in.Count(0, 2)]);
-  filter->SetStrength(in.Float());
+  filter->SetBumpScale(in.Float());
   vtkNew<vtkImageData> image;
   image->SetDimensions(in.Count(1, 16), in.Count(1, 16), 1);
   image->AllocateScalars(VTK_FLOAT, 1);

@@ -101,7 +101,7 @@ heights.GetPointData().SetScalars(ones)
 displace = surfacedetail.vtkDisplacementMapFilter()
 displace.SetInputConnection(0, sphere.GetOutputPort())
 displace.SetInputData(1, heights)
-displace.SetScale(0.25)
+displace.SetScaleFactor(0.25)
 displace.SetMidlevel(0.0)
 displace.SetNormalModeToExact()
 check(displace.GetNormalMode() == surfacedetail.vtkDisplacementMapFilter.Exact,

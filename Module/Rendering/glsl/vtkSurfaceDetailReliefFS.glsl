@@ -198,7 +198,7 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
 
 // The normal of the relief itself, P + DepthScale*(h - 1)*N, at tc: from the height map's
 // gradient (dh/ds, dh/dt) and the same frame the march used, so shading and depth describe
-// one surface (the one vtkDisplacementMapFilter makes with Scale = DepthScale, Midlevel 1,
+// one surface (the one vtkDisplacementMapFilter makes with ScaleFactor = DepthScale, Midlevel 1,
 // up to the mesh's curvature over the depth).
 vec3 sdReliefHeightNormal(vec2 tc, vec2 gradST)
 {
