@@ -216,14 +216,15 @@ void vtkOIIOImageReader::ExecuteInformation()
       return;
     }
 
+    // The file's size is the extent, whatever was set. Spacing and origin stay the caller's
+    // (vtkImageReader2's 1 and 0 by default): they place the texture in the scene, which the
+    // file knows nothing about, and a resolution the file records is print metadata.
     this->DataExtent[0] = 0;
     this->DataExtent[1] = spec.width - 1;
     this->DataExtent[2] = 0;
     this->DataExtent[3] = spec.height - 1;
     this->DataExtent[4] = 0;
     this->DataExtent[5] = 0;
-    std::fill(this->DataSpacing, this->DataSpacing + 3, 1.0);
-    std::fill(this->DataOrigin, this->DataOrigin + 3, 0.0);
     this->SetDataScalarType(VTKTypeOf(spec.format));
     this->SetNumberOfScalarComponents(spec.nchannels);
     this->ColorSpace = spec.get_string_attribute("oiio:ColorSpace");

@@ -14,9 +14,14 @@
  * - the channel count, 1 to 4 (grey, grey+alpha, RGB, RGBA);
  * - VTK's orientation: row 0 of the output is the bottom row of the picture, so that
  *   texture coordinate t = 0 samples the bottom (as OpenGL and vtkTexture do);
- * - spacing 1 and origin 0, whatever resolution the file records;
  * - the colour space the file declares (OpenImageIO's "oiio:ColorSpace"), through
  *   GetColorSpace() and GetIsSRGB(), so a caller can set vtkTexture::UseSRGBColorSpace.
+ *
+ * The extent is the file's size, (0, width - 1, 0, height - 1, 0, 0): a DataExtent set on
+ * the reader is replaced. DataSpacing and DataOrigin are the caller's (vtkImageReader2's 1
+ * and 0 unless set) and never come from the file, as with vtkPNGReader and vtkJPEGReader:
+ * they place the texture in the scene, and a resolution the file records (dots per inch)
+ * is print metadata.
  *
  * Only the first subimage at full resolution is read. Files OpenImageIO cannot open, and
  * layouts VTK cannot hold (more than 4 channels, volumes, deep data), are errors: the

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkOIIOImageReader / vtkOIIOImageWriter: exact round trips for the lossless formats,
 // orientation checked against independent programs (VTK's own PNG reader and writer,
-// libjpeg-turbo's cjpeg), the factory registration, and every bad input.
+// libjpeg-turbo's cjpeg), the factory registration, vtkImageReader2's contract (the caller's
+// spacing and origin kept), and every bad input.
 
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
@@ -433,6 +434,37 @@ TEST(TestOIIOImageIO, PrintSelf)
   EXPECT_NE(text.str().find("ColorSpace"), std::string::npos);
   EXPECT_NE(text.str().find("FloatPrecision: Half"), std::string::npos);
   EXPECT_NE(text.str().find("CompressionLevel: 5"), std::string::npos);
+}
+
+// As with VTK's own readers, spacing and origin are the caller's: they place the texture in
+// the scene. The extent is the file's, whatever the caller set.
+TEST(TestOIIOImageIO, ReaderKeepsUserSpacingAndOrigin)
+{
+  const std::string path = TempPath("spacing.png");
+  ASSERT_TRUE(Write(RandomImage(VTK_UNSIGNED_CHAR, 1, 37, 23, 12u), path));
+  const double spacing[3] = { 0.5, 2.0, 3.0 };
+  const double origin[3] = { -1.0, 4.0, 7.0 };
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetDataSpacing(spacing);
+  reader->SetDataOrigin(origin);
+  reader->SetDataExtent(0, 3, 0, 3, 0, 0);
+  reader->Update();
+  ASSERT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  vtkImageData* image = reader->GetOutput();
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(image->GetSpacing()[i], spacing[i]) << "spacing " << i;
+    EXPECT_EQ(image->GetOrigin()[i], origin[i]) << "origin " << i;
+    EXPECT_EQ(reader->GetDataSpacing()[i], spacing[i]) << "DataSpacing " << i;
+    EXPECT_EQ(reader->GetDataOrigin()[i], origin[i]) << "DataOrigin " << i;
+  }
+  const int fileExtent[6] = { 0, 36, 0, 22, 0, 0 };
+  for (int i = 0; i < 6; ++i)
+  {
+    EXPECT_EQ(image->GetExtent()[i], fileExtent[i]) << "extent " << i;
+    EXPECT_EQ(reader->GetDataExtent()[i], fileExtent[i]) << "DataExtent " << i;
+  }
 }
 
 TEST(TestOIIOImageIO, ReaderRejectsMissingFile)
