@@ -83,6 +83,9 @@ vtkOIIOImageReader::vtkOIIOImageReader()
   this->FileLowerLeft = 1;
   this->FileDimensionality = 2;
   this->DataScalarType = VTK_UNSIGNED_CHAR;
+  // vtkImageReader2 starts with the pattern "%s.%d"; without it, a pattern is one the caller
+  // set, and can be refused.
+  this->SetFilePattern(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -173,11 +176,33 @@ void vtkOIIOImageReader::Fail(unsigned long errorCode, const std::string& messag
 void vtkOIIOImageReader::ExecuteInformation()
 {
   this->ColorSpace.clear();
+  // vtkImageReader2 also offers file lists, file series and memory buffers. Reading the one
+  // FileName instead would read something other than what was asked for, so they are refused.
+  // Its setters make the last of SetFileName, SetFileNames, SetFilePrefix and SetFilePattern
+  // win, so a pattern matters only without a FileName; a buffer matters always.
+  const char* refused = nullptr;
+  if (this->MemoryBuffer || this->MemoryBufferLength > 0)
+  {
+    refused = "reads files, not memory buffers: use SetFileName(), not "
+              "SetMemoryBuffer()/SetMemoryBufferLength()";
+  }
+  else if (this->FileNames)
+  {
+    refused = "reads one file: use SetFileName(), not SetFileNames()";
+  }
+  else if (this->FilePrefix || (this->FilePattern && !this->FileName))
+  {
+    refused = "reads one file: use SetFileName(), not SetFilePrefix()/SetFilePattern() (file "
+              "series are not supported)";
+  }
+  if (refused)
+  {
+    this->Fail(vtkErrorCode::NoFileNameError, std::string("vtkOIIOImageReader ") + refused + ".");
+    return;
+  }
   if (!this->FileName || !*this->FileName)
   {
-    this->Fail(vtkErrorCode::NoFileNameError,
-      "No file name: call SetFileName() first (file series and memory buffers are not "
-      "supported by this reader).");
+    this->Fail(vtkErrorCode::NoFileNameError, "No file name: call SetFileName() first.");
     return;
   }
   const std::string path = this->FileName;

@@ -28,6 +28,15 @@
  * reader reports the path and OpenImageIO's reason with vtkErrorMacro, sets its ErrorCode
  * and leaves the output empty.
  *
+ * The reader reads the one file named by SetFileName(). The other inputs vtkImageReader2
+ * offers are refused when the pipeline asks for information, in the same way (an error
+ * naming the setter, ErrorCode vtkErrorCode::NoFileNameError, an empty output): file lists
+ * (SetFileNames()), file series (SetFilePrefix(), SetFilePattern(); GetFilePattern() is
+ * null until one is set) and memory buffers (SetMemoryBuffer(), SetMemoryBufferLength()).
+ * The setters keep vtkImageReader2's rule that the last of SetFileName(), SetFileNames(),
+ * SetFilePrefix() and SetFilePattern() wins; a memory buffer is refused even beside a file
+ * name, so clear it with SetMemoryBuffer(nullptr) and SetMemoryBufferLength(0).
+ *
  * Loading the SurfaceDetail::IO library registers the reader with vtkImageReader2Factory,
  * so vtkImageReader2Factory::CreateImageReader2() finds it for the formats VTK's own
  * readers lack (EXR, HDR, ...). VTK's readers are asked first, so PNG or JPEG still go to

@@ -3,7 +3,7 @@
 // vtkOIIOImageReader / vtkOIIOImageWriter: exact round trips for the lossless formats,
 // orientation checked against independent programs (VTK's own PNG reader and writer,
 // libjpeg-turbo's cjpeg), the factory registration, vtkImageReader2's contract (the caller's
-// spacing and origin kept), and every bad input.
+// spacing and origin kept, the inputs this reader cannot read refused), and every bad input.
 
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
@@ -19,6 +19,7 @@
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 
 #include <vtksys/SystemTools.hxx>
 
@@ -174,6 +175,21 @@ void ExpectReadFails(
   {
     EXPECT_EQ(reader->CanReadFile(path.c_str()), 0);
   }
+}
+
+/// What a reader given an input it cannot read must do when updated: an error naming the
+/// setter that gave it, NoFileNameError, and an empty output.
+void ExpectRefused(vtkOIIOImageReader* reader, const char* setter)
+{
+  vtkNew<ErrorObserver> observer;
+  const unsigned long tag = reader->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->Update();
+  reader->RemoveObserver(tag);
+  EXPECT_EQ(observer->Errors, 1) << setter;
+  EXPECT_NE(observer->Message.find(setter), std::string::npos) << observer->Message;
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoFileNameError) << setter;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << setter;
+  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetScalars(), nullptr) << setter;
 }
 
 void ExpectWriteFails(vtkImageData* image, const std::string& path, const char* reasonPart)
@@ -465,6 +481,62 @@ TEST(TestOIIOImageIO, ReaderKeepsUserSpacingAndOrigin)
     EXPECT_EQ(image->GetExtent()[i], fileExtent[i]) << "extent " << i;
     EXPECT_EQ(reader->GetDataExtent()[i], fileExtent[i]) << "DataExtent " << i;
   }
+}
+
+// A list of files would be a volume; this reader reads one picture. After the refusal, a
+// single file name makes the reader work again.
+TEST(TestOIIOImageIO, ReaderRefusesFileNames)
+{
+  const std::string good = TempPath("one_of_many.png");
+  ASSERT_TRUE(Write(RandomImage(VTK_UNSIGNED_CHAR, 1, 8, 8, 2u), good));
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(good.c_str());
+  reader->Update();
+  ASSERT_EQ(reader->GetOutput()->GetNumberOfPoints(), 64);
+
+  vtkNew<vtkStringArray> names;
+  names->InsertNextValue(good);
+  names->InsertNextValue(good);
+  reader->SetFileNames(names);
+  ExpectRefused(reader, "SetFileNames");
+
+  reader->SetFileName(good.c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 64);
+}
+
+TEST(TestOIIOImageIO, ReaderRefusesFileSeries)
+{
+  vtkNew<vtkOIIOImageReader> patterned;
+  patterned->SetFilePattern(TempPath("series_%d.png").c_str());
+  ExpectRefused(patterned, "SetFilePattern");
+
+  vtkNew<vtkOIIOImageReader> prefixed;
+  prefixed->SetFilePrefix(TempPath("series").c_str());
+  ExpectRefused(prefixed, "SetFilePrefix");
+}
+
+// A memory buffer beside a file name must not be silently passed over for the file.
+TEST(TestOIIOImageIO, ReaderRefusesMemoryBuffer)
+{
+  const std::string path = TempPath("buffer.png");
+  ASSERT_TRUE(Write(RandomImage(VTK_UNSIGNED_CHAR, 3, 8, 8, 4u), path));
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetMemoryBuffer(bytes.data());
+  reader->SetMemoryBufferLength(static_cast<vtkIdType>(bytes.size()));
+  ExpectRefused(reader, "SetMemoryBuffer");
+
+  vtkNew<vtkOIIOImageReader> lengthOnly;
+  lengthOnly->SetFileName(path.c_str());
+  lengthOnly->SetMemoryBufferLength(static_cast<vtkIdType>(bytes.size()));
+  ExpectRefused(lengthOnly, "SetMemoryBufferLength");
 }
 
 TEST(TestOIIOImageIO, ReaderRejectsMissingFile)
