@@ -68,13 +68,6 @@ std::unique_ptr<OIIO::ImageInput> OpenInput(const std::string& path)
   config.attribute("oiio:UnassociatedAlpha", 1);
   return OIIO::ImageInput::open(path, &config);
 }
-
-/// Registers one reader with the factory when the library is loaded.
-struct vtkOIIOImageReaderRegistration
-{
-  vtkOIIOImageReaderRegistration() { vtkOIIOImageReader::RegisterWithImageReader2Factory(); }
-};
-const vtkOIIOImageReaderRegistration Registration;
 }
 
 //------------------------------------------------------------------------------
@@ -375,4 +368,15 @@ void vtkOIIOImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorSpace: " << (this->ColorSpace.empty() ? "(none)" : this->ColorSpace)
      << "\n";
   os << indent << "IsSRGB: " << (this->GetIsSRGB() ? "true" : "false") << "\n";
+}
+
+//------------------------------------------------------------------------------
+// SurfaceDetail::IO implements VTK::IOImage (vtk.module): a program built with
+// vtk_module_autoinit naming SurfaceDetail::IO, and the Python module, call this when they
+// start, from every translation unit that includes a VTK::IOImage header. Registration is
+// the program's choice, as for VTK's own object factories, rather than a side effect of
+// loading the library; and a static library's reader is linked in because this is called.
+SURFACEDETAILIO_EXPORT void SurfaceDetailIO_AutoInit_Construct()
+{
+  vtkOIIOImageReader::RegisterWithImageReader2Factory();
 }

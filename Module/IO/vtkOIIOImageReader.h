@@ -37,13 +37,17 @@
  * SetFilePrefix() and SetFilePattern() wins; a memory buffer is refused even beside a file
  * name, so clear it with SetMemoryBuffer(nullptr) and SetMemoryBufferLength(0).
  *
- * Loading the SurfaceDetail::IO library registers the reader with vtkImageReader2Factory,
- * so vtkImageReader2Factory::CreateImageReader2() finds it for the formats VTK's own
- * readers lack (EXR, HDR, ...). VTK's readers are asked first, so PNG or JPEG still go to
- * vtkPNGReader or vtkJPEGReader from the factory; instantiate this class to use OpenImageIO
- * for them too. RegisterWithImageReader2Factory() does the registration explicitly and may
- * be called any number of times; a program linking SurfaceDetailIO as a static library must
- * call it, since there the load-time registration runs only if the linker keeps this class.
+ * The reader is registered with vtkImageReader2Factory through VTK's autoinit:
+ * SurfaceDetail::IO implements VTK::IOImage, so a program built with
+ * `vtk_module_autoinit(TARGETS app MODULES SurfaceDetail::IO)`, and the Python package
+ * (importing surfacedetail), register it at start-up (in C++, from each source file that
+ * includes a VTK::IOImage header such as vtkImageReader2Factory.h), and
+ * vtkImageReader2Factory::CreateImageReader2() finds it for the formats VTK's own readers
+ * lack (EXR, ...). Merely linking the library registers nothing; a program built without
+ * that autoinit calls RegisterWithImageReader2Factory(), which may be called any number of
+ * times. VTK's readers are asked first, so PNG, JPEG or HDR still go to vtkPNGReader,
+ * vtkJPEGReader or vtkHDRReader from the factory; instantiate this class to use OpenImageIO
+ * for them too.
  *
  * @sa vtkOIIOImageWriter vtkImageReader2Factory vtkPNGReader
  */
@@ -90,7 +94,8 @@ public:
 
   /**
    * Adds an instance to vtkImageReader2Factory's list unless one is there already.
-   * Called when the library loads; safe to call again.
+   * Called at start-up in programs whose vtk_module_autoinit names SurfaceDetail::IO, and
+   * by the Python package; safe to call again.
    */
   static void RegisterWithImageReader2Factory();
 
