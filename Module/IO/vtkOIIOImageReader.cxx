@@ -68,13 +68,6 @@ std::unique_ptr<OIIO::ImageInput> OpenInput(const std::string& path)
   config.attribute("oiio:UnassociatedAlpha", 1);
   return OIIO::ImageInput::open(path, &config);
 }
-
-/// Registers one reader with the factory when the library is loaded.
-struct vtkOIIOImageReaderRegistration
-{
-  vtkOIIOImageReaderRegistration() { vtkOIIOImageReader::RegisterWithImageReader2Factory(); }
-};
-const vtkOIIOImageReaderRegistration Registration;
 }
 
 //------------------------------------------------------------------------------
@@ -83,6 +76,9 @@ vtkOIIOImageReader::vtkOIIOImageReader()
   this->FileLowerLeft = 1;
   this->FileDimensionality = 2;
   this->DataScalarType = VTK_UNSIGNED_CHAR;
+  // vtkImageReader2 starts with the pattern "%s.%d"; without it, a pattern is one the caller
+  // set, and can be refused.
+  this->SetFilePattern(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -173,11 +169,33 @@ void vtkOIIOImageReader::Fail(unsigned long errorCode, const std::string& messag
 void vtkOIIOImageReader::ExecuteInformation()
 {
   this->ColorSpace.clear();
+  // vtkImageReader2 also offers file lists, file series and memory buffers. Reading the one
+  // FileName instead would read something other than what was asked for, so they are refused.
+  // Its setters make the last of SetFileName, SetFileNames, SetFilePrefix and SetFilePattern
+  // win, so a pattern matters only without a FileName; a buffer matters always.
+  const char* refused = nullptr;
+  if (this->MemoryBuffer || this->MemoryBufferLength > 0)
+  {
+    refused = "reads files, not memory buffers: use SetFileName(), not "
+              "SetMemoryBuffer()/SetMemoryBufferLength()";
+  }
+  else if (this->FileNames)
+  {
+    refused = "reads one file: use SetFileName(), not SetFileNames()";
+  }
+  else if (this->FilePrefix || (this->FilePattern && !this->FileName))
+  {
+    refused = "reads one file: use SetFileName(), not SetFilePrefix()/SetFilePattern() (file "
+              "series are not supported)";
+  }
+  if (refused)
+  {
+    this->Fail(vtkErrorCode::NoFileNameError, std::string("vtkOIIOImageReader ") + refused + ".");
+    return;
+  }
   if (!this->FileName || !*this->FileName)
   {
-    this->Fail(vtkErrorCode::NoFileNameError,
-      "No file name: call SetFileName() first (file series and memory buffers are not "
-      "supported by this reader).");
+    this->Fail(vtkErrorCode::NoFileNameError, "No file name: call SetFileName() first.");
     return;
   }
   const std::string path = this->FileName;
@@ -216,14 +234,15 @@ void vtkOIIOImageReader::ExecuteInformation()
       return;
     }
 
+    // The file's size is the extent, whatever was set. Spacing and origin stay the caller's
+    // (vtkImageReader2's 1 and 0 by default): they place the texture in the scene, which the
+    // file knows nothing about, and a resolution the file records is print metadata.
     this->DataExtent[0] = 0;
     this->DataExtent[1] = spec.width - 1;
     this->DataExtent[2] = 0;
     this->DataExtent[3] = spec.height - 1;
     this->DataExtent[4] = 0;
     this->DataExtent[5] = 0;
-    std::fill(this->DataSpacing, this->DataSpacing + 3, 1.0);
-    std::fill(this->DataOrigin, this->DataOrigin + 3, 0.0);
     this->SetDataScalarType(VTKTypeOf(spec.format));
     this->SetNumberOfScalarComponents(spec.nchannels);
     this->ColorSpace = spec.get_string_attribute("oiio:ColorSpace");
@@ -349,4 +368,15 @@ void vtkOIIOImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorSpace: " << (this->ColorSpace.empty() ? "(none)" : this->ColorSpace)
      << "\n";
   os << indent << "IsSRGB: " << (this->GetIsSRGB() ? "true" : "false") << "\n";
+}
+
+//------------------------------------------------------------------------------
+// SurfaceDetail::IO implements VTK::IOImage (vtk.module): a program built with
+// vtk_module_autoinit naming SurfaceDetail::IO, and the Python module, call this when they
+// start, from every translation unit that includes a VTK::IOImage header. Registration is
+// the program's choice, as for VTK's own object factories, rather than a side effect of
+// loading the library; and a static library's reader is linked in because this is called.
+SURFACEDETAILIO_EXPORT void SurfaceDetailIO_AutoInit_Construct()
+{
+  vtkOIIOImageReader::RegisterWithImageReader2Factory();
 }

@@ -14,22 +14,40 @@
  * - the channel count, 1 to 4 (grey, grey+alpha, RGB, RGBA);
  * - VTK's orientation: row 0 of the output is the bottom row of the picture, so that
  *   texture coordinate t = 0 samples the bottom (as OpenGL and vtkTexture do);
- * - spacing 1 and origin 0, whatever resolution the file records;
  * - the colour space the file declares (OpenImageIO's "oiio:ColorSpace"), through
  *   GetColorSpace() and GetIsSRGB(), so a caller can set vtkTexture::UseSRGBColorSpace.
+ *
+ * The extent is the file's size, (0, width - 1, 0, height - 1, 0, 0): a DataExtent set on
+ * the reader is replaced. DataSpacing and DataOrigin are the caller's (vtkImageReader2's 1
+ * and 0 unless set) and never come from the file, as with vtkPNGReader and vtkJPEGReader:
+ * they place the texture in the scene, and a resolution the file records (dots per inch)
+ * is print metadata.
  *
  * Only the first subimage at full resolution is read. Files OpenImageIO cannot open, and
  * layouts VTK cannot hold (more than 4 channels, volumes, deep data), are errors: the
  * reader reports the path and OpenImageIO's reason with vtkErrorMacro, sets its ErrorCode
  * and leaves the output empty.
  *
- * Loading the SurfaceDetail::IO library registers the reader with vtkImageReader2Factory,
- * so vtkImageReader2Factory::CreateImageReader2() finds it for the formats VTK's own
- * readers lack (EXR, HDR, ...). VTK's readers are asked first, so PNG or JPEG still go to
- * vtkPNGReader or vtkJPEGReader from the factory; instantiate this class to use OpenImageIO
- * for them too. RegisterWithImageReader2Factory() does the registration explicitly and may
- * be called any number of times; a program linking SurfaceDetailIO as a static library must
- * call it, since there the load-time registration runs only if the linker keeps this class.
+ * The reader reads the one file named by SetFileName(). The other inputs vtkImageReader2
+ * offers are refused when the pipeline asks for information, in the same way (an error
+ * naming the setter, ErrorCode vtkErrorCode::NoFileNameError, an empty output): file lists
+ * (SetFileNames()), file series (SetFilePrefix(), SetFilePattern(); GetFilePattern() is
+ * null until one is set) and memory buffers (SetMemoryBuffer(), SetMemoryBufferLength()).
+ * The setters keep vtkImageReader2's rule that the last of SetFileName(), SetFileNames(),
+ * SetFilePrefix() and SetFilePattern() wins; a memory buffer is refused even beside a file
+ * name, so clear it with SetMemoryBuffer(nullptr) and SetMemoryBufferLength(0).
+ *
+ * The reader is registered with vtkImageReader2Factory through VTK's autoinit:
+ * SurfaceDetail::IO implements VTK::IOImage, so a program built with
+ * `vtk_module_autoinit(TARGETS app MODULES SurfaceDetail::IO)`, and the Python package
+ * (importing surfacedetail), register it at start-up (in C++, from each source file that
+ * includes a VTK::IOImage header such as vtkImageReader2Factory.h), and
+ * vtkImageReader2Factory::CreateImageReader2() finds it for the formats VTK's own readers
+ * lack (EXR, ...). Merely linking the library registers nothing; a program built without
+ * that autoinit calls RegisterWithImageReader2Factory(), which may be called any number of
+ * times. VTK's readers are asked first, so PNG, JPEG or HDR still go to vtkPNGReader,
+ * vtkJPEGReader or vtkHDRReader from the factory; instantiate this class to use OpenImageIO
+ * for them too.
  *
  * @sa vtkOIIOImageWriter vtkImageReader2Factory vtkPNGReader
  */
@@ -76,7 +94,8 @@ public:
 
   /**
    * Adds an instance to vtkImageReader2Factory's list unless one is there already.
-   * Called when the library loads; safe to call again.
+   * Called at start-up in programs whose vtk_module_autoinit names SurfaceDetail::IO, and
+   * by the Python package; safe to call again.
    */
   static void RegisterWithImageReader2Factory();
 

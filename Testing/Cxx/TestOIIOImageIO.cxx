@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkOIIOImageReader / vtkOIIOImageWriter: exact round trips for the lossless formats,
 // orientation checked against independent programs (VTK's own PNG reader and writer,
-// libjpeg-turbo's cjpeg), the factory registration, and every bad input.
+// libjpeg-turbo's cjpeg), the factory registration, vtkImageReader2's contract (the caller's
+// spacing and origin kept, the inputs this reader cannot read refused), and every bad input.
 
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
@@ -18,6 +19,7 @@
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 
 #include <vtksys/SystemTools.hxx>
 
@@ -173,6 +175,21 @@ void ExpectReadFails(
   {
     EXPECT_EQ(reader->CanReadFile(path.c_str()), 0);
   }
+}
+
+/// What a reader given an input it cannot read must do when updated: an error naming the
+/// setter that gave it, NoFileNameError, and an empty output.
+void ExpectRefused(vtkOIIOImageReader* reader, const char* setter)
+{
+  vtkNew<ErrorObserver> observer;
+  const unsigned long tag = reader->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->Update();
+  reader->RemoveObserver(tag);
+  EXPECT_EQ(observer->Errors, 1) << setter;
+  EXPECT_NE(observer->Message.find(setter), std::string::npos) << observer->Message;
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoFileNameError) << setter;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << setter;
+  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetScalars(), nullptr) << setter;
 }
 
 void ExpectWriteFails(vtkImageData* image, const std::string& path, const char* reasonPart)
@@ -433,6 +450,93 @@ TEST(TestOIIOImageIO, PrintSelf)
   EXPECT_NE(text.str().find("ColorSpace"), std::string::npos);
   EXPECT_NE(text.str().find("FloatPrecision: Half"), std::string::npos);
   EXPECT_NE(text.str().find("CompressionLevel: 5"), std::string::npos);
+}
+
+// As with VTK's own readers, spacing and origin are the caller's: they place the texture in
+// the scene. The extent is the file's, whatever the caller set.
+TEST(TestOIIOImageIO, ReaderKeepsUserSpacingAndOrigin)
+{
+  const std::string path = TempPath("spacing.png");
+  ASSERT_TRUE(Write(RandomImage(VTK_UNSIGNED_CHAR, 1, 37, 23, 12u), path));
+  const double spacing[3] = { 0.5, 2.0, 3.0 };
+  const double origin[3] = { -1.0, 4.0, 7.0 };
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetDataSpacing(spacing);
+  reader->SetDataOrigin(origin);
+  reader->SetDataExtent(0, 3, 0, 3, 0, 0);
+  reader->Update();
+  ASSERT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  vtkImageData* image = reader->GetOutput();
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(image->GetSpacing()[i], spacing[i]) << "spacing " << i;
+    EXPECT_EQ(image->GetOrigin()[i], origin[i]) << "origin " << i;
+    EXPECT_EQ(reader->GetDataSpacing()[i], spacing[i]) << "DataSpacing " << i;
+    EXPECT_EQ(reader->GetDataOrigin()[i], origin[i]) << "DataOrigin " << i;
+  }
+  const int fileExtent[6] = { 0, 36, 0, 22, 0, 0 };
+  for (int i = 0; i < 6; ++i)
+  {
+    EXPECT_EQ(image->GetExtent()[i], fileExtent[i]) << "extent " << i;
+    EXPECT_EQ(reader->GetDataExtent()[i], fileExtent[i]) << "DataExtent " << i;
+  }
+}
+
+// A list of files would be a volume; this reader reads one picture. After the refusal, a
+// single file name makes the reader work again.
+TEST(TestOIIOImageIO, ReaderRefusesFileNames)
+{
+  const std::string good = TempPath("one_of_many.png");
+  ASSERT_TRUE(Write(RandomImage(VTK_UNSIGNED_CHAR, 1, 8, 8, 2u), good));
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(good.c_str());
+  reader->Update();
+  ASSERT_EQ(reader->GetOutput()->GetNumberOfPoints(), 64);
+
+  vtkNew<vtkStringArray> names;
+  names->InsertNextValue(good);
+  names->InsertNextValue(good);
+  reader->SetFileNames(names);
+  ExpectRefused(reader, "SetFileNames");
+
+  reader->SetFileName(good.c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 64);
+}
+
+TEST(TestOIIOImageIO, ReaderRefusesFileSeries)
+{
+  vtkNew<vtkOIIOImageReader> patterned;
+  patterned->SetFilePattern(TempPath("series_%d.png").c_str());
+  ExpectRefused(patterned, "SetFilePattern");
+
+  vtkNew<vtkOIIOImageReader> prefixed;
+  prefixed->SetFilePrefix(TempPath("series").c_str());
+  ExpectRefused(prefixed, "SetFilePrefix");
+}
+
+// A memory buffer beside a file name must not be silently passed over for the file.
+TEST(TestOIIOImageIO, ReaderRefusesMemoryBuffer)
+{
+  const std::string path = TempPath("buffer.png");
+  ASSERT_TRUE(Write(RandomImage(VTK_UNSIGNED_CHAR, 3, 8, 8, 4u), path));
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetMemoryBuffer(bytes.data());
+  reader->SetMemoryBufferLength(static_cast<vtkIdType>(bytes.size()));
+  ExpectRefused(reader, "SetMemoryBuffer");
+
+  vtkNew<vtkOIIOImageReader> lengthOnly;
+  lengthOnly->SetFileName(path.c_str());
+  lengthOnly->SetMemoryBufferLength(static_cast<vtkIdType>(bytes.size()));
+  ExpectRefused(lengthOnly, "SetMemoryBufferLength");
 }
 
 TEST(TestOIIOImageIO, ReaderRejectsMissingFile)

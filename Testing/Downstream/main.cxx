@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Uses SurfaceDetail::IO and SurfaceDetail::Filters from an installed package: writes an
 // OpenEXR image with vtkOIIOImageWriter, reads it back through vtkImageReader2Factory
-// (which must hand out vtkOIIOImageReader, registered by loading the shared library or, for
-// a static one, by RegisterWithImageReader2Factory()), samples it with the wrap convention
+// (which must hand out vtkOIIOImageReader, registered through vtk_module_autoinit in
+// CMakeLists.txt, without a call here), samples it with the wrap convention
 // of SurfaceDetail::Filters, and checks every value; then turns a flat height map into a
 // normal map with vtkHeightMapToNormalMap (a compiled Filters class), which must be +z.
 
@@ -52,9 +52,6 @@ int main(int argc, char* argv[])
     return 1;
   }
 
-#ifdef SURFACEDETAIL_STATIC
-  vtkOIIOImageReader::RegisterWithImageReader2Factory();
-#endif
   vtkSmartPointer<vtkImageReader2> reader;
   reader.TakeReference(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
   if (!vtkOIIOImageReader::SafeDownCast(reader))

@@ -36,7 +36,7 @@ from vtkmodules.vtkCommonCore import vtkFloatArray, vtkObjectBase  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkTexturedSphereSource  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+from vtkmodules.vtkIOImage import vtkImageReader2Factory, vtkPNGReader  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkTexture  # noqa: E402
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: E402
 
@@ -161,6 +161,14 @@ with tempfile.TemporaryDirectory() as scratch:
           and png.GetOutput().GetPointData().GetScalars().GetComponent(0, 0)
           == reader.GetOutput().GetPointData().GetScalars().GetComponent(0, 0),
           "VTK's PNG reader did not read back what vtkOIIOImageWriter wrote")
+    # Importing the package registers the reader with VTK's factory, which has no OpenEXR
+    # reader of its own.
+    exr = os.path.join(scratch, "card.exr")
+    writer.SetFileName(exr)
+    writer.Write()
+    found = vtkImageReader2Factory.CreateImageReader2(exr)
+    check(found is not None and found.IsA("vtkOIIOImageReader"),
+          "vtkImageReader2Factory did not hand out vtkOIIOImageReader for an .exr")
 
 # The mapper is one of VTK's OpenGL mappers and takes VTK's textures and actors.
 mapper = surfacedetail.vtkSurfaceDetailMapper()
