@@ -508,9 +508,8 @@ bool vtkDisplacementMapFilter::CheckHeightMap(vtkImageData* image)
   }
   if (!vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), norm))
   {
-    vtkErrorMacro("The height map's scalars are " << scalars->GetDataTypeAsString()
-                                                  << "; use unsigned char, unsigned short, "
-                                                     "float or double (vtkImageCast).");
+    vtkErrorMacro("The height map's scalars are "
+      << scalars->GetDataTypeAsString() << ": " << vtkSurfaceDetail::HeightMapTypeAdvice() << ".");
     return false;
   }
   if (dims[0] == 1 && dims[1] == 1)

@@ -17,8 +17,9 @@
  * row 0 is t = 0 and texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H), as
  * vtkSurfaceDetailConventions.h defines for every SurfaceDetail filter and shader.
  * `Component` selects the channel; unsigned char and unsigned short are normalised to
- * [0,1], float and double are used as they are (other scalar types are an error: convert
- * them with vtkImageCast or vtkImageShiftScale). `Wrap` has vtkTexture's values and
+ * [0,1], float and double are used as they are; other scalar types are an error
+ * (vtkSurfaceDetail::HeightMapScale, the rule every SurfaceDetail reader of height maps
+ * applies: convert them to float with vtkImageShiftScale). `Wrap` has vtkTexture's values and
  * OpenGL's meaning; `Interpolation` is
  * - Nearest: the texel that contains (s,t) (GL_NEAREST). Its derivative is zero, so the
  *   analytic normal modes see flat terraces; use Mesh normals for a faceted look.

@@ -16,6 +16,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailProgress.h"
+#include "vtkTypeTraits.h"
 
 #include <algorithm>
 #include <array>
@@ -34,22 +35,6 @@ namespace
 // Slopes beyond this are clamped so that their squares cannot overflow a float: the normal
 // is then horizontal to within 1e-18, and never NaN.
 constexpr double MaxSlope = 1e18;
-
-// How heights of type InT become [0,1]: h = v*Scale + Offset.
-template <typename InT>
-void HeightNormalisation(double& scale, double& offset)
-{
-  if (std::is_floating_point<InT>::value)
-  {
-    scale = 1.0;
-    offset = 0.0;
-    return;
-  }
-  const double lo = static_cast<double>(std::numeric_limits<InT>::lowest());
-  const double hi = static_cast<double>(std::numeric_limits<InT>::max());
-  scale = 1.0 / (hi - lo);
-  offset = -lo * scale;
-}
 
 template <typename Real>
 struct RowCache
@@ -84,7 +69,7 @@ struct NormalMapKernel
   int Wrap = vtkSurfaceDetail::Repeat;
   bool GreenUp = true;
   Real Sx = 1, Sy = 1; // k * W (or H) * height scale: texel difference -> slope
-  Real HScale = 1, HOffset = 0;
+  Real HScale = 1;
   vtkSurfaceDetail::Progress* Progress = nullptr;
   vtkSMPThreadLocal<RowCache<Real>> Cache;
 
@@ -308,7 +293,7 @@ struct NormalMapKernel
       vtkIdType outside = 0;
       for (int i = 0; i < n; ++i)
       {
-        const Real depth = Real(1) - (c0[i] * this->HScale + this->HOffset);
+        const Real depth = Real(1) - c0[i] * this->HScale;
         outside += (depth < Real(0) || depth > Real(1)) ? 1 : 0;
         // Written so that a NaN depth (heights whose scaling overflows, inf - inf) clamps
         // to 0 like the others instead of passing through std::max.
@@ -534,13 +519,10 @@ struct Job
 template <typename InT, typename OutT>
 KernelReport RunKernel(const InT* in, int stride, const Job& job)
 {
-  // Heights of 4 bytes or more differ by less than a float resolves at their magnitude
-  // (its spacing is 256 near 4e9): difference them in double.
-  using Real = typename std::conditional<std::is_same<InT, double>::value ||
-      (std::is_integral<InT>::value && sizeof(InT) >= 4),
-    double, float>::type;
-  double scale, offset;
-  HeightNormalisation<InT>(scale, offset);
+  // Double heights are differenced in double; the 8- and 16-bit and float ones fit a float.
+  using Real = typename std::conditional<std::is_same<InT, double>::value, double, float>::type;
+  double scale = 1.0; // integer heights: fractions of their range
+  vtkSurfaceDetail::HeightMapScale(vtkTypeTraits<InT>::VTKTypeID(), scale);
   NormalMapKernel<InT, Real, OutT> kernel;
   kernel.In = in;
   kernel.InStride = stride;
@@ -559,7 +541,6 @@ KernelReport RunKernel(const InT* in, int stride, const Job& job)
   kernel.Sx = static_cast<Real>(std::min(std::max(job.BumpScale * job.W * scale, -top), top));
   kernel.Sy = static_cast<Real>(std::min(std::max(job.BumpScale * job.H * scale, -top), top));
   kernel.HScale = static_cast<Real>(scale);
-  kernel.HOffset = static_cast<Real>(offset);
   kernel.Progress = job.Progress;
   vtkSMPTools::For(job.OutExt[2], job.OutExt[3] + 1, kernel);
   KernelReport report;
@@ -749,6 +730,13 @@ int vtkHeightMapToNormalMap::RequestData(
       << " tuples for " << w << "x" << h << " texels: give one height per point.");
     return 0;
   }
+  double typeScale;
+  if (!vtkSurfaceDetail::HeightMapScale(heights->GetDataType(), typeScale))
+  {
+    vtkErrorMacro("The height map's scalars are "
+      << heights->GetDataTypeAsString() << ": " << vtkSurfaceDetail::HeightMapTypeAdvice() << ".");
+    return 0;
+  }
   if (!std::isfinite(this->BumpScale))
   {
     vtkErrorMacro("BumpScale is " << this->BumpScale << ": set a finite value.");
@@ -807,16 +795,20 @@ int vtkHeightMapToNormalMap::RequestData(
   job.Progress = &progress;
 
   const int stride = contiguous->GetNumberOfComponents();
+  const void* in = contiguous->GetVoidPointer(0);
   switch (contiguous->GetDataType())
   {
-    vtkTemplateMacro(Run(this, static_cast<const VTK_TT*>(contiguous->GetVoidPointer(0)), stride,
-      job, this->OutputRelief));
+    case VTK_UNSIGNED_CHAR:
+      Run(this, static_cast<const unsigned char*>(in), stride, job, this->OutputRelief);
+      break;
+    case VTK_UNSIGNED_SHORT:
+      Run(this, static_cast<const unsigned short*>(in), stride, job, this->OutputRelief);
+      break;
+    case VTK_FLOAT:
+      Run(this, static_cast<const float*>(in), stride, job, this->OutputRelief);
+      break;
     default:
-      vtkErrorMacro("Heights of type " << contiguous->GetDataTypeAsString()
-                                       << " are not supported: convert them to a numeric type "
-                                          "(e.g. vtkImageCast).");
-      output->Initialize();
-      return 0;
+      Run(this, static_cast<const double*>(in), stride, job, this->OutputRelief);
   }
   if (progress.Aborted())
   {

@@ -18,10 +18,11 @@
  * - Sobel: central differences smoothed across by (1,2,1)/4; second order.
  * - Scharr: the same with (3,10,3)/16, closer to rotation invariant; second order.
  *
- * Input: the first component of the point scalars of a 2-D image of any scalar type and
- * any size (1xN, Nx1 and non-powers of two included). Integer types are normalised to
- * [0,1] by their type's range (those of 4 bytes or more are differenced in double, exact
- * up to 2^53); floating-point heights are used as they are. Non-finite
+ * Input: the first component of the point scalars of a 2-D image of any size (1xN, Nx1 and
+ * non-powers of two included). Unsigned char and unsigned short heights are fractions of
+ * their range, float and double heights are used as they are; other types are an error
+ * (vtkSurfaceDetail::HeightMapScale, the rule vtkDisplacementMapFilter and
+ * vtkSurfaceDetailMapper apply too: convert them to float with vtkImageShiftScale). Non-finite
  * heights are filled from the finite ones outward, continuing their slope (a hole in a plane
  * is filled with the plane), within the range of the finite heights; one warning with the
  * count.

@@ -309,9 +309,8 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
         heightImage->GetPointData()->GetScalars()->GetDataType(), heightScale))
     {
       err << "The height map's scalars are "
-          << heightImage->GetPointData()->GetScalars()->GetDataTypeAsString()
-          << "; use unsigned char, unsigned short (fractions of their range), float or "
-          << "double (vtkImageShiftScale or vtkImageCast converts).";
+          << heightImage->GetPointData()->GetScalars()->GetDataTypeAsString() << ": "
+          << vtkSurfaceDetail::HeightMapTypeAdvice() << ".";
     }
     if (!err.str().empty())
     {

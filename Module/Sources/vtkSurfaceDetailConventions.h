@@ -185,7 +185,8 @@ inline double Normalize(double v[3])
 }
 
 /**
- * Builds the tangent frame of Documentation/Conventions.md from unit normal @a n and the derivatives
+ * Builds the tangent frame of Documentation/Conventions.md from unit normal @a n and the
+ * derivatives
  * @a dPds, @a dPdt: @a t[0..2] = normalize(dPds - n*dot(n,dPds)), @a t[3] = handedness.
  * When dP/ds has no part across @a n, the tangent comes from dP/dt instead
  * (T = cross(B, N) with w = +1); when neither has, @a t is any unit vector orthogonal to
@@ -238,9 +239,12 @@ inline bool MakeTangentFrame(
 /**
  * Whether scalars of VTK type @a type can be a height map, and the factor @a scale that
  * takes their values to heights: unsigned char and unsigned short are fractions of their
- * range (as 8- and 16-bit images are), float and double are heights as they are. Signed
- * integers have no [0,1] reading and are refused (vtkImageShiftScale or vtkImageCast
- * first). Every SurfaceDetail reader of height maps applies this one rule.
+ * range (as 8- and 16-bit images are, and as OpenGL reads them), float and double are
+ * heights as they are. Other types are refused: signed integers have no [0,1] reading (a
+ * DEM in metres is heights as they are: make it float), and wider integers have no texture
+ * format. Every SurfaceDetail reader of height maps (vtkHeightMapToNormalMap,
+ * vtkDisplacementMapFilter, vtkSurfaceDetailMapper) applies this one rule, and says
+ * HeightMapTypeAdvice() when it refuses.
  */
 inline bool HeightMapScale(int type, double& scale)
 {
@@ -260,6 +264,17 @@ inline bool HeightMapScale(int type, double& scale)
       scale = 0.0;
       return false;
   }
+}
+
+/**
+ * What a refusal by HeightMapScale tells the user to do. vtkImageShiftScale to float keeps
+ * negative values; a cast to an unsigned type would wrap them.
+ */
+inline const char* HeightMapTypeAdvice()
+{
+  return "height maps are unsigned char or unsigned short (fractions of their range), or float "
+         "or double (heights as they are): convert other types with vtkImageShiftScale "
+         "(SetOutputScalarTypeToFloat, with the shift and scale that give the heights you mean)";
 }
 
 } // namespace vtkSurfaceDetail

@@ -901,7 +901,7 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
       typed(VTK_UNSIGNED_SHORT, 3, true), nullptr },
     { "float normal map without direct scalars", MakeRectangle(false),
       vtkSurfaceDetailMapper::NormalMapping, typed(VTK_FLOAT, 3, false), nullptr },
-    // Signed heights have no [0,1] reading (vtkDisplacementMapFilter rejects them too).
+    // Signed heights have no [0,1] reading (every height-map reader refuses them).
     { "short height map", MakeRectangle(false), vtkSurfaceDetailMapper::BumpMapping, nullptr,
       typed(VTK_SHORT, 1, true) },
     { "int height map", MakeRectangle(false, false), vtkSurfaceDetailMapper::ParallaxMapping,
