@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDisplacementDerivatives.h"
 #include "vtkDisplacementNormals.h"
 #include "vtkDisplacementPolygons.h"
@@ -295,7 +296,7 @@ public:
   // Displaces the input by the height map @a image, with the polygons as @a polys. Nothing is
   // read through a polygon that names a point the input does not have (BadPointIds).
   template <typename Id>
-  Outcome Run(const Polygons<Id>& polys, vtkImageData* image)
+  Outcome Run(const Polygons<Id>& polys, vtkImageData* image, vtkDataArray* heights)
   {
     vtkDisplacementMapFilter* f = this->Filter;
     const int mode = f->GetNormalMode();
@@ -323,7 +324,7 @@ public:
       ? runs.Grain(n)
       : std::max<vtkIdType>(Block, n / 1024);
     const std::unique_ptr<HeightSampler> map = MakeHeightSampler(
-      image, f->GetComponent(), f->GetWrap(), f->GetInterpolation(), f->GetMidlevel());
+      image, heights, f->GetHeightComponent(), f->GetWrap(), f->GetInterpolation(), f->GetMidlevel());
     vtkSMPThreadLocal<std::vector<double>> scratch;
     const bool mesh = mode == vtkDisplacementMapFilter::Mesh;
     vtkSurfaceDetail::Progress progress(f, 0.2, 0.95, mesh ? 2 * n : n);
@@ -348,8 +349,8 @@ public:
     if (map->SawNonFinite())
     {
       vtkWarningWithObjectMacro(
-        f, << CountNonFinite(image, f->GetComponent()) << " height value(s) in component "
-           << f->GetComponent()
+        f, << CountNonFinite(heights, f->GetHeightComponent()) << " height value(s) in component "
+           << f->GetHeightComponent()
            << " of the height map are NaN or infinite; they are treated as Midlevel ("
            << f->GetMidlevel() << ").");
     }
@@ -480,17 +481,17 @@ int vtkDisplacementMapFilter::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
-bool vtkDisplacementMapFilter::CheckHeightMap(vtkImageData* image)
+bool vtkDisplacementMapFilter::CheckHeightMap(vtkImageData* image, vtkDataArray* scalars)
 {
   int dims[3];
   image->GetDimensions(dims);
-  vtkDataArray* scalars = image->GetPointData()->GetScalars();
   double norm;
   if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() == 0 || !scalars ||
     scalars->GetNumberOfTuples() != image->GetNumberOfPoints())
   {
-    vtkErrorMacro("The height map on input port 1 is empty or has no point scalars; give "
-                  "it at least 1x1 texels with scalars.");
+    vtkErrorMacro("The height map on input port 1 is empty or lacks the height array (its point "
+                  "scalars, or the array SetInputArrayToProcess(0, ...) names); give it at least "
+                  "1x1 texels with one height each.");
     return false;
   }
   if (dims[2] != 1)
@@ -500,9 +501,9 @@ bool vtkDisplacementMapFilter::CheckHeightMap(vtkImageData* image)
                                             "(extract a slice with vtkExtractVOI).");
     return false;
   }
-  if (this->Component >= scalars->GetNumberOfComponents())
+  if (this->HeightComponent >= scalars->GetNumberOfComponents())
   {
-    vtkErrorMacro("Component " << this->Component << " was asked for but the height map has "
+    vtkErrorMacro("HeightComponent " << this->HeightComponent << " was asked for but the height map has "
                                << scalars->GetNumberOfComponents() << " component(s).");
     return false;
   }
@@ -610,7 +611,8 @@ int vtkDisplacementMapFilter::RequestData(
     output->ShallowCopy(input);
     return 1;
   }
-  if (!this->CheckSurface(input) || !this->CheckHeightMap(image))
+  vtkDataArray* heights = this->GetInputArrayToProcess(0, inputVector);
+  if (!this->CheckSurface(input) || !this->CheckHeightMap(image, heights))
   {
     return 0;
   }
@@ -654,7 +656,8 @@ int vtkDisplacementMapFilter::RequestData(
   {
     Execution<decltype(precision)> x(
       this, input, this->InputTangents(input), derivatives, normalDerivatives);
-    WithPolygons(input->GetPolys(), [&](const auto& polys) { outcome = x.Run(polys, image); });
+    WithPolygons(
+      input->GetPolys(), [&](const auto& polys) { outcome = x.Run(polys, image, heights); });
     if (outcome == Outcome::Done)
     {
       x.Output(output);
@@ -697,6 +700,9 @@ void vtkDisplacementMapFilter::SetSourceData(vtkImageData* image)
 vtkDisplacementMapFilter::vtkDisplacementMapFilter()
 {
   this->SetNumberOfInputPorts(2);
+  // The heights: the height map's point scalars unless told otherwise.
+  this->SetInputArrayToProcess(
+    0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
 
 //------------------------------------------------------------------------------
@@ -741,7 +747,7 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ScaleFactor: " << this->ScaleFactor << "\n";
   os << indent << "Midlevel: " << this->Midlevel << "\n";
-  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
   os << indent << "Interpolation: " << this->GetInterpolationAsString() << "\n";
   os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";

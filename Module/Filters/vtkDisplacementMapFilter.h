@@ -16,8 +16,10 @@
  * Sampling the height map. The image is a texture: its origin and spacing are ignored,
  * row 0 is t = 0 and texel (i,j) has its centre at ((i+0.5)/W, (j+0.5)/H), as
  * vtkSurfaceDetailConventions.h defines for every SurfaceDetail filter and shader.
- * `Component` selects the channel; unsigned char and unsigned short are normalised to
- * [0,1], float and double are used as they are; other scalar types are an error
+ * The heights are the height map's point scalars, or the point array chosen with
+ * SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name), as in
+ * vtkHeightMapToNormalMap; `HeightComponent` selects its channel. Unsigned char and unsigned short are
+ * normalised to [0,1], float and double are used as they are; other scalar types are an error
  * (vtkSurfaceDetail::HeightMapScale, the rule every SurfaceDetail reader of height maps
  * applies: convert them to float with vtkImageShiftScale). `Wrap` has vtkTexture's values and
  * OpenGL's meaning; `Interpolation` is
@@ -181,10 +183,11 @@ public:
 
   ///@{
   /**
-   * The component of the height map's scalars that holds the height. Default 0.
+   * The component of the height array (the height map's point scalars, or the array chosen
+   * with SetInputArrayToProcess) that holds the height. Default 0.
    */
-  vtkSetClampMacro(Component, int, 0, VTK_INT_MAX);
-  vtkGetMacro(Component, int);
+  vtkSetClampMacro(HeightComponent, int, 0, VTK_INT_MAX);
+  vtkGetMacro(HeightComponent, int);
   ///@}
 
   ///@{
@@ -277,7 +280,7 @@ protected:
 
   // Each reports what is wrong with an error and returns false.
   bool CheckSurface(vtkPolyData* input);
-  bool CheckHeightMap(vtkImageData* image);
+  bool CheckHeightMap(vtkImageData* image, vtkDataArray* heights);
 
   // The input tangents that the output re-orthogonalises, or null (Input mode, or no tangents).
   vtkDataArray* InputTangents(vtkPolyData* input);
@@ -287,7 +290,7 @@ protected:
 
   double ScaleFactor = 1.0;
   double Midlevel = 0.0;
-  int Component = 0;
+  int HeightComponent = 0;
   int Wrap = Repeat;
   int Interpolation = Linear;
   int NormalMode = Exact;

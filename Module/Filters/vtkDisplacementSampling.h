@@ -263,13 +263,13 @@ void WithTexelType(vtkDataArray* scalars, F&& body)
   }
 }
 
-/// The sampler of component @a comp of @a image's scalars (checked to be a height map).
+/// The sampler of component @a comp of the point array @a scalars of @a image (checked to be
+/// a height map).
 inline std::unique_ptr<HeightSampler> MakeHeightSampler(
-  vtkImageData* image, int comp, int wrap, int interpolation, double mid)
+  vtkImageData* image, vtkDataArray* scalars, int comp, int wrap, int interpolation, double mid)
 {
   int dims[3];
   image->GetDimensions(dims);
-  vtkDataArray* scalars = image->GetPointData()->GetScalars();
   double norm = 1.0;
   vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), norm);
   std::unique_ptr<HeightSampler> sampler;
@@ -283,10 +283,9 @@ inline std::unique_ptr<HeightSampler> MakeHeightSampler(
   return sampler;
 }
 
-/// The number of NaN or infinite values in component @a comp of @a image's scalars.
-inline vtkIdType CountNonFinite(vtkImageData* image, int comp)
+/// The number of NaN or infinite values in component @a comp of @a scalars.
+inline vtkIdType CountNonFinite(vtkDataArray* scalars, int comp)
 {
-  vtkDataArray* scalars = image->GetPointData()->GetScalars();
   const vtkIdType n = scalars->GetNumberOfTuples();
   const int nc = scalars->GetNumberOfComponents();
   std::atomic<vtkIdType> total(0);

@@ -730,6 +730,13 @@ int vtkHeightMapToNormalMap::RequestData(
       << " tuples for " << w << "x" << h << " texels: give one height per point.");
     return 0;
   }
+  if (this->HeightComponent >= heights->GetNumberOfComponents())
+  {
+    vtkErrorMacro("HeightComponent " << this->HeightComponent << " was asked for but the height "
+                                     << "array has " << heights->GetNumberOfComponents()
+                                     << " component(s).");
+    return 0;
+  }
   double typeScale;
   if (!vtkSurfaceDetail::HeightMapScale(heights->GetDataType(), typeScale))
   {
@@ -795,20 +802,22 @@ int vtkHeightMapToNormalMap::RequestData(
   job.Progress = &progress;
 
   const int stride = contiguous->GetNumberOfComponents();
+  // The kernels read every stride-th value from the height's own component on.
+  const int comp = this->HeightComponent;
   const void* in = contiguous->GetVoidPointer(0);
   switch (contiguous->GetDataType())
   {
     case VTK_UNSIGNED_CHAR:
-      Run(this, static_cast<const unsigned char*>(in), stride, job, this->OutputRelief);
+      Run(this, static_cast<const unsigned char*>(in) + comp, stride, job, this->OutputRelief);
       break;
     case VTK_UNSIGNED_SHORT:
-      Run(this, static_cast<const unsigned short*>(in), stride, job, this->OutputRelief);
+      Run(this, static_cast<const unsigned short*>(in) + comp, stride, job, this->OutputRelief);
       break;
     case VTK_FLOAT:
-      Run(this, static_cast<const float*>(in), stride, job, this->OutputRelief);
+      Run(this, static_cast<const float*>(in) + comp, stride, job, this->OutputRelief);
       break;
     default:
-      Run(this, static_cast<const double*>(in), stride, job, this->OutputRelief);
+      Run(this, static_cast<const double*>(in) + comp, stride, job, this->OutputRelief);
   }
   if (progress.Aborted())
   {
@@ -826,6 +835,7 @@ void vtkHeightMapToNormalMap::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
   os << indent << "GreenUp: " << (this->GreenUp ? "On" : "Off") << "\n";
+  os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "OutputScalarType: " << vtkImageScalarTypeNameMacro(this->OutputScalarType)
      << "\n";
   os << indent << "OutputRelief: " << (this->OutputRelief ? "On" : "Off") << "\n";

@@ -18,7 +18,8 @@
  * - Sobel: central differences smoothed across by (1,2,1)/4; second order.
  * - Scharr: the same with (3,10,3)/16, closer to rotation invariant; second order.
  *
- * Input: the first component of the point scalars of a 2-D image of any size (1xN, Nx1 and
+ * Input: component HeightComponent of the point scalars (or of the point array chosen with
+ * SetInputArrayToProcess) of a 2-D image of any size (1xN, Nx1 and
  * non-powers of two included). Unsigned char and unsigned short heights are fractions of
  * their range, float and double heights are used as they are; other types are an error
  * (vtkSurfaceDetail::HeightMapScale, the rule vtkDisplacementMapFilter and
@@ -95,6 +96,15 @@ public:
 
   ///@{
   /**
+   * The component of the height array that holds the height, as vtkDisplacementMapFilter's
+   * and vtkSurfaceDetailMapper's HeightComponent. Default 0.
+   */
+  vtkSetClampMacro(HeightComponent, int, 0, VTK_INT_MAX);
+  vtkGetMacro(HeightComponent, int);
+  ///@}
+
+  ///@{
+  /**
    * Which texels the stencil reads beyond the borders, as vtkTexture::Wrap would sample
    * them. Default Repeat (tiling textures). For the one-texel stencils used here
    * MirroredRepeat reads the same texels as ClampToEdge.
@@ -150,6 +160,7 @@ protected:
   double BumpScale = 1.0;
   int Wrap = Repeat;
   bool GreenUp = true;
+  int HeightComponent = 0;
   int OutputScalarType = VTK_UNSIGNED_CHAR;
   bool OutputRelief = false;
 

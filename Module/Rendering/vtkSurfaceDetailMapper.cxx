@@ -312,6 +312,12 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
           << heightImage->GetPointData()->GetScalars()->GetDataTypeAsString() << ": "
           << vtkSurfaceDetail::HeightMapTypeAdvice() << ".";
     }
+    else if (usesHeightMap &&
+      this->HeightComponent >= heightImage->GetPointData()->GetScalars()->GetNumberOfComponents())
+    {
+      err << "HeightComponent is " << this->HeightComponent << " but the height map has "
+          << heightImage->GetPointData()->GetScalars()->GetNumberOfComponents() << " component(s).";
+    }
     if (!err.str().empty())
     {
       problem = err.str() + " Rendering without surface detail.";
@@ -435,7 +441,8 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   const int components = this->ActiveTechnique == BumpMapping ? 2 : 3;
   if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp &&
     this->DifferenceScheme == this->HeightUploadDifferenceScheme &&
-    components == this->HeightUploadComponents)
+    components == this->HeightUploadComponents &&
+    this->HeightComponent == this->HeightUploadComponent)
   {
     return;
   }
@@ -445,12 +452,13 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   // ResolveTechnique has refused the types this does not accept.
   double scale = 1.0;
   vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
+  const int comp = this->HeightComponent; // ResolveTechnique has checked it exists
   // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
   std::vector<double> values(static_cast<size_t>(w) * h);
   vtkIdType nonFinite = 0;
   for (size_t k = 0; k < values.size(); ++k)
   {
-    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), 0);
+    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), comp);
     nonFinite += std::isfinite(v) ? 0 : 1;
     values[k] = std::isfinite(v) ? v : 0.0;
   }
@@ -464,11 +472,11 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   // Differences of linearly interpolated heights taken one texel apart equal the linear
   // interpolation of these texel differences (both use the same weights), so one lookup gives
   // exactly what the classic three-lookup Cg code computes, at a third of the texture traffic. With
-  // ClampToBorder the height outside is the border colour's first component and its
+  // ClampToBorder the height outside is the border colour's HeightComponent and its
   // differences are 0 (the sampler's border below): the identity holds there as well.
   const int wrap = this->HeightMap->GetWrap();
   const bool border = wrap == vtkTexture::ClampToBorder;
-  const double borderHeight = this->HeightMap->GetBorderColor()[0];
+  const double borderHeight = this->HeightMap->GetBorderColor()[comp];
   auto height = [&](int i, int j)
   {
     if (border && (i < 0 || i >= w || j < 0 || j >= h))
@@ -515,6 +523,7 @@ void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
   this->HeightUploadStamp = stamp;
   this->HeightUploadDifferenceScheme = this->DifferenceScheme;
   this->HeightUploadComponents = components;
+  this->HeightUploadComponent = comp;
 }
 
 //------------------------------------------------------------------------------
@@ -906,6 +915,7 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
     this->SetGreenUp(other->GetGreenUp());
     this->SetBumpScale(other->GetBumpScale());
     this->SetDifferenceScheme(other->GetDifferenceScheme());
+    this->SetHeightComponent(other->GetHeightComponent());
     this->SetTangentFree(other->GetTangentFree());
     this->SetDepthScale(other->GetDepthScale());
     this->SetReliefMap(other->GetReliefMap());
@@ -931,6 +941,7 @@ void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent
      << "DifferenceScheme: " << (this->DifferenceScheme == Central ? "Central" : "Forward") << "\n";
+  os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "TangentFree: " << (this->TangentFree ? "On" : "Off") << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "ReliefMap: " << this->ReliefMap << "\n";

@@ -133,15 +133,25 @@ public:
 
   ///@{
   /**
-   * Height map (first component; unsigned char and unsigned short are read as [0,1],
-   * float and double as they are, signed integers are refused: the rule of
-   * vtkSurfaceDetail::HeightMapScale, shared with vtkDisplacementMapFilter). It is uploaded
-   * as a 32-bit float texture with the vtkTexture's wrap mode and interpolation
-   * (Interpolate on: linear); with ClampToBorder the height outside is the first component
-   * of the texture's border colour. Default none.
+   * Height map (component HeightComponent of its image's scalars; unsigned char and unsigned
+   * short are read as [0,1], float and double as they are, other types are refused: the
+   * rule of vtkSurfaceDetail::HeightMapScale, shared with vtkDisplacementMapFilter and
+   * vtkHeightMapToNormalMap). It is uploaded as a 32-bit float texture with the vtkTexture's
+   * wrap mode and interpolation (Interpolate on: linear); with ClampToBorder the height
+   * outside is that component of the texture's border colour. Default none.
    */
   virtual void SetHeightMap(vtkTexture*);
   vtkGetObjectMacro(HeightMap, vtkTexture);
+  ///@}
+
+  ///@{
+  /**
+   * The component of the height map's scalars that holds the height, as
+   * vtkDisplacementMapFilter's and vtkHeightMapToNormalMap's HeightComponent (e.g. 3 for the
+   * alpha of an RGBA image). Default 0.
+   */
+  vtkSetClampMacro(HeightComponent, int, 0, 3);
+  vtkGetMacro(HeightComponent, int);
   ///@}
 
   ///@{
@@ -309,6 +319,7 @@ protected:
   bool GreenUp = true;
   double BumpScale = 1.0;
   int DifferenceScheme = Central;
+  int HeightComponent = 0;
   bool TangentFree = false;
   double DepthScale = 0.05;
   vtkTexture* ReliefMap = nullptr;
@@ -348,6 +359,7 @@ private:
   vtkMTimeType HeightUploadStamp = 0;
   int HeightUploadDifferenceScheme = Central;
   int HeightUploadComponents = 0;
+  int HeightUploadComponent = 0;
   // When a uniform-only setting last changed; GetMTime leaves it out while the superclass
   // decides whether to rebuild (IgnoreUniformTime).
   vtkTimeStamp UniformTime;

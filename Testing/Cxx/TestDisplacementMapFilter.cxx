@@ -695,7 +695,7 @@ void ExpectFreshAfter(vtkDisplacementMapFilter* f, const char* what, Change&& ch
   fresh->SetNormalMode(f->GetNormalMode());
   fresh->SetScaleFactor(f->GetScaleFactor());
   fresh->SetMidlevel(f->GetMidlevel());
-  fresh->SetComponent(f->GetComponent());
+  fresh->SetHeightComponent(f->GetHeightComponent());
   fresh->SetWrap(f->GetWrap());
   fresh->SetInterpolation(f->GetInterpolation());
   fresh->SetMergeSeams(f->GetMergeSeams());
@@ -976,7 +976,7 @@ TEST(DisplacementMapFilter, ReExecutionAfterSettingsChange)
     ExpectFreshAfter(f, "NormalMode back", [&]() { f->SetNormalMode(mode); });
     ExpectFreshAfter(f, "Interpolation", [&]() { f->SetInterpolationToCubic(); });
     ExpectFreshAfter(f, "Wrap", [&]() { f->SetWrapToClampToEdge(); });
-    ExpectFreshAfter(f, "Component", [&]() { f->SetComponent(1); });
+    ExpectFreshAfter(f, "HeightComponent", [&]() { f->SetHeightComponent(1); });
     ExpectFreshAfter(f, "SeamTolerance", [&]() { f->SetSeamTolerance(1e-3); });
     ExpectFreshAfter(f, "MergeSeams off", [&]() { f->MergeSeamsOff(); });
     ExpectFreshAfter(f, "MergeSeams on", [&]() { f->MergeSeamsOn(); });
@@ -1236,7 +1236,7 @@ TEST(DisplacementMapFilter, ComponentSelectsTheChannel)
     vtkNew<vtkDisplacementMapFilter> f;
     f->SetInputData(0, probes);
     f->SetInputData(1, image);
-    f->SetComponent(component);
+    f->SetHeightComponent(component);
     f->Update();
     double p[3];
     f->GetOutput()->GetPoint(0, p);
@@ -1386,12 +1386,12 @@ TEST(DisplacementMapFilter, BadInputIsAnError)
     { "empty image", "empty", Inputs(good, empty) },
     { "volume", "2-D image", Inputs(good, volume) },
     { "int scalars", "unsigned char", Inputs(good, ints) },
-    { "component", "Component 3",
+    { "component", "HeightComponent 3",
       [&](vtkDisplacementMapFilter* f)
       {
         f->SetInputData(0, good);
         f->SetInputData(1, image);
-        f->SetComponent(3);
+        f->SetHeightComponent(3);
       } },
     { "no height map", "port 1", [&](vtkDisplacementMapFilter* f) { f->SetInputData(0, good); } },
     { "polydata on port 1", "vtkImageData", Inputs(good, good) },
@@ -1568,6 +1568,51 @@ TEST(DisplacementMapFilter, PointIdsOutOfRangeBesidePass1)
   vtkSMPTools::Initialize(static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+// The heights can be any point array of the height map, chosen by name with
+// SetInputArrayToProcess as in VTK's filters: with the heights in "Height" and a colour
+// array as the active scalars, the output is the one the heights give as scalars.
+TEST(DisplacementMapFilter, HeightArrayChosenWithSetInputArrayToProcess)
+{
+  const Surface s = Torus();
+  auto mesh = MakeMesh(s, 16, 8, true);
+  auto asScalars = MakeHeightImage(s.Height, 32, 16);
+  vtkDataArray* scalars = asScalars->GetPointData()->GetScalars();
+  auto heights = vtk::TakeSmartPointer(scalars->NewInstance());
+  heights->DeepCopy(scalars);
+  heights->SetName("Height");
+  vtkNew<vtkUnsignedCharArray> colours; // the active scalars, which must not be read
+  colours->SetName("Colour");
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(heights->GetNumberOfTuples());
+  colours->Fill(200);
+  auto named = vtkSmartPointer<vtkImageData>::New();
+  named->SetDimensions(asScalars->GetDimensions());
+  named->GetPointData()->SetScalars(colours);
+  named->GetPointData()->AddArray(heights);
+
+  auto want = Displace(mesh, asScalars, vtkDisplacementMapFilter::Exact);
+  vtkNew<vtkDisplacementMapFilter> f;
+  f->SetInputData(0, mesh);
+  f->SetSourceData(named);
+  f->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Height");
+  f->SetScaleFactor(0.1);
+  f->SetMidlevel(0.5);
+  f->SetWrapToRepeat();
+  f->Update();
+  EXPECT_TRUE(SameBits(f->GetOutput()->GetPoints()->GetData(), want->GetPoints()->GetData()));
+  EXPECT_TRUE(
+    SameBits(f->GetOutput()->GetPointData()->GetNormals(), want->GetPointData()->GetNormals()));
+
+  // A name the map does not have is an error with an empty output.
+  auto messages = Watch(f);
+  f->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Elevation");
+  f->Update();
+  EXPECT_GE(messages->Errors, 1);
+  EXPECT_NE(messages->Message.find("SetInputArrayToProcess"), std::string::npos)
+    << messages->Message;
+  EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 // Other arrays pass through; None keeps normals; PrintSelf names every setting.
 TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
 {
@@ -1597,7 +1642,7 @@ TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
   std::ostringstream os;
   f->Print(os);
   for (const char* key :
-    { "ScaleFactor: 1", "Midlevel: 0.25", "Component: 0", "Wrap: MirroredRepeat",
+    { "ScaleFactor: 1", "Midlevel: 0.25", "HeightComponent: 0", "Wrap: MirroredRepeat",
       "Interpolation: Cubic", "NormalMode: Approximate", "MergeSeams: On", "SeamTolerance: 1e-06" })
   {
     EXPECT_NE(os.str().find(key), std::string::npos) << key;

@@ -118,6 +118,7 @@ struct Settings
   bool GreenUp = true;
   int Type = VTK_FLOAT;
   bool Relief = false;
+  int Component = 0;
 };
 
 vtkSmartPointer<vtkImageData> MakeMap(vtkImageData* input, const Settings& s)
@@ -130,6 +131,7 @@ vtkSmartPointer<vtkImageData> MakeMap(vtkImageData* input, const Settings& s)
   filter->SetGreenUp(s.GreenUp);
   filter->SetOutputScalarType(s.Type);
   filter->SetOutputRelief(s.Relief);
+  filter->SetHeightComponent(s.Component);
   filter->Update();
   vtkSmartPointer<vtkImageData> out = filter->GetOutput();
   return out;
@@ -708,6 +710,48 @@ TEST(TestHeightMapToNormalMap, UnsignedIntegerHeightsAreFractionsOfTheirRange)
       EXPECT_NEAR(x->GetValue(v), y->GetValue(v), 1e-5) << c.Integer->GetScalarTypeAsString();
     }
   }
+}
+
+// The height can live in any channel: an RGBA image with the heights in alpha gives, with
+// HeightComponent 3, the map that the alpha channel alone gives; a channel the image does
+// not have is an error.
+TEST(TestHeightMapToNormalMap, HeightComponentChoosesTheChannel)
+{
+  auto f = [](double s, double t) { return std::floor(200.0 * s * s + 50.0 * t); };
+  auto alone = Sample<vtkUnsignedCharArray>(20, 15, f);
+  auto rgba = vtkSmartPointer<vtkImageData>::New();
+  rgba->SetDimensions(20, 15, 1);
+  rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  vtkDataArray* in = alone->GetPointData()->GetScalars();
+  vtkDataArray* all = rgba->GetPointData()->GetScalars();
+  for (vtkIdType k = 0; k < all->GetNumberOfTuples(); ++k)
+  {
+    const double noise = (k * 37) % 251;
+    all->SetTuple4(k, noise, 255 - noise, noise / 2, in->GetComponent(k, 0));
+  }
+  Settings s;
+  s.Type = VTK_FLOAT;
+  auto want = MakeMap(alone, s);
+  s.Component = 3;
+  auto got = MakeMap(rgba, s);
+  vtkDataArray* a = want->GetPointData()->GetScalars();
+  vtkDataArray* b = got->GetPointData()->GetScalars();
+  ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues());
+  EXPECT_EQ(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+              a->GetNumberOfValues() * a->GetDataTypeSize()),
+    0);
+
+  vtkNew<vtkHeightMapToNormalMap> filter;
+  vtkNew<MessageCounter> messages;
+  messages->Watch(filter);
+  messages->Watch(filter->GetExecutive());
+  filter->SetInputData(alone);
+  filter->SetHeightComponent(1);
+  filter->Update();
+  EXPECT_GE(messages->Errors, 1);
+  EXPECT_NE(messages->AllErrors.find("HeightComponent 1"), std::string::npos)
+    << messages->AllErrors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 // One rule for every reader of height maps (vtkSurfaceDetail::HeightMapScale): signed and

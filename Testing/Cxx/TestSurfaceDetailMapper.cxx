@@ -613,6 +613,30 @@ TEST(vtkSurfaceDetailMapper, BumpForwardDifferences)
   EXPECT_LT(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 30.0);
 }
 
+// The height can live in any channel: an RGBA image with the heights in alpha and noise in
+// RGB bump-maps, with HeightComponent 3, as the heights alone do; with the default channel 0
+// it reads the noise, another picture.
+TEST(vtkSurfaceDetailMapper, HeightComponentChoosesTheChannel)
+{
+  auto mapper = MakeMapper(MakeRectangle(false));
+  mapper->SetTechniqueToBumpMapping();
+  mapper->SetHeightMap(MakeTexture(256, 4,
+    [](double s, double t, double* h)
+    {
+      h[0] = 0.5 + 0.5 * std::sin(40.0 * s * t);
+      h[1] = h[2] = 0.0;
+      h[3] = Height(s, t);
+    }));
+  mapper->SetBumpScale(Strength);
+  EXPECT_EQ(mapper->GetHeightComponent(), 0);
+  Scene scene(mapper);
+  EXPECT_LT(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 30.0);
+  mapper->SetHeightComponent(3);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(false), scene.Mat), 40.0);
+  mapper->SetHeightComponent(7); // clamped to the last channel an image can have
+  EXPECT_EQ(mapper->GetHeightComponent(), 3);
+}
+
 TEST(vtkSurfaceDetailMapper, BumpCentralDifferencesMirroredSpecular)
 {
   auto mapper = MakeMapper(MakeRectangle(true));
