@@ -124,7 +124,10 @@ public:
   ///@}
 
   ///@{
-  /** Produce the "TCoords" point array. Default on. */
+  /**
+   * Produce the "TCoords" point array (the texture-coordinate attribute). Default on, where
+   * vtkParametricFunctionSource's is off: this source exists to make surfaces to texture.
+   */
   vtkSetMacro(GenerateTextureCoordinates, bool);
   vtkGetMacro(GenerateTextureCoordinates, bool);
   vtkBooleanMacro(GenerateTextureCoordinates, bool);
