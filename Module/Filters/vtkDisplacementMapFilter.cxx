@@ -323,8 +323,9 @@ public:
     const vtkIdType grain = fits.Any() || mode == vtkDisplacementMapFilter::Mesh
       ? runs.Grain(n)
       : std::max<vtkIdType>(Block, n / 1024);
-    const std::unique_ptr<HeightSampler> map = MakeHeightSampler(
-      image, heights, f->GetHeightComponent(), f->GetWrap(), f->GetInterpolation(), f->GetMidlevel());
+    const std::unique_ptr<HeightSampler> map =
+      MakeHeightSampler(image, heights, f->GetHeightComponent(), f->GetWrap(),
+        f->GetInterpolation(), f->GetMidlevel(), f->GetBorderHeight());
     vtkSMPThreadLocal<std::vector<double>> scratch;
     const bool mesh = mode == vtkDisplacementMapFilter::Mesh;
     vtkSurfaceDetail::Progress progress(f, 0.2, 0.95, mesh ? 2 * n : n);
@@ -503,14 +504,20 @@ bool vtkDisplacementMapFilter::CheckHeightMap(vtkImageData* image, vtkDataArray*
   }
   if (this->HeightComponent >= scalars->GetNumberOfComponents())
   {
-    vtkErrorMacro("HeightComponent " << this->HeightComponent << " was asked for but the height map has "
-                               << scalars->GetNumberOfComponents() << " component(s).");
+    vtkErrorMacro("HeightComponent " << this->HeightComponent
+                                     << " was asked for but the height map has "
+                                     << scalars->GetNumberOfComponents() << " component(s).");
     return false;
   }
   if (!vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), norm))
   {
     vtkErrorMacro("The height map's scalars are "
       << scalars->GetDataTypeAsString() << ": " << vtkSurfaceDetail::HeightMapTypeAdvice() << ".");
+    return false;
+  }
+  if (this->Wrap == ClampToBorder && !std::isfinite(this->BorderHeight))
+  {
+    vtkErrorMacro("BorderHeight is " << this->BorderHeight << ": set a finite value.");
     return false;
   }
   if (dims[0] == 1 && dims[1] == 1)
@@ -749,6 +756,7 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Midlevel: " << this->Midlevel << "\n";
   os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
+  os << indent << "BorderHeight: " << this->BorderHeight << "\n";
   os << indent << "Interpolation: " << this->GetInterpolationAsString() << "\n";
   os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";
   os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";

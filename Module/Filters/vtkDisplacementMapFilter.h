@@ -18,8 +18,8 @@
  * vtkSurfaceDetailConventions.h defines for every SurfaceDetail filter and shader.
  * The heights are the height map's point scalars, or the point array chosen with
  * SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name), as in
- * vtkHeightMapToNormalMap; `HeightComponent` selects its channel. Unsigned char and unsigned short are
- * normalised to [0,1], float and double are used as they are; other scalar types are an error
+ * vtkHeightMapToNormalMap; `HeightComponent` selects its channel. Unsigned char and unsigned short
+ * are normalised to [0,1], float and double are used as they are; other scalar types are an error
  * (vtkSurfaceDetail::HeightMapScale, the rule every SurfaceDetail reader of height maps
  * applies: convert them to float with vtkImageShiftScale). `Wrap` has vtkTexture's values and
  * OpenGL's meaning; `Interpolation` is
@@ -145,7 +145,8 @@ public:
   {
     ClampToEdge = 0,
     Repeat = 1,
-    MirroredRepeat = 2
+    MirroredRepeat = 2,
+    ClampToBorder = 3
   };
 
   enum InterpolationType
@@ -192,15 +193,26 @@ public:
 
   ///@{
   /**
-   * How texture coordinates outside [0,1] read the height map, as vtkTexture::Wrap.
-   * Default Repeat.
+   * How texture coordinates outside [0,1] read the height map, as vtkTexture::Wrap:
+   * ClampToBorder reads BorderHeight outside the image. Default Repeat.
    */
-  vtkSetClampMacro(Wrap, int, ClampToEdge, MirroredRepeat);
+  vtkSetClampMacro(Wrap, int, ClampToEdge, ClampToBorder);
   vtkGetMacro(Wrap, int);
   void SetWrapToClampToEdge() { this->SetWrap(ClampToEdge); }
   void SetWrapToRepeat() { this->SetWrap(Repeat); }
   void SetWrapToMirroredRepeat() { this->SetWrap(MirroredRepeat); }
+  void SetWrapToClampToBorder() { this->SetWrap(ClampToBorder); }
   const char* GetWrapAsString();
+  ///@}
+
+  ///@{
+  /**
+   * With Wrap ClampToBorder, the height outside the image (after the normalisation of
+   * integer heights, so in [0,1] for them), as vtkTexture's border colour gives it to
+   * vtkSurfaceDetailMapper. Default 0. Must be finite.
+   */
+  vtkSetMacro(BorderHeight, double);
+  vtkGetMacro(BorderHeight, double);
   ///@}
 
   ///@{
@@ -292,6 +304,7 @@ protected:
   double Midlevel = 0.0;
   int HeightComponent = 0;
   int Wrap = Repeat;
+  double BorderHeight = 0.0;
   int Interpolation = Linear;
   int NormalMode = Exact;
   bool MergeSeams = true;

@@ -58,8 +58,9 @@ inline double TameCoordinate(double s, int wrap)
   {
     return s;
   }
-  return wrap == vtkSurfaceDetail::ClampToEdge ? std::min(std::max(s, -1.0), 2.0)
-                                               : std::fmod(s, 2.0);
+  const bool clamps =
+    wrap == vtkSurfaceDetail::ClampToEdge || wrap == vtkSurfaceDetail::ClampToBorder;
+  return clamps ? std::min(std::max(s, -1.0), 2.0) : std::fmod(s, 2.0);
 }
 
 /// Catmull-Rom weights @a w and their derivatives @a dw for the fraction @a f in [0,1).
@@ -78,15 +79,16 @@ inline void CatmullRom(double f, double w[4], double dw[4])
 
 /**
  * A height map of scalar type T: component Comp of each texel, times Norm (integer maps
- * become fractions of their range). Non-finite texels read as the midlevel, so that they do
- * not move the surface, and are remembered for the filter's warning.
+ * become fractions of their range), and Border outside it under ClampToBorder. Non-finite
+ * texels read as the midlevel, so that they do not move the surface, and are remembered for
+ * the filter's warning.
  */
 template <typename T>
 class HeightMap final : public HeightSampler
 {
 public:
   HeightMap(const T* data, int w, int h, int nc, int comp, int wrap, int interpolation, double norm,
-    double mid)
+    double mid, double border)
     : Data(data)
     , W(w)
     , H(h)
@@ -96,6 +98,7 @@ public:
     , Interpolation(interpolation)
     , Norm(norm)
     , Mid(mid)
+    , Border(border)
   {
   }
 
@@ -126,8 +129,8 @@ public:
   }
 
 private:
-  // Texel index i of a row (or column) n texels long, wrapped; the wrap's integer division
-  // only outside the map.
+  // Texel index i of a row (or column) n texels long, wrapped (-1: the border of
+  // ClampToBorder); the wrap's integer division only outside the map.
   int Wrapped(int i, int n) const
   {
     return static_cast<unsigned>(i) < static_cast<unsigned>(n)
@@ -152,9 +155,13 @@ private:
     return this->Mid;
   }
 
-  // The texel at wrapped indices (i, j).
+  // The texel at wrapped indices (i, j), or the border.
   double Texel(int i, int j) const
   {
+    if (i < 0 || j < 0)
+    {
+      return this->Border;
+    }
     return this->Checked(this->Norm * this->Row(j)[static_cast<vtkIdType>(i) * this->NC]);
   }
 
@@ -179,18 +186,33 @@ private:
     double fx, fy;
     vtkSurfaceDetail::LinearTexels(s, this->W, i0, fx);
     vtkSurfaceDetail::LinearTexels(t, this->H, j0, fy);
-    const vtkIdType nc = this->NC;
-    const vtkIdType ia = nc * this->Wrapped(i0, this->W), ib = nc * this->Wrapped(i0 + 1, this->W);
-    const T* rowA = this->Row(this->Wrapped(j0, this->H));
-    const T* rowB = this->Row(this->Wrapped(j0 + 1, this->H));
-    double a = this->Norm * rowA[ia], b = this->Norm * rowA[ib];
-    double c = this->Norm * rowB[ia], d = this->Norm * rowB[ib];
-    if (!std::is_integral<T>::value && !std::isfinite(a + b + c + d))
+    const int ia = this->Wrapped(i0, this->W), ib = this->Wrapped(i0 + 1, this->W);
+    const int ja = this->Wrapped(j0, this->H), jb = this->Wrapped(j0 + 1, this->H);
+    double a, b, c, d;
+    if (std::min({ ia, ib, ja, jb }) < 0)
     {
-      a = this->Checked(a);
-      b = this->Checked(b);
-      c = this->Checked(c);
-      d = this->Checked(d);
+      // A tap on the border (ClampToBorder only).
+      a = this->Texel(ia, ja);
+      b = this->Texel(ib, ja);
+      c = this->Texel(ia, jb);
+      d = this->Texel(ib, jb);
+    }
+    else
+    {
+      const vtkIdType nc = this->NC;
+      const T* rowA = this->Row(ja);
+      const T* rowB = this->Row(jb);
+      a = this->Norm * rowA[nc * ia];
+      b = this->Norm * rowA[nc * ib];
+      c = this->Norm * rowB[nc * ia];
+      d = this->Norm * rowB[nc * ib];
+      if (!std::is_integral<T>::value && !std::isfinite(a + b + c + d))
+      {
+        a = this->Checked(a);
+        b = this->Checked(b);
+        c = this->Checked(c);
+        d = this->Checked(d);
+      }
     }
     const double bottom = a + fx * (b - a), top = c + fx * (d - c);
     h = bottom + fy * (top - bottom);
@@ -237,7 +259,7 @@ private:
 
   const T* Data;
   int W, H, NC, Comp, Wrap, Interpolation;
-  double Norm, Mid;
+  double Norm, Mid, Border;
 };
 
 /// Calls @a body with the height map's scalars as a pointer to their type, among the types
@@ -265,8 +287,8 @@ void WithTexelType(vtkDataArray* scalars, F&& body)
 
 /// The sampler of component @a comp of the point array @a scalars of @a image (checked to be
 /// a height map).
-inline std::unique_ptr<HeightSampler> MakeHeightSampler(
-  vtkImageData* image, vtkDataArray* scalars, int comp, int wrap, int interpolation, double mid)
+inline std::unique_ptr<HeightSampler> MakeHeightSampler(vtkImageData* image, vtkDataArray* scalars,
+  int comp, int wrap, int interpolation, double mid, double border)
 {
   int dims[3];
   image->GetDimensions(dims);
@@ -278,7 +300,7 @@ inline std::unique_ptr<HeightSampler> MakeHeightSampler(
     {
       using T = std::remove_const_t<std::remove_pointer_t<decltype(data)>>;
       sampler.reset(new HeightMap<T>(data, dims[0], dims[1], scalars->GetNumberOfComponents(), comp,
-        wrap, interpolation, norm, mid));
+        wrap, interpolation, norm, mid, border));
     });
   return sampler;
 }

@@ -40,7 +40,9 @@ template <typename Real>
 struct RowCache
 {
   std::array<std::vector<Real>, 3> Rows;
-  std::array<int, 3> Tags{ { -1, -1, -1 } };
+  // The input row each cached row holds; -1 is the border row (ClampToBorder), Empty none.
+  static constexpr int Empty = std::numeric_limits<int>::min();
+  std::array<int, 3> Tags{ { Empty, Empty, Empty } };
   std::vector<Real> Gx, Gy, B, A;
   std::vector<uint32_t> Words32; // packed quantised texels (8-bit outputs)
   std::vector<uint64_t> Words64; // packed quantised texels (16-bit outputs)
@@ -70,6 +72,7 @@ struct NormalMapKernel
   bool GreenUp = true;
   Real Sx = 1, Sy = 1; // k * W (or H) * height scale: texel difference -> slope
   Real HScale = 1;
+  Real Border = 0; // ClampToBorder: the height outside, in the input's units
   vtkSurfaceDetail::Progress* Progress = nullptr;
   vtkSMPThreadLocal<RowCache<Real>> Cache;
 
@@ -90,7 +93,8 @@ struct NormalMapKernel
   }
 
   // Row r of the height map as Real, padded with the wrapped texel on each side so that the
-  // stencils below never test for borders: row[k + 1] is texel k, row[0] texel -1.
+  // stencils below never test for borders: row[k + 1] is texel k, row[0] texel -1. Row -1
+  // is the border row of ClampToBorder.
   const Real* Row(RowCache<Real>& c, int r, const int keep[3])
   {
     for (int b = 0; b < 3; ++b)
@@ -106,6 +110,12 @@ struct NormalMapKernel
       ++b;
     }
     Real* row = c.Rows[b].data();
+    c.Tags[b] = r;
+    if (r < 0)
+    {
+      std::fill(row, row + this->W + 2, this->Border);
+      return row;
+    }
     const InT* src = this->In + static_cast<size_t>(r) * this->W * this->InStride;
     const int stride = this->InStride;
     if (stride == 1)
@@ -130,9 +140,11 @@ struct NormalMapKernel
       }
       c.NonFinite = c.NonFinite || bad > 0;
     }
-    row[0] = row[vtkSurfaceDetail::WrapIndex(-1, this->W, this->Wrap) + 1];
-    row[this->W + 1] = row[vtkSurfaceDetail::WrapIndex(this->W, this->W, this->Wrap) + 1];
-    c.Tags[b] = r;
+    // Under ClampToBorder WrapIndex gives -1 outside, which reads the border.
+    const int before = vtkSurfaceDetail::WrapIndex(-1, this->W, this->Wrap);
+    const int after = vtkSurfaceDetail::WrapIndex(this->W, this->W, this->Wrap);
+    row[0] = before < 0 ? this->Border : row[before + 1];
+    row[this->W + 1] = after < 0 ? this->Border : row[after + 1];
     return row;
   }
 
@@ -512,6 +524,7 @@ struct Job
   int Scheme, Wrap, OutputScalarType, OutComps;
   bool GreenUp;
   double BumpScale;
+  double BorderHeight;
   void* Out;
   vtkSurfaceDetail::Progress* Progress;
 };
@@ -541,6 +554,7 @@ KernelReport RunKernel(const InT* in, int stride, const Job& job)
   kernel.Sx = static_cast<Real>(std::min(std::max(job.BumpScale * job.W * scale, -top), top));
   kernel.Sy = static_cast<Real>(std::min(std::max(job.BumpScale * job.H * scale, -top), top));
   kernel.HScale = static_cast<Real>(scale);
+  kernel.Border = static_cast<Real>(job.BorderHeight / scale);
   kernel.Progress = job.Progress;
   vtkSMPTools::For(job.OutExt[2], job.OutExt[3] + 1, kernel);
   KernelReport report;
@@ -587,7 +601,9 @@ void RunFloating(
     vtkWarningWithObjectMacro(
       self, << nonFinite << " height(s) are NaN or infinite; each is replaced by the mean of its "
             << "finite neighbours (continuing their slope where it can).");
-    RepairHeights(repaired, job.W, job.H, job.Wrap);
+    // The fill reads neighbours inside the image: the border is not a height to continue.
+    RepairHeights(repaired, job.W, job.H,
+      job.Wrap == vtkSurfaceDetail::ClampToBorder ? vtkSurfaceDetail::ClampToEdge : job.Wrap);
     report = DispatchOutput(repaired.data(), 1, job);
   }
   if (relief && report.OutOfRange > 0)
@@ -744,9 +760,10 @@ int vtkHeightMapToNormalMap::RequestData(
       << heights->GetDataTypeAsString() << ": " << vtkSurfaceDetail::HeightMapTypeAdvice() << ".");
     return 0;
   }
-  if (!std::isfinite(this->BumpScale))
+  if (!std::isfinite(this->BumpScale) || !std::isfinite(this->BorderHeight))
   {
-    vtkErrorMacro("BumpScale is " << this->BumpScale << ": set a finite value.");
+    vtkErrorMacro("BumpScale is " << this->BumpScale << " and BorderHeight " << this->BorderHeight
+                                  << ": set finite values.");
     return 0;
   }
   // The kernels read the array's memory directly; other layouts are copied once.
@@ -796,6 +813,7 @@ int vtkHeightMapToNormalMap::RequestData(
   job.OutComps = comps;
   job.GreenUp = this->GreenUp;
   job.BumpScale = this->BumpScale;
+  job.BorderHeight = this->BorderHeight;
   job.Out = map->GetVoidPointer(0);
   // Floating-point maps with NaN are done twice (RunFloating): the progress may pass 1 there.
   vtkSurfaceDetail::Progress progress(this, 0.0, 1.0, outExt[3] - outExt[2] + 1);
@@ -834,6 +852,7 @@ void vtkHeightMapToNormalMap::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DifferenceScheme: " << this->GetDifferenceSchemeAsString() << "\n";
   os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent << "Wrap: " << this->GetWrapAsString() << "\n";
+  os << indent << "BorderHeight: " << this->BorderHeight << "\n";
   os << indent << "GreenUp: " << (this->GreenUp ? "On" : "Off") << "\n";
   os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "OutputScalarType: " << vtkImageScalarTypeNameMacro(this->OutputScalarType)

@@ -69,7 +69,8 @@ public:
   {
     ClampToEdge = vtkSurfaceDetail::ClampToEdge,
     Repeat = vtkSurfaceDetail::Repeat,
-    MirroredRepeat = vtkSurfaceDetail::MirroredRepeat
+    MirroredRepeat = vtkSurfaceDetail::MirroredRepeat,
+    ClampToBorder = vtkSurfaceDetail::ClampToBorder
   };
 
   ///@{
@@ -107,14 +108,25 @@ public:
   /**
    * Which texels the stencil reads beyond the borders, as vtkTexture::Wrap would sample
    * them. Default Repeat (tiling textures). For the one-texel stencils used here
-   * MirroredRepeat reads the same texels as ClampToEdge.
+   * MirroredRepeat reads the same texels as ClampToEdge; ClampToBorder reads BorderHeight.
    */
-  vtkSetClampMacro(Wrap, int, ClampToEdge, MirroredRepeat);
+  vtkSetClampMacro(Wrap, int, ClampToEdge, ClampToBorder);
   vtkGetMacro(Wrap, int);
   void SetWrapToClampToEdge() { this->SetWrap(ClampToEdge); }
   void SetWrapToRepeat() { this->SetWrap(Repeat); }
   void SetWrapToMirroredRepeat() { this->SetWrap(MirroredRepeat); }
+  void SetWrapToClampToBorder() { this->SetWrap(ClampToBorder); }
   const char* GetWrapAsString();
+  ///@}
+
+  ///@{
+  /**
+   * With Wrap ClampToBorder, the height outside the image (after the normalisation of
+   * integer heights, so in [0,1] for them), as vtkTexture's border colour gives it to
+   * vtkSurfaceDetailMapper. Default 0. Must be finite.
+   */
+  vtkSetMacro(BorderHeight, double);
+  vtkGetMacro(BorderHeight, double);
   ///@}
 
   ///@{
@@ -159,6 +171,7 @@ protected:
   int DifferenceScheme = Central;
   double BumpScale = 1.0;
   int Wrap = Repeat;
+  double BorderHeight = 0.0;
   bool GreenUp = true;
   int HeightComponent = 0;
   int OutputScalarType = VTK_UNSIGNED_CHAR;

@@ -40,7 +40,8 @@ enum WrapMode
 {
   ClampToEdge = 0,
   Repeat = 1,
-  MirroredRepeat = 2
+  MirroredRepeat = 2,
+  ClampToBorder = 3 ///< outside the image, a border value (vtkTexture's border colour)
 };
 
 /// The name of a wrap mode, for PrintSelf and Get...AsString methods.
@@ -52,13 +53,16 @@ inline const char* WrapModeName(int mode)
       return "ClampToEdge";
     case MirroredRepeat:
       return "MirroredRepeat";
+    case ClampToBorder:
+      return "ClampToBorder";
     default:
       return "Repeat";
   }
 }
 
 /**
- * The texel index that texel @a i of a texture @a n texels wide reads under @a mode.
+ * The texel index that texel @a i of a texture @a n texels wide reads under @a mode, or -1
+ * under ClampToBorder when @a i lies outside (the border value is read there).
  * Precondition: n >= 1 (callers reject empty images first; n = 0 would divide by zero).
  */
 inline int WrapIndex(int i, int n, int mode)
@@ -79,6 +83,8 @@ inline int WrapIndex(int i, int n, int mode)
       }
       return m < n ? m : 2 * n - 1 - m;
     }
+    case ClampToBorder:
+      return i >= 0 && i < n ? i : -1;
     default:
       return std::min(std::max(i, 0), n - 1);
   }

@@ -143,12 +143,26 @@ int GLWrap(int i, int n, int mode)
   return i < 0 ? 0 : (i >= n ? n - 1 : i);
 }
 
+// ClampToBorder's border value (a texture's border colour), in heights.
+constexpr double BorderValue = 0.37;
+
+// The value OpenGL reads at integer texel coordinates (i, j): the wrapped texel, or under
+// ClampToBorder the border outside the image (8.14.2: the border colour for texels outside).
+double GLTexel(const float* img, int W, int H, int mode, int i, int j)
+{
+  if (mode == vtkDisplacementMapFilter::ClampToBorder)
+  {
+    return i < 0 || i >= W || j < 0 || j >= H ? BorderValue : img[j * W + i];
+  }
+  return img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)];
+}
+
 double GLLinear(const float* img, int W, int H, int mode, double s, double t)
 {
   const double u = s * W, v = t * H;
   const int i0 = static_cast<int>(std::floor(u - 0.5)), j0 = static_cast<int>(std::floor(v - 0.5));
   const double a = (u - 0.5) - std::floor(u - 0.5), b = (v - 0.5) - std::floor(v - 0.5);
-  auto T = [&](int i, int j) { return img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)]; };
+  auto T = [&](int i, int j) { return GLTexel(img, W, H, mode, i, j); };
   return (1 - a) * (1 - b) * T(i0, j0) + a * (1 - b) * T(i0 + 1, j0) + (1 - a) * b * T(i0, j0 + 1) +
     a * b * T(i0 + 1, j0 + 1);
 }
@@ -171,7 +185,7 @@ std::vector<std::array<double, 2>> RandomCoordinates(
 double GLNearest(const float* img, int W, int H, int mode, double s, double t)
 {
   const int i = static_cast<int>(std::floor(s * W)), j = static_cast<int>(std::floor(t * H));
-  return img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)];
+  return GLTexel(img, W, H, mode, i, j);
 }
 
 vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, int mode,
@@ -186,6 +200,7 @@ vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, in
   f->SetMidlevel(mid);
   f->SetInterpolation(interp);
   f->SetWrap(wrap);
+  f->SetBorderHeight(BorderValue); // read under ClampToBorder only
   f->Update();
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->DeepCopy(f->GetOutput());
@@ -268,7 +283,9 @@ static_assert(static_cast<int>(vtkDisplacementMapFilter::ClampToEdge) ==
       static_cast<int>(vtkTexture::ClampToEdge) &&
     static_cast<int>(vtkDisplacementMapFilter::Repeat) == static_cast<int>(vtkTexture::Repeat) &&
     static_cast<int>(vtkDisplacementMapFilter::MirroredRepeat) ==
-      static_cast<int>(vtkTexture::MirroredRepeat),
+      static_cast<int>(vtkTexture::MirroredRepeat) &&
+    static_cast<int>(vtkDisplacementMapFilter::ClampToBorder) ==
+      static_cast<int>(vtkTexture::ClampToBorder),
   "vtkDisplacementMapFilter's Wrap values must be vtkTexture's");
 
 // The Linear and Nearest samples equal an independent transcription of OpenGL's sampling
@@ -287,7 +304,7 @@ TEST(DisplacementMapFilter, SamplingMatchesOpenGLRules)
   st.push_back({ 0.5 / W, 0.5 / H });
   auto probes = Probes(st);
   for (int wrap : { vtkDisplacementMapFilter::ClampToEdge, vtkDisplacementMapFilter::Repeat,
-         vtkDisplacementMapFilter::MirroredRepeat })
+         vtkDisplacementMapFilter::MirroredRepeat, vtkDisplacementMapFilter::ClampToBorder })
   {
     for (int interp : { vtkDisplacementMapFilter::Nearest, vtkDisplacementMapFilter::Linear })
     {
@@ -2403,8 +2420,7 @@ std::array<double, 3> RefCubic(const float* img, int W, int H, int mode, double 
   const double u = s * W - 0.5, v = t * H - 0.5;
   const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
   const double fx = u - std::floor(u), fy = v - std::floor(v);
-  auto T = [&](int i, int j)
-  { return static_cast<double>(img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)]); };
+  auto T = [&](int i, int j) { return GLTexel(img, W, H, mode, i, j); };
   double row[4], drow[4];
   for (int l = 0; l < 4; ++l)
   {
@@ -2425,8 +2441,7 @@ std::array<double, 3> RefLinear(const float* img, int W, int H, int mode, double
   const double u = s * W - 0.5, v = t * H - 0.5;
   const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
   const double a = u - std::floor(u), b = v - std::floor(v);
-  auto T = [&](int i, int j)
-  { return static_cast<double>(img[GLWrap(j, H, mode) * W + GLWrap(i, W, mode)]); };
+  auto T = [&](int i, int j) { return GLTexel(img, W, H, mode, i, j); };
   const double t00 = T(i0, j0), t10 = T(i0 + 1, j0), t01 = T(i0, j0 + 1), t11 = T(i0 + 1, j0 + 1);
   return { GLLinear(img, W, H, mode, s, t), W * ((1 - b) * (t10 - t00) + b * (t11 - t01)),
     H * ((1 - a) * (t01 - t00) + a * (t11 - t10)) };
@@ -2458,7 +2473,7 @@ TEST(DisplacementMapFilter, SlopesMatchTheInterpolants)
   auto probes = Probes(st);
   const double scale = 0.7;
   for (int wrap : { vtkDisplacementMapFilter::ClampToEdge, vtkDisplacementMapFilter::Repeat,
-         vtkDisplacementMapFilter::MirroredRepeat })
+         vtkDisplacementMapFilter::MirroredRepeat, vtkDisplacementMapFilter::ClampToBorder })
   {
     // The test's own premise: the slope does jump across the texel centres probed.
     double jump = 0.0;

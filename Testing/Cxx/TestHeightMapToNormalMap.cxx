@@ -754,6 +754,84 @@ TEST(TestHeightMapToNormalMap, HeightComponentChoosesTheChannel)
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
 
+// ClampToBorder reads BorderHeight outside the image, as OpenGL reads a texture's border
+// colour: the map of an N x N image equals the inside of the map of that image framed by a
+// one-texel ring of the border height (read with ClampToEdge, which never reaches past the
+// ring), with the bump scale that keeps the texel spacing, k N / (N + 2). Integer heights
+// take the border in normalised units.
+TEST(TestHeightMapToNormalMap, ClampToBorderReadsTheBorderHeight)
+{
+  constexpr int n = 12;
+  auto f = [](double s, double t)
+  { return std::floor(120.0 + 90.0 * std::sin(7 * s + 4 * t * t)); };
+  auto framed = [&](auto array, double ring)
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(n + 2, n + 2, 1);
+    array->SetNumberOfTuples((n + 2) * (n + 2));
+    for (int j = 0; j < n + 2; ++j)
+    {
+      for (int i = 0; i < n + 2; ++i)
+      {
+        const bool inside = i > 0 && i <= n && j > 0 && j <= n;
+        array->SetTuple1(j * (n + 2) + i, inside ? f((i - 0.5) / n, (j - 0.5) / n) : ring);
+      }
+    }
+    image->GetPointData()->SetScalars(array);
+    return image;
+  };
+  struct Case
+  {
+    vtkSmartPointer<vtkImageData> Image, Framed;
+    double Border; // in heights, after normalisation
+  };
+  auto floats = Sample<vtkFloatArray>(n, n, f);
+  auto bytes = Sample<vtkUnsignedCharArray>(n, n, f);
+  const std::vector<Case> cases = {
+    { floats, framed(vtkSmartPointer<vtkFloatArray>::New(), 30.0), 30.0 },
+    { bytes, framed(vtkSmartPointer<vtkUnsignedCharArray>::New(), 51.0), 51.0 / 255.0 },
+  };
+  for (const Case& c : cases)
+  {
+    for (int scheme = vtkHeightMapToNormalMap::Forward; scheme <= vtkHeightMapToNormalMap::Scharr;
+         ++scheme)
+    {
+      vtkNew<vtkHeightMapToNormalMap> filter;
+      filter->SetInputData(c.Image);
+      filter->SetDifferenceScheme(scheme);
+      filter->SetWrapToClampToBorder();
+      filter->SetBorderHeight(c.Border);
+      filter->SetBumpScale(0.01);
+      filter->SetOutputScalarTypeToFloat();
+      filter->Update();
+      Settings s;
+      s.Scheme = scheme;
+      s.Wrap = vtkHeightMapToNormalMap::ClampToEdge;
+      s.Strength = 0.01 * n / (n + 2.0);
+      auto want = MakeMap(c.Framed, s);
+      double worst = 0.0;
+      for (int j = 0; j < n; ++j)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          double a[3], b[3];
+          NormalAt(filter->GetOutput(), i, j, a);
+          NormalAt(want, i + 1, j + 1, b);
+          worst = std::max(worst, AngleBetween(a, b));
+        }
+      }
+      EXPECT_LT(worst, 1e-4) << SchemeName(scheme) << " " << c.Image->GetScalarTypeAsString();
+      // The border is really read: another border height gives other edge normals.
+      filter->SetBorderHeight(c.Border * 2.0);
+      filter->Update();
+      double a[3], b[3];
+      NormalAt(filter->GetOutput(), n - 1, n / 2, a); // every scheme reads the texel after it
+      NormalAt(want, n, n / 2 + 1, b);
+      EXPECT_GT(AngleBetween(a, b), 1e-3) << SchemeName(scheme);
+    }
+  }
+}
+
 // One rule for every reader of height maps (vtkSurfaceDetail::HeightMapScale): signed and
 // wide integers are refused here as vtkDisplacementMapFilter and vtkSurfaceDetailMapper
 // refuse them, with the same advice, and the output is empty.
