@@ -290,7 +290,6 @@ public:
       in.DNdv = this->Read(Vector(pd, "dNdv"));
     }
     in.Tangents = this->Read(tangents);
-    in.TangentsNC = tangents ? tangents->GetNumberOfComponents() : 4;
   }
 
   // Displaces the input by the height map @a image, with the polygons as @a polys. Nothing is
@@ -370,14 +369,9 @@ public:
     {
       output->GetPointData()->SetNormals(this->OutNormals);
     }
-    // VTK 9.1's tangents attribute takes 3 components only: 4 go by name.
-    if (this->OutTangents && this->OutTangents->GetNumberOfComponents() == 3)
+    if (this->OutTangents)
     {
       output->GetPointData()->SetTangents(this->OutTangents);
-    }
-    else if (this->OutTangents)
-    {
-      output->GetPointData()->AddArray(this->OutTangents);
     }
   }
 
@@ -410,8 +404,9 @@ private:
     }
     if (this->InTangents)
     {
-      this->Out.Tangents =
-        this->Write(this->OutTangents, this->InTangents->GetName(), this->In.TangentsNC);
+      this->Out.Tangents = this->Write(this->OutTangents, this->InTangents->GetName(), 3);
+      // The mark of vtkSurfaceDetailTangents (and any other) stays with the tangents.
+      this->OutTangents->CopyInformation(this->InTangents->GetInformation());
     }
   }
 
@@ -588,11 +583,9 @@ void vtkDisplacementMapFilter::ReportBadPointIds(vtkIdType numPts)
 //------------------------------------------------------------------------------
 vtkDataArray* vtkDisplacementMapFilter::InputTangents(vtkPolyData* input)
 {
-  // The 4-component frame (Documentation/Conventions.md) goes by its name "Tangents".
-  vtkDataArray* t = input->GetPointData()->GetTangents();
-  t = t ? t : input->GetPointData()->GetArray("Tangents");
-  const bool usable = t && (t->GetNumberOfComponents() == 3 || t->GetNumberOfComponents() == 4);
-  return this->NormalMode != Input && usable ? t : nullptr;
+  // The TANGENTS attribute has 3 components (VTK enforces it); the handedness beside it
+  // (vtkSurfaceDetailTangents) does not change when the tangents turn with the normals.
+  return this->NormalMode != Input ? input->GetPointData()->GetTangents() : nullptr;
 }
 
 //------------------------------------------------------------------------------

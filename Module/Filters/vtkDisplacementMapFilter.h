@@ -86,9 +86,10 @@
  * their texture-coordinate differences. "dPdu", "dPdv", "dNdu" and "dNdv" pass through
  * unchanged: they describe the input surface (nobody asked for them to be recomputed).
  *
- * Tangents. When the point data has tangents (3 or 4 components, the frame of
- * Documentation/Conventions.md), the output tangents are re-orthogonalised to the new normals; the
- * handedness w is kept. All other point and cell arrays pass through.
+ * Tangents. When the point data has a TANGENTS attribute, the output tangents are
+ * re-orthogonalised to the new normals and keep the array's information (the mark of
+ * vtkSurfaceDetailTangents); the handedness array "TangentHandedness" passes through, as do
+ * all other point and cell arrays.
  *
  * Seams. With `MergeSeams` on (the default), points that coincide within
  * `SeamTolerance` (relative to the bounding-box diagonal), such as the duplicated points of

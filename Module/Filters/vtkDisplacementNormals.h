@@ -40,8 +40,7 @@ struct Surface
   const R* DPdv = nullptr;
   const R* DNdu = nullptr; // with DNdv, Exact only, or null: n_s and n_t are then fitted
   const R* DNdv = nullptr;
-  const R* Tangents = nullptr; // re-orthogonalised to the new normals, or null
-  int TangentsNC = 4;
+  const R* Tangents = nullptr; // 3 components, re-orthogonalised to the new normals, or null
   double DerivativeScale[2] = { 1.0, 1.0 }; // P_s = dPdu * [0], P_t = dPdv * [1]
 };
 
@@ -350,7 +349,7 @@ void Directions(PointBlock& b)
 /**
  * Normalises the directions M of the block's points and writes them as their normals (the
  * unit input normal where a direction is degenerate, +z where that is zero too), then their
- * tangents re-orthogonalised to them with the handedness kept.
+ * tangents re-orthogonalised to them (the handedness array passes through unchanged).
  */
 template <typename R>
 void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, PointBlock& b)
@@ -376,11 +375,10 @@ void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, PointBl
   {
     return;
   }
-  const int nc = in.TangentsNC;
   const R* tangents = in.Tangents;
   for (int k = 0; k < count; ++k)
   {
-    const R* ti = tangents + nc * b.Ids[k];
+    const R* ti = tangents + 3 * b.Ids[k];
     b.Tx[k] = ti[0];
     b.Ty[k] = ti[1];
     b.Tz[k] = ti[2];
@@ -406,14 +404,10 @@ void WriteNormalsAndTangents(const Surface<R>& in, const Output<R>& out, PointBl
       b.Ty[k] = frame[1];
       b.Tz[k] = frame[2];
     }
-    R* tangent = outTangents + nc * b.Ids[k];
+    R* tangent = outTangents + 3 * b.Ids[k];
     tangent[0] = static_cast<R>(b.Tx[k]);
     tangent[1] = static_cast<R>(b.Ty[k]);
     tangent[2] = static_cast<R>(b.Tz[k]);
-    if (nc == 4)
-    {
-      tangent[3] = tangents[4 * b.Ids[k] + 3];
-    }
   }
 }
 

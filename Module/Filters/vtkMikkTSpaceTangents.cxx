@@ -5,6 +5,7 @@
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailGhosts.h"
 #include "vtkSurfaceDetailMikkTSpace.h"
+#include "vtkSurfaceDetailTangents.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -117,7 +118,7 @@ vtkSmartPointer<vtkIdList> Identity(vtkIdType n)
 }
 
 // The output: the input's points and point data (copied to the split points), the
-// "Tangents" array, vertices and lines as they are, the faces with their cell data.
+// tangent frame, vertices and lines as they are, the faces with their cell data.
 void Assemble(vtkPolyData* input, vtkPointData* inPD, const Faces& faces,
   const vtkSurfaceDetailMikkTSpace::Frames& frames, vtkPolyData* output)
 {
@@ -140,11 +141,8 @@ void Assemble(vtkPolyData* input, vtkPointData* inPD, const Faces& faces,
     output->GetPointData()->CopyAllocate(inPD, nOut);
     output->GetPointData()->CopyData(inPD, src, Identity(nOut));
   }
-  // VTK 9.1 takes only 3-component tangent attributes, so the frame is the named array of
-  // Documentation/Conventions.md; an input array of that name must not survive next to it.
-  frames.Tangents->SetName("Tangents");
-  output->GetPointData()->RemoveArray("Tangents");
-  output->GetPointData()->AddArray(frames.Tangents);
+  // The frame is computed four floats per point; VTK's tangent attribute takes three.
+  vtkSurfaceDetailTangents::SetFrameFromXYZW(output->GetPointData(), frames.Tangents);
 
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());

@@ -26,9 +26,9 @@
  * their triangles carry the cell data of the cell they came from. Vertices, lines and
  * polygons with fewer than three points pass through.
  *
- * The output is the input surface with a 4-component float point array "Tangents"
- * (xyz, w). VTK 9.1's point data takes only 3-component tangent attributes, so it is a
- * named array (GetPointData()->GetArray("Tangents")), as vtkParametricSurfaceSource's.
+ * The output is the input surface with the tangent frame stored as vtkSurfaceDetailTangents
+ * says, as vtkParametricSurfaceSource's: T in the TANGENTS attribute "Tangents" (3 float
+ * components) and w in the float array "TangentHandedness".
  * A point whose corners get different frames (a mirrored texture shell, or faces around
  * it that MikkTSpace does not join) is split: the first frame keeps the point, every
  * other frame gets a new point appended after the input's points, with all point data

@@ -22,6 +22,7 @@
 #include "vtkSurfaceDetailCells.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailProgress.h"
+#include "vtkSurfaceDetailTangents.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,11 +120,8 @@ std::vector<double> Tuples(vtkDataArray* array, int components)
 
 vtkDataArray* TangentArray(vtkPolyData* mesh)
 {
-  vtkPointData* pd = mesh->GetPointData();
-  vtkDataArray* t = pd->GetTangents() ? pd->GetTangents() : pd->GetArray("Tangents");
-  const bool usable = t && (t->GetNumberOfComponents() == 3 || t->GetNumberOfComponents() == 4) &&
-    t->GetNumberOfTuples() == mesh->GetNumberOfPoints();
-  return usable ? t : nullptr;
+  vtkDataArray* t = mesh->GetPointData()->GetTangents();
+  return t && t->GetNumberOfTuples() == mesh->GetNumberOfPoints() ? t : nullptr;
 }
 
 vtkDataArray* NormalArray(vtkPolyData* mesh)
@@ -169,9 +167,10 @@ void CoarseMesh::Prepare(vtkPolyData* mesh)
 {
   this->Points = Tuples(mesh->GetPoints()->GetData(), 3);
   this->Normals = Tuples(NormalArray(mesh), 3);
-  vtkDataArray* tangents = TangentArray(mesh);
-  const bool hasW = tangents->GetNumberOfComponents() == 4;
-  std::vector<double> tw = Tuples(tangents, 4);
+  const std::vector<double> tangents = Tuples(TangentArray(mesh), 3);
+  // Without a handedness array, w = +1 (as VTK's own normal mapping takes it).
+  vtkDataArray* handedness = vtkSurfaceDetailTangents::GetHandedness(mesh->GetPointData());
+  const std::vector<double> w = handedness ? Tuples(handedness, 1) : std::vector<double>();
   this->UV = Tuples(mesh->GetPointData()->GetTCoords(), 2);
   const vtkIdType n = mesh->GetNumberOfPoints();
   this->Tangents.assign(3 * n, 0.0);
@@ -188,7 +187,7 @@ void CoarseMesh::Prepare(vtkPolyData* mesh)
         }
         // As the mapper's vertex shader: T loses its part along N, B = w*cross(N, T).
         double* t = &this->Tangents[3 * i];
-        const double* raw = &tw[4 * i];
+        const double* raw = &tangents[3 * i];
         const double along = Dot(nn, raw);
         for (int k = 0; k < 3; ++k)
         {
@@ -200,10 +199,10 @@ void CoarseMesh::Prepare(vtkPolyData* mesh)
         }
         double* bt = &this->Bitangents[3 * i];
         Cross(nn, t, bt);
-        const double w = (hasW && raw[3] < 0.0) ? -1.0 : 1.0;
+        const double sign = (!w.empty() && w[i] < 0.0) ? -1.0 : 1.0;
         for (int k = 0; k < 3; ++k)
         {
-          bt[k] *= w;
+          bt[k] *= sign;
         }
       }
     });
@@ -1017,9 +1016,15 @@ vtkSmartPointer<vtkPolyData> vtkNormalMapBaker::WithTangentFrame(vtkPolyData* co
 {
   if (NormalArray(coarse) && TangentArray(coarse))
   {
+    const std::string problem =
+      vtkSurfaceDetailTangents::GetHandednessProblem(coarse->GetPointData());
+    if (!problem.empty())
+    {
+      vtkWarningMacro(<< problem);
+    }
     return coarse;
   }
-  vtkWarningMacro("The coarse mesh has no point normals or no \"Tangents\" array; computing "
+  vtkWarningMacro("The coarse mesh has no point normals or no tangents; computing "
                   "them with vtkMikkTSpaceTangents. Render that filter's output with the map: "
                   "the map is right only with the frame it was baked against.");
   vtkNew<vtkPolyData> copy;

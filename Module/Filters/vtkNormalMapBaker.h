@@ -9,8 +9,9 @@
  * map). This filter makes that map, as Blender, xNormal and Substance do, by casting rays.
  *
  * Input port 0 is the coarse mesh: polygons (or triangle strips) with point texture
- * coordinates, point normals and the 4-component point array "Tangents" (xyz, w) of
- * vtkSurfaceDetailConventions.h. Without normals or tangents they are computed with
+ * coordinates, point normals and a tangent frame as vtkSurfaceDetailTangents stores it
+ * (TANGENTS attribute, "TangentHandedness"; w = +1 without the latter, as VTK takes it).
+ * Without normals or tangents they are computed with
  * vtkMikkTSpaceTangents and a warning: render that filter's output, since a map is only
  * right with the frame it was baked against. Input port 1 is the detailed mesh (polygons or
  * strips); its point normals are interpolated where it has them, else its face normals are

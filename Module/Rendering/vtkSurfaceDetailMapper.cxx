@@ -35,6 +35,7 @@
 #include "vtkSurfaceDetailReliefFS.h"
 #include "vtkSurfaceDetailReliefShadowFS.h"
 #include "vtkSurfaceDetailTangentFrameFS.h"
+#include "vtkSurfaceDetailTangents.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +55,10 @@ const char* const DecTag = "//VTK::SurfaceDetail::Dec";
 const char* const VSImplTag = "//VTK::SurfaceDetail::Impl";
 const char* const TCoordImplTag = "//VTK::SurfaceDetail::TCoord::Impl";
 const char* const NormalImplTag = "//VTK::SurfaceDetail::Normal::Impl";
+// VTK 9.1 uploads float tangents as its own tangentMC but not double ones, so the mapper
+// maps them itself, by name, whatever their type.
 const char* const TangentAttribute = "sdTangentMC";
+const char* const HandednessAttribute = "sdHandednessMC";
 
 // The image behind a texture, brought up to date; nullptr if there is none. On a pipeline
 // where nothing changed, UpdateWholeExtent only walks the pipeline MTimes and sends no
@@ -198,6 +202,7 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
 {
   this->ActiveTechnique = Plain;
   this->ActiveUsesTangents = false;
+  this->ActiveUsesHandedness = false;
   this->ActiveUsesNormalMap = false;
   this->ActiveUsesHeightMap = false;
   this->ActiveUsesReliefMap = false;
@@ -217,10 +222,9 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
 
   vtkPolyData* input = this->CurrentInput;
   vtkPointData* pd = input ? input->GetPointData() : nullptr;
-  vtkDataArray* tangents = nullptr;
   if (technique != Plain && pd)
   {
-    tangents = pd->GetTangents() ? pd->GetTangents() : pd->GetArray("Tangents");
+    vtkDataArray* tangents = pd->GetTangents();
     vtkDataArray* tcoords = pd->GetTCoords();
     vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
     vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
@@ -245,12 +249,11 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
           << (tcoords ? "texture coordinates with another number of components" : "none")
           << ". Generate them first (e.g. vtkParametricSurfaceSource).";
     }
-    else if (usesTangents &&
-      (!tangents || !tangents->GetName() ||
-        (tangents->GetNumberOfComponents() != 3 && tangents->GetNumberOfComponents() != 4)))
+    else if (usesTangents && (!tangents || !tangents->GetName()))
     {
-      err << name << " needs a \"Tangents\" point array (4 components with handedness, or 3)"
-          << "; the input has none. Generate tangents first (vtkParametricSurfaceSource with "
+      err << name << " needs point tangents (a named TANGENTS attribute); the input has "
+          << (tangents ? "tangents without a name" : "none")
+          << ". Generate tangents first (vtkParametricSurfaceSource with "
           << "GenerateTangents, or vtkMikkTSpaceTangents)"
           << (technique == BumpMapping ? ", or turn TangentFree on." : ".");
     }
@@ -340,30 +343,56 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     technique = Plain;
   }
   this->ActiveTechnique = technique;
+  vtkDataArray* handedness = nullptr;
   if (technique != Plain)
   {
     this->ActiveUsesTangents = usesTangents;
+    handedness = usesTangents ? vtkSurfaceDetailTangents::GetHandedness(pd) : nullptr;
+    this->ActiveUsesHandedness = handedness != nullptr;
     this->ActiveUsesNormalMap = usesNormalMap;
     this->ActiveUsesHeightMap = usesHeightMap;
     this->ActiveUsesReliefMap = usesReliefMap;
   }
 
-  // The tangent attribute is uploaded only while a technique reads it.
-  const std::string wanted = this->ActiveUsesTangents ? tangents->GetName() : "";
-  if (wanted != this->MappedTangentArray)
+  const std::string handednessProblem =
+    this->ActiveUsesTangents ? vtkSurfaceDetailTangents::GetHandednessProblem(pd) : "";
+  if (handednessProblem != this->ReportedHandednessProblem)
   {
-    if (wanted.empty())
+    this->ReportedHandednessProblem = handednessProblem;
+    if (!handednessProblem.empty())
     {
-      this->RemoveVertexAttributeMapping(TangentAttribute);
+      vtkWarningMacro(<< handednessProblem);
     }
-    else
-    {
-      this->MapDataArrayToVertexAttribute(
-        TangentAttribute, wanted.c_str(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-    }
-    this->MappedTangentArray = wanted;
-    this->Modified();
   }
+
+  // The tangent attributes are uploaded only while a technique reads them.
+  vtkDataArray* tangents = this->ActiveUsesTangents ? pd->GetTangents() : nullptr;
+  this->MapAttribute(
+    TangentAttribute, tangents ? tangents->GetName() : "", this->MappedTangentArray);
+  this->MapAttribute(HandednessAttribute,
+    this->ActiveUsesHandedness ? vtkSurfaceDetailTangents::GetHandednessArrayName() : "",
+    this->MappedHandednessArray);
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailMapper::MapAttribute(
+  const char* attribute, const std::string& array, std::string& mapped)
+{
+  if (array == mapped)
+  {
+    return;
+  }
+  if (array.empty())
+  {
+    this->RemoveVertexAttributeMapping(attribute);
+  }
+  else
+  {
+    this->MapDataArrayToVertexAttribute(
+      attribute, array.c_str(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  }
+  mapped = array;
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -392,8 +421,8 @@ bool vtkSurfaceDetailMapper::AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act)
 std::string vtkSurfaceDetailMapper::ShaderKey() const
 {
   std::ostringstream key;
-  key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesNormalMap
-      << this->ActiveUsesHeightMap << this->ActiveUsesReliefMap;
+  key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesHandedness
+      << this->ActiveUsesNormalMap << this->ActiveUsesHeightMap << this->ActiveUsesReliefMap;
   if (this->ActiveTechnique == ReliefMapping)
   {
     key << this->SelfShadowing << this->DepthCorrection;
@@ -635,14 +664,17 @@ void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   std::string fsDec;
   if (this->ActiveUsesTangents)
   {
+    // Without a handedness array, w = +1 as VTK takes it.
+    vsDec += this->ActiveUsesHandedness ? "in float sdHandednessMC;\n"
+                                        : "const float sdHandednessMC = 1.0;\n";
     vsDec +=
-      "in vec4 sdTangentMC;\nout vec3 sdTangentVCVSOutput;\nout vec3 sdBitangentVCVSOutput;\n";
+      "in vec3 sdTangentMC;\nout vec3 sdTangentVCVSOutput;\nout vec3 sdBitangentVCVSOutput;\n";
     vsImpl += "{\n"
               "    vec3 sdN = normalize(normalMC);\n"
-              "    vec3 sdT = sdTangentMC.xyz - sdN * dot(sdN, sdTangentMC.xyz);\n"
+              "    vec3 sdT = sdTangentMC - sdN * dot(sdN, sdTangentMC);\n"
               "    float sdLen = length(sdT);\n"
               "    sdT = sdLen > 0.0 ? sdT / sdLen : vec3(0.0);\n"
-              "    vec3 sdB = (sdTangentMC.w < 0.0 ? -1.0 : 1.0) * cross(sdN, sdT);\n"
+              "    vec3 sdB = (sdHandednessMC < 0.0 ? -1.0 : 1.0) * cross(sdN, sdT);\n"
               "    float sdNLen = length(normalMatrix * sdN);\n"
               "    sdTangentVCVSOutput = (normalMatrix * sdT) / sdNLen;\n"
               "    sdBitangentVCVSOutput = (normalMatrix * sdB) / sdNLen;\n"

@@ -16,10 +16,12 @@
  * - Plain: exactly the plain mapper (no shader changes, no extra textures or attributes).
  * - NormalMapping: tangent-space normal map (SetNormalMap; RGB = 0.5*n + 0.5, green up
  *   by default, see GreenUp) with NormalScale scaling its tangential part. Needs point
- *   normals, 2-component texture coordinates and a tangent array with handedness
- *   ("Tangents", 4 components, w = +-1, as vtkParametricSurfaceSource makes; 3-component
- *   tangents are taken with w = +1). Unlike vtkProperty::SetNormalTexture, mirrored texture
- *   coordinates (w = -1) shade correctly.
+ *   normals, 2-component texture coordinates and point tangents (the TANGENTS attribute)
+ *   with their handedness beside them ("TangentHandedness", w = +-1, as
+ *   vtkSurfaceDetailTangents stores it; without it w = +1, as VTK takes it). Unlike
+ *   vtkProperty::SetNormalTexture, mirrored texture coordinates (w = -1) shade correctly.
+ *   When the tangents were replaced or the handedness dropped by a filter that does not
+ *   know it, the mapper warns once (vtkSurfaceDetailTangents::GetHandednessProblem).
  * - BumpMapping: the normal of the surface z = BumpScale*h(s,t) over the unit texture
  *   square, h the first channel of SetHeightMap, by forward or central
  *   differences at the height map's own texel size. With TangentFree on, the tangent frame
@@ -196,7 +198,7 @@ public:
   ///@{
   /**
    * Bump mapping without a tangent array: the frame comes from screen-space derivatives
-   * (Mikkelsen 2010). Default false (use the "Tangents" array).
+   * (Mikkelsen 2010). Default false (use the point tangents).
    */
   vtkSetMacro(TangentFree, bool);
   vtkGetMacro(TangentFree, bool);
@@ -344,16 +346,22 @@ private:
   // RGB texture (integer types scaled to [0,1]): vtkOpenGLTexture would store float images
   // in 8 bits, too coarse for differences.
   void UploadHeightMap(vtkRenderer* ren);
+  // Maps point array @a array (empty: none) to vertex attribute @a attribute, where it is not
+  // mapped already (@a mapped remembers what is).
+  void MapAttribute(const char* attribute, const std::string& array, std::string& mapped);
   // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
   void AddReliefShadows(std::string& fs);
 
   int ActiveTechnique = Plain;
   bool ActiveUsesTangents = false;
+  bool ActiveUsesHandedness = false;
   bool ActiveUsesNormalMap = false;
   bool ActiveUsesHeightMap = false;
   bool ActiveUsesReliefMap = false;
   std::string ReportedProblem;
+  std::string ReportedHandednessProblem;
   std::string MappedTangentArray;
+  std::string MappedHandednessArray;
   std::map<const vtkOpenGLHelper*, std::string> BuiltShaderKeys;
   vtkSmartPointer<vtkTextureObject> HeightTexture;
   vtkMTimeType HeightUploadStamp = 0;

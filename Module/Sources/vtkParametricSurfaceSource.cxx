@@ -22,6 +22,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailProgress.h"
+#include "vtkSurfaceDetailTangents.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
@@ -413,6 +414,7 @@ struct PointWorker
   float* Normals = nullptr;
   float* TCoords = nullptr;
   float* Tangents = nullptr;
+  float* Handedness = nullptr;
   Real* DPdu = nullptr;
   Real* DPdv = nullptr;
   Real* DNdu = nullptr;
@@ -553,13 +555,10 @@ struct PointWorker
     }
     if (this->Tangents)
     {
+      Store(t, first, count, this->Tangents);
       for (int k = 0; k < count; ++k)
       {
-        float* tangent = this->Tangents + 4 * (first + k);
-        tangent[0] = static_cast<float>(t[0][k]);
-        tangent[1] = static_cast<float>(t[1][k]);
-        tangent[2] = static_cast<float>(t[2][k]);
-        tangent[3] = static_cast<float>(w[k]);
+        this->Handedness[first + k] = static_cast<float>(w[k]);
       }
     }
     if (this->DNdu)
@@ -789,11 +788,15 @@ Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, Requested want, vtkPo
   vtkNew<RealArray> points;
   PointWorker<Real> worker(g);
   worker.Points = newArray(points.Get(), "Points", 3);
-  vtkNew<vtkFloatArray> normalArray, tcoordArray, tangentArray;
+  vtkNew<vtkFloatArray> normalArray, tcoordArray, tangentArray, handednessArray;
   vtkNew<RealArray> dPdu, dPdv, dNdu, dNdv;
   worker.Normals = want.Normals ? newArray(normalArray.Get(), "Normals", 3) : nullptr;
   worker.TCoords = want.TCoords ? newArray(tcoordArray.Get(), "TCoords", 2) : nullptr;
-  worker.Tangents = want.Tangents ? newArray(tangentArray.Get(), "Tangents", 4) : nullptr;
+  if (want.Tangents)
+  {
+    worker.Tangents = newArray(tangentArray.Get(), "Tangents", 3);
+    worker.Handedness = newArray(handednessArray.Get(), "TangentHandedness", 1);
+  }
   if (want.Derivatives)
   {
     worker.DPdu = newArray(dPdu.Get(), "dPdu", 3);
@@ -842,9 +845,7 @@ Outcome GeneratePoints(const Grid& g, vtkIdType numPoints, Requested want, vtkPo
   }
   if (want.Tangents)
   {
-    // VTK 9.1 accepts only 3-component tangent attributes (vtkDataSetAttributes), so the
-    // 4-component frame is an ordinary array found by its name.
-    pd->AddArray(tangentArray);
+    vtkSurfaceDetailTangents::SetFrame(pd, tangentArray, handednessArray);
   }
   if (want.Derivatives)
   {
@@ -969,7 +970,7 @@ int vtkParametricSurfaceSource::RequestData(
   const vtkIdType V = this->VResolution;
   const vtkIdType rowLength = U + 1;
   // Each factor is below 2^31, so the products are exact in vtkIdType. The biggest array
-  // per point has 32 bytes (double points or derivatives: 24, float tangents: 16), the
+  // per point has at most 32 bytes (double points or derivatives: 24), the
   // connectivity 48 bytes per quad (6 ids of 8 bytes): both must be indexable in bytes.
   constexpr vtkIdType mostIndex = std::numeric_limits<vtkIdType>::max();
   if (rowLength * (V + 1) > mostIndex / 32 || U * V > mostIndex / 48)

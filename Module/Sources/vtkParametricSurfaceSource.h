@@ -21,11 +21,11 @@
  * - "TCoords" (GenerateTextureCoordinates): s = TextureOffset[0] + TextureRepeat[0]*u,
  *   t = TextureOffset[1] + TextureRepeat[1]*v with (u,v) the unit-square parameters,
  *   whatever the function's own domain.
- * - "Tangents" (GenerateTangents): 4-component float tangents, T = dP/ds made orthogonal
- *   to N and normalised, w = handedness, per vtkSurfaceDetailConventions.h
- *   (MakeTangentFrame); bitangent B = w*cross(N,T). VTK 9.1's point data accepts only
- *   3-component tangent attributes, so this is a named array (GetArray("Tangents")), not
- *   the point data's tangent attribute.
+ * - "Tangents" and "TangentHandedness" (GenerateTangents): the tangent frame as
+ *   vtkSurfaceDetailTangents stores it: T = dP/ds made orthogonal to N and normalised, the
+ *   point data's TANGENTS attribute (3 float components), and the handedness w = +1 or -1
+ *   of the bitangent B = w*cross(N,T) in its own float array, per
+ *   vtkSurfaceDetailConventions.h (MakeTangentFrame).
  * - "dPdu", "dPdv" (GenerateDerivatives): the raw derivatives with respect to the
  *   unit-square parameters (the function's own derivatives times the extent of its domain).
  * - "dNdu", "dNdv" (GenerateDerivatives): the change of the unit normal "Normals" with
@@ -134,7 +134,7 @@ public:
   ///@}
 
   ///@{
-  /** Produce the 4-component float "Tangents" point array. Default off. */
+  /** Produce the tangent frame ("Tangents" attribute, "TangentHandedness"). Default off. */
   vtkSetMacro(GenerateTangents, bool);
   vtkGetMacro(GenerateTangents, bool);
   vtkBooleanMacro(GenerateTangents, bool);

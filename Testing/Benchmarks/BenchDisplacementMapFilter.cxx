@@ -255,7 +255,7 @@ void BM_VTKChain(benchmark::State& state)
 }
 
 // The floor: the 40 bytes per point that any filter making this benchmark's outputs must write
-// (float points, normals and 4-component tangents), written with the least work, std::fill.
+// (float points, normals and tangents), written with the least work, std::fill.
 // Arguments: U, threads, fresh (1: the arrays allocated anew each time, as a first execution's
 // outputs are; 0: written again into arrays allocated once).
 void BM_Floor(benchmark::State& state)
@@ -321,7 +321,7 @@ void BM_FusedKernel(benchmark::State& state)
   const float* points = floats(c.Mesh->GetPoints()->GetData());
   const float* normals = floats(pd->GetNormals());
   const float* tcoords = floats(pd->GetTCoords());
-  const float* tangents = floats(pd->GetArray("Tangents"));
+  const float* tangents = floats(pd->GetTangents());
   const float* du = floats(pd->GetArray("dPdu"));
   const float* dv = floats(pd->GetArray("dPdv"));
   vtkImageData* image = HeightImage();
@@ -353,7 +353,7 @@ void BM_FusedKernel(benchmark::State& state)
     outTangents = vtkSmartPointer<vtkFloatArray>::New();
     outPoints->SetNumberOfComponents(3);
     outNormals->SetNumberOfComponents(3);
-    outTangents->SetNumberOfComponents(4);
+    outTangents->SetNumberOfComponents(3);
     outPoints->SetNumberOfTuples(n);
     outNormals->SetNumberOfTuples(n);
     outTangents->SetNumberOfTuples(n);
@@ -398,7 +398,7 @@ void BM_FusedKernel(benchmark::State& state)
           }
           const double inv =
             (area < 0 ? -1.0 : 1.0) / std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-          double t[3] = { tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2] };
+          double t[3] = { tangents[3 * i], tangents[3 * i + 1], tangents[3 * i + 2] };
           const double along = (t[0] * m[0] + t[1] * m[1] + t[2] * m[2]) * inv * inv;
           for (int k = 0; k < 3; ++k)
           {
@@ -409,9 +409,8 @@ void BM_FusedKernel(benchmark::State& state)
           {
             op[3 * i + k] = static_cast<float>(points[3 * i + k] + d * nn[k]);
             on[3 * i + k] = static_cast<float>(m[k] * inv);
-            ot[4 * i + k] = static_cast<float>(t[k] * tinv);
+            ot[3 * i + k] = static_cast<float>(t[k] * tinv);
           }
-          ot[4 * i + 3] = tangents[4 * i + 3];
         }
       });
     benchmark::ClobberMemory();

@@ -96,10 +96,11 @@ void BM_vtkMikkTSpaceTangents(benchmark::State& state)
   RunFilter<vtkMikkTSpaceTangents>(state);
 }
 
-// The floor: what vtkMikkTSpaceTangents must write on these meshes, the 4-component float
-// tangents of every point (the points, point data and cells are passed on, and no point is
-// split), written by the threads. Fresh (first execution): a new array at every iteration,
-// its pages faulted and cleared by the kernel; warm (re-execution): the same array again.
+// The floor: what vtkMikkTSpaceTangents must write on these meshes, 16 bytes per point (the
+// 3-component float tangents and the float handedness; the points, point data and cells are
+// passed on, and no point is split), written by the threads as one array. Fresh (first execution):
+// a new array at every iteration, its pages faulted and cleared by the kernel; warm (re-execution):
+// the same array again.
 void BM_Floor(benchmark::State& state)
 {
   const Threads threads(static_cast<int>(state.range(0)));

@@ -26,6 +26,7 @@
 // plots); with --images, every rendered picture as <scene>-<variant>.png, for looking at.
 
 #include "SurfaceDetailStudy.h"
+#include "vtkSurfaceDetailTangents.h"
 
 #include "BrickTextures.h"
 #include "SurfaceDetailImageMetrics.h"
@@ -197,7 +198,9 @@ vtkSmartPointer<vtkPolyData> Trim(vtkPolyData* mesh, bool tangents)
   out->GetPointData()->SetTCoords(mesh->GetPointData()->GetTCoords());
   if (tangents)
   {
-    out->GetPointData()->AddArray(mesh->GetPointData()->GetArray("Tangents"));
+    vtkPointData* pd = mesh->GetPointData();
+    vtkSurfaceDetailTangents::SetFrame(
+      out->GetPointData(), pd->GetTangents(), vtkSurfaceDetailTangents::GetHandedness(pd));
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #ifndef DisplacementTestSurfaces_h
 #define DisplacementTestSurfaces_h
 
+#include "vtkSurfaceDetailTangents.h"
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
@@ -201,8 +202,8 @@ inline Surface Rectangle(double scale = 0.1)
 
 // A (U+1) x (V+1) grid of points with the seam and pole points duplicated (as a
 // parametric source makes them), two triangles per quad, tcoords (u,v), unit normals,
-// Tangents of Documentation/Conventions.md (4 components), optionally dPdu/dPdv and (with them) dNdu/dNdv; all in
-// double, or all in float.
+// tangent frames of Documentation/Conventions.md (vtkSurfaceDetailTangents), optionally
+// dPdu/dPdv and (with them) dNdu/dNdv; all in double, or all in float.
 inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, bool derivatives,
   bool floatPoints = false, bool normalDerivatives = false)
 {
@@ -221,6 +222,7 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, boo
     return vtkSmartPointer<vtkDoubleArray>::New();
   };
   auto normals = array(), tcoords = array(), du = array(), dv = array(), tangents = array();
+  auto handedness = array();
   auto ndu = array(), ndv = array();
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
@@ -228,9 +230,9 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, boo
   tcoords->SetName("TCoords");
   tcoords->SetNumberOfComponents(2);
   tcoords->SetNumberOfTuples(n);
-  tangents->SetName("Tangents");
-  tangents->SetNumberOfComponents(4);
+  tangents->SetNumberOfComponents(3);
   tangents->SetNumberOfTuples(n);
+  handedness->SetNumberOfTuples(n);
   du->SetName("dPdu");
   du->SetNumberOfComponents(3);
   du->SetNumberOfTuples(n);
@@ -265,7 +267,8 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, boo
       }
       t = Unit(t);
       const double w = DotV(CrossV(nn, t), pv) < 0.0 ? -1.0 : 1.0;
-      tangents->SetTuple4(id, t[0], t[1], t[2], w);
+      tangents->SetTuple3(id, t[0], t[1], t[2]);
+      handedness->SetTuple1(id, w);
     }
   }
   vtkNew<vtkCellArray> tris;
@@ -284,7 +287,7 @@ inline vtkSmartPointer<vtkPolyData> MakeMesh(const Surface& s, int U, int V, boo
   poly->SetPolys(tris);
   poly->GetPointData()->SetNormals(normals);
   poly->GetPointData()->SetTCoords(tcoords);
-  poly->GetPointData()->AddArray(tangents); // 4 components: VTK 9.1's attribute takes 3
+  vtkSurfaceDetailTangents::SetFrame(poly->GetPointData(), tangents, handedness);
   if (derivatives)
   {
     poly->GetPointData()->AddArray(du);

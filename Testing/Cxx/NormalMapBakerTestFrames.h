@@ -10,6 +10,7 @@
 #define NormalMapBakerTestFrames_h
 
 #include "DisplacementTestSurfaces.h"
+#include "TangentFrameTestHelpers.h"
 
 #include "vtkDisplacementMapFilter.h"
 
@@ -48,7 +49,7 @@ inline Frame CoarseFrame(vtkPolyData* mesh, int U, int V, double s, double t)
     w[0] = 1 - fv, w[1] = fu, w[2] = fv - fu;
   }
   vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-  vtkDataArray* tangents = mesh->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(mesh);
   Frame f{ { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
   for (int k = 0; k < 3; ++k)
   {

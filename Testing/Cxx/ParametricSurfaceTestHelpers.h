@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Helpers shared by the parametric-surface GoogleTest programs (issue 3).
+// Helpers shared by the parametric-surface GoogleTest programs.
 #ifndef ParametricSurfaceTestHelpers_h
 #define ParametricSurfaceTestHelpers_h
 

@@ -6,6 +6,7 @@
 
 #include "DisplacementTestSurfaces.h"
 #include "RenumberedPointsTestHelpers.h"
+#include "TangentFrameTestHelpers.h"
 
 #include "vtkDisplacementMapFilter.h"
 
@@ -210,7 +211,7 @@ vtkSmartPointer<vtkPolyData> Displace(vtkPolyData* mesh, vtkImageData* image, in
 // Points, normals and (where there are) tangents all finite.
 bool AllFinite(vtkPolyData* out)
 {
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
   {
     double p[3], n[3], t[4] = { 0.0, 0.0, 0.0, 0.0 };
@@ -549,7 +550,7 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
   {
     auto mesh = MakeMesh(s, 256, 128, false, floatPoints);
     vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-    vtkDataArray* tangents = mesh->GetPointData()->GetArray("Tangents");
+    auto tangents = TangentFrame(mesh);
     const vtkIdType middle = mesh->GetNumberOfPoints() / 2;
     normals->SetTuple3(5, 0.0, 0.0, 0.0);
     normals->SetTuple3(middle, std::nan(""), 0.0, 1.0);
@@ -567,8 +568,7 @@ TEST(DisplacementMapFilter, SameResultAtAnyThreadCount)
         << mode << " " << floatPoints;
       EXPECT_TRUE(SameBits(one->GetPointData()->GetNormals(), two->GetPointData()->GetNormals()))
         << mode << " " << floatPoints;
-      EXPECT_TRUE(SameBits(
-        one->GetPointData()->GetArray("Tangents"), two->GetPointData()->GetArray("Tangents")))
+      EXPECT_TRUE(SameBits(one->GetPointData()->GetTangents(), two->GetPointData()->GetTangents()))
         << mode << " " << floatPoints;
       // (None passes the NaN normal through.)
       EXPECT_TRUE(mode == vtkDisplacementMapFilter::Input || AllFinite(one))
@@ -591,7 +591,7 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
   {
     return SameBits(a->GetPoints()->GetData(), b->GetPoints()->GetData()) &&
       SameBits(a->GetPointData()->GetNormals(), b->GetPointData()->GetNormals()) &&
-      SameBits(a->GetPointData()->GetArray("Tangents"), b->GetPointData()->GetArray("Tangents"));
+      SameBits(a->GetPointData()->GetTangents(), b->GetPointData()->GetTangents());
   };
   for (int mode : AllModes)
   {
@@ -689,8 +689,8 @@ TEST(DisplacementMapFilter, ReExecutionMatchesFreshFilter)
 // Outputs equal to the bit: points, normals and tangents (when there are any).
 bool SameOutput(vtkPolyData* a, vtkPolyData* b)
 {
-  vtkDataArray* ta = a->GetPointData()->GetArray("Tangents");
-  vtkDataArray* tb = b->GetPointData()->GetArray("Tangents");
+  auto ta = TangentFrame(a);
+  auto tb = TangentFrame(b);
   return SameBits(a->GetPoints()->GetData(), b->GetPoints()->GetData()) &&
     SameBits(a->GetPointData()->GetNormals(), b->GetPointData()->GetNormals()) &&
     ((!ta && !tb) || (ta && tb && SameBits(ta, tb)));
@@ -927,16 +927,16 @@ TEST(DisplacementMapFilter, ReExecutionAfterInputReplaced)
         [&]()
         {
           vtkNew<vtkDoubleArray> tangents;
-          tangents->DeepCopy(mesh->GetPointData()->GetArray("Tangents"));
-          mesh->GetPointData()->AddArray(tangents);
+          tangents->DeepCopy(mesh->GetPointData()->GetTangents());
+          mesh->GetPointData()->SetTangents(tangents);
         });
       // Back to float.
       ExpectFreshAfter(f, "double input made float again by a float tangent array",
         [&]()
         {
           vtkNew<vtkFloatArray> tangents;
-          tangents->DeepCopy(mesh->GetPointData()->GetArray("Tangents"));
-          mesh->GetPointData()->AddArray(tangents);
+          tangents->DeepCopy(mesh->GetPointData()->GetTangents());
+          mesh->GetPointData()->SetTangents(tangents);
         });
     }
     ExpectFreshAfter(f, "another thread count",
@@ -1048,8 +1048,8 @@ TEST(DisplacementMapFilter, ScaleZeroIsIdentity)
       {
         EXPECT_TRUE(SameBits(mesh->GetPointData()->GetNormals(), out->GetPointData()->GetNormals()))
           << mode;
-        EXPECT_TRUE(SameBits(
-          mesh->GetPointData()->GetArray("Tangents"), out->GetPointData()->GetArray("Tangents")))
+        EXPECT_TRUE(
+          SameBits(mesh->GetPointData()->GetTangents(), out->GetPointData()->GetTangents()))
           << mode;
       }
       EXPECT_TRUE(SameBits(mesh->GetPointData()->GetTCoords(), out->GetPointData()->GetTCoords()));
@@ -1097,8 +1097,8 @@ TEST(DisplacementMapFilter, TangentsFollowNormals)
   auto mesh = MakeMesh(s, 48, 24, false);
   auto out =
     Displace(mesh, MakeHeightImage(s.Height, 128, 64), vtkDisplacementMapFilter::Exact, 0.15);
-  vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
-  vtkDataArray* tin = mesh->GetPointData()->GetArray("Tangents");
+  auto t = TangentFrame(out);
+  auto tin = TangentFrame(mesh);
   ASSERT_EQ(t->GetNumberOfComponents(), 4);
   double worst = 0.0;
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
@@ -1668,8 +1668,8 @@ TEST(DisplacementMapFilter, ArraysSettingsAndPrint)
 
 namespace
 {
-// Adds @a dst to @a out in the role @a src has in @a in: normals, texture coordinates or a
-// plain array.
+// Adds @a dst to @a out in the role @a src has in @a in: normals, texture coordinates,
+// tangents (with their information) or a plain array.
 void AddInSameRole(vtkPointData* in, vtkDataArray* src, vtkPointData* out, vtkDataArray* dst)
 {
   if (src == in->GetNormals())
@@ -1679,6 +1679,11 @@ void AddInSameRole(vtkPointData* in, vtkDataArray* src, vtkPointData* out, vtkDa
   else if (src == in->GetTCoords())
   {
     out->SetTCoords(dst);
+  }
+  else if (src == in->GetTangents())
+  {
+    dst->CopyInformation(src->GetInformation());
+    out->SetTangents(dst);
   }
   else
   {
@@ -1740,7 +1745,7 @@ double CheckAndCompare(vtkPolyData* a, vtkPolyData* b, const std::string& what)
   for (vtkPolyData* out : { a, b })
   {
     EXPECT_TRUE(AllFinite(out)) << what;
-    vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
+    auto t = TangentFrame(out);
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
     {
       double n[3], x[4];
@@ -2058,7 +2063,7 @@ TEST(DisplacementMapFilter, MeshNormalsDoNotDependOnPointNumbering)
       pd->GetNormals()->SetTuple3(16383, 0.0, 0.0, 0.0);
       double n[3];
       pd->GetNormals()->GetTuple(16384, n);
-      pd->GetArray("Tangents")->SetTuple4(16384, n[0], n[1], n[2], 1.0);
+      pd->GetTangents()->SetTuple3(16384, n[0], n[1], n[2]);
       if (quads)
       {
         mesh = AsQuads(mesh);
@@ -2344,7 +2349,7 @@ TEST(DisplacementMapFilter, FitsDoNotDependOnPointNumbering)
       pd->GetNormals()->SetTuple3(16384 + 3, 0.0, 0.0, 0.0);
       double n[3];
       pd->GetNormals()->GetTuple(16384 - 2, n);
-      pd->GetArray("Tangents")->SetTuple4(16384 - 2, n[0], n[1], n[2], 1.0);
+      pd->GetTangents()->SetTuple3(16384 - 2, n[0], n[1], n[2]);
       const std::vector<vtkIdType> perm = RenumberedPoints::RandomIds(mesh->GetNumberOfPoints(), 5);
       auto renumbered = RenumberedPoints::Moved(mesh, perm, mesh->GetNumberOfPoints());
       for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact })
@@ -2592,49 +2597,57 @@ TEST(DisplacementMapFilter, MeshNormalsAreAreaWeighted)
 }
 
 // Tangents in every mode that makes new normals: the input tangent with its part along the new
-// normal removed and normalised (Gram-Schmidt), its handedness w kept, whether w is +1 or -1,
-// and with 3-component tangents (the tangents attribute) as with 4.
+// normal removed and normalised (Gram-Schmidt). A SurfaceDetail frame keeps its handedness
+// array (w = +1 or -1) and its mark; tangents from elsewhere (no handedness) get none.
 TEST(DisplacementMapFilter, TangentsAreTheInputsOrthogonalised)
 {
   const Surface s = Torus(0.15);
   auto image = MakeHeightImage(s.Height, 128, 64);
-  for (int components : { 4, 3 })
+  for (bool withHandedness : { true, false })
   {
     auto mesh = MakeMesh(s, 32, 16, true);
-    vtkDataArray* t4 = mesh->GetPointData()->GetArray("Tangents");
-    vtkNew<vtkDoubleArray> tin;
-    tin->SetName("Tangents");
-    tin->SetNumberOfComponents(components);
+    auto t4 = TangentFrame(mesh);
+    vtkNew<vtkDoubleArray> tin, win;
+    tin->SetNumberOfComponents(3);
     tin->SetNumberOfTuples(mesh->GetNumberOfPoints());
+    win->SetNumberOfTuples(mesh->GetNumberOfPoints());
     for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
     {
       double t[4];
       t4->GetTuple(i, t);
-      // Every third point mirrored: w = -1 (a mirrored texture there).
-      t[3] = i % 3 == 1 ? -1.0 : 1.0;
       tin->SetTuple(i, t);
+      // Every third point mirrored: w = -1 (a mirrored texture there).
+      win->SetValue(i, i % 3 == 1 ? -1.0 : 1.0);
     }
     mesh->GetPointData()->RemoveArray("Tangents");
-    if (components == 3)
+    mesh->GetPointData()->RemoveArray("TangentHandedness");
+    if (withHandedness)
     {
-      mesh->GetPointData()->SetTangents(tin);
+      vtkSurfaceDetailTangents::SetFrame(mesh->GetPointData(), tin, win);
     }
     else
     {
-      mesh->GetPointData()->AddArray(tin);
+      tin->SetName("VTKTangents");
+      mesh->GetPointData()->SetTangents(tin);
     }
     for (int mode : { vtkDisplacementMapFilter::Approximate, vtkDisplacementMapFilter::Exact,
            vtkDisplacementMapFilter::Mesh })
     {
-      SCOPED_TRACE(std::to_string(components) + " components, mode " + std::to_string(mode));
+      SCOPED_TRACE(std::string(withHandedness ? "with" : "without") + " handedness, mode " +
+        std::to_string(mode));
       auto out = Displace(mesh, image, mode, s.Scale);
-      vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
+      vtkDataArray* t = out->GetPointData()->GetTangents();
       ASSERT_NE(t, nullptr);
-      ASSERT_EQ(t->GetNumberOfComponents(), components);
+      ASSERT_EQ(t->GetNumberOfComponents(), 3);
+      EXPECT_STREQ(t->GetName(), tin->GetName());
+      EXPECT_EQ(
+        t->GetInformation()->Has(vtkSurfaceDetailTangents::WITH_HANDEDNESS()), withHandedness);
+      vtkDataArray* w = vtkSurfaceDetailTangents::GetHandedness(out->GetPointData());
+      EXPECT_EQ(w != nullptr, withHandedness);
       double worst = 0.0, turned = 0.0;
       for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
       {
-        double nn[3], got[4], in[4];
+        double nn[3], got[3], in[3];
         out->GetPointData()->GetNormals()->GetTuple(i, nn);
         t->GetTuple(i, got);
         tin->GetTuple(i, in);
@@ -2643,9 +2656,9 @@ TEST(DisplacementMapFilter, TangentsAreTheInputsOrthogonalised)
         worst = std::max(worst, AngleDeg({ got[0], got[1], got[2] }, expected));
         turned = std::max(turned, AngleDeg(input, expected));
         EXPECT_NEAR(got[0] * got[0] + got[1] * got[1] + got[2] * got[2], 1.0, 1e-12);
-        if (components == 4)
+        if (w)
         {
-          ASSERT_EQ(got[3], in[3]) << i;
+          ASSERT_EQ(w->GetComponent(i, 0), win->GetValue(i)) << i;
         }
       }
       EXPECT_LT(worst, 1e-9);
@@ -2838,7 +2851,7 @@ TEST(DisplacementMapFilter, OutputPointsPrecision)
         : VTK_DOUBLE;
       EXPECT_EQ(out->GetPoints()->GetDataType(), expected) << precision << " " << floatInput;
       EXPECT_EQ(out->GetPointData()->GetNormals()->GetDataType(), expected);
-      EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetDataType(), expected);
+      EXPECT_EQ(out->GetPointData()->GetTangents()->GetDataType(), expected);
       outputs[precision] = vtkSmartPointer<vtkPolyData>::New();
       outputs[precision]->DeepCopy(out);
     }

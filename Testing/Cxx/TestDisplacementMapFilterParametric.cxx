@@ -7,6 +7,7 @@
 // quads and doubles: this checks the two classes together as a user would chain them.
 
 #include "DisplacementTestSurfaces.h"
+#include "TangentFrameTestHelpers.h"
 
 #include "vtkDisplacementMapFilter.h"
 #include "vtkMikkTSpaceTangents.h"
@@ -222,7 +223,8 @@ TEST(DisplacementMapFilterParametric, PiecesWithGhostCellsEqualTheWhole)
         ASSERT_NE(it, index.end());
         owned += !marks || !(marks->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT);
         for (vtkDataArray* a : { out->GetPoints()->GetData(), out->GetPointData()->GetNormals(),
-               out->GetPointData()->GetArray("Tangents") })
+               out->GetPointData()->GetTangents(),
+               out->GetPointData()->GetArray("TangentHandedness") })
         {
           vtkDataArray* b = whole->GetPointData()->GetArray(a->GetName());
           b = b ? b : whole->GetPoints()->GetData();

@@ -133,7 +133,7 @@ vtkDataArray* Normals(vtkPolyData* p)
 }
 vtkDataArray* Tangents(vtkPolyData* p)
 {
-  return p->GetPointData()->GetArray("Tangents");
+  return p->GetPointData()->GetTangents();
 }
 
 // A cell as its corners, rotated to start at the smallest: same cell, same orientation.
@@ -249,13 +249,18 @@ Report Compare(vtkPolyData* serial, const Polys& pieces)
   return r;
 }
 
-// Sends every rank's piece to rank 0.
+// Sends every rank's piece to rank 0. VTK 9.1 sends data objects in its legacy format, whose
+// writer drops the TANGENTS attribute; the tangents travel as a plain array and are made the
+// attribute again on arrival.
 Polys Gather(vtkMultiProcessController* controller, vtkPolyData* mine, int tag)
 {
   Polys all;
   if (controller->GetLocalProcessId() != 0)
   {
-    controller->Send(mine, 0, tag);
+    vtkNew<vtkPolyData> sent;
+    sent->ShallowCopy(mine);
+    sent->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::TANGENTS);
+    controller->Send(sent, 0, tag);
     return all;
   }
   all.push_back(mine);
@@ -263,6 +268,7 @@ Polys Gather(vtkMultiProcessController* controller, vtkPolyData* mine, int tag)
   {
     auto piece = vtkSmartPointer<vtkPolyData>::New();
     controller->Receive(piece, r, tag);
+    piece->GetPointData()->SetActiveAttribute("Tangents", vtkDataSetAttributes::TANGENTS);
     all.push_back(piece);
   }
   return all;

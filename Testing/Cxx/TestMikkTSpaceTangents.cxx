@@ -3,6 +3,7 @@
 // vtkMikkTSpaceTangents: closed-form frames, bad input, degenerate input (stress), kept
 // arrays and cells, thread-count independence.
 #include "MikkTSpaceTestMeshes.h"
+#include "TangentFrameTestHelpers.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -68,11 +69,15 @@ struct FilterRun
 // Every output frame: finite, unit, orthogonal to the (unit) normal, w = +-1.
 void ExpectValidFrames(vtkPolyData* out)
 {
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
-  ASSERT_NE(tangents, nullptr);
-  ASSERT_EQ(tangents->GetNumberOfComponents(), 4);
+  // The frame as vtkSurfaceDetailTangents stores it.
+  vtkDataArray* t3 = out->GetPointData()->GetTangents();
+  ASSERT_NE(t3, nullptr);
+  EXPECT_STREQ(t3->GetName(), "Tangents");
+  EXPECT_EQ(t3->GetNumberOfComponents(), 3);
+  ASSERT_NE(vtkSurfaceDetailTangents::GetHandedness(out->GetPointData()), nullptr);
+  EXPECT_EQ(vtkSurfaceDetailTangents::GetHandednessProblem(out->GetPointData()), "");
+  auto tangents = TangentFrame(out);
   ASSERT_EQ(tangents->GetNumberOfTuples(), out->GetNumberOfPoints());
-  EXPECT_STREQ(tangents->GetName(), "Tangents");
   vtkDataArray* normals = out->GetPointData()->GetNormals();
   ASSERT_NE(normals, nullptr);
   int bad = 0;
@@ -116,7 +121,7 @@ void ExpectAffineFrames(vtkPolyData* out, const double A[2][2])
   const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
   double dPds[3] = { A[1][1] / det, -A[1][0] / det, 0.0 };
   vtkMath::Normalize(dPds);
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
   {
     double t[4];
@@ -269,6 +274,7 @@ TEST(vtkMikkTSpaceTangents, QuadsStripsPolygonsVertsLinesAndCellData)
   {
     EXPECT_EQ(outIds->GetValue(c), expected[c]) << "cell " << c;
   }
+  auto frame = TangentFrame(out);
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
   {
     if (i == lone || i == line[0] || i == line[1])
@@ -276,7 +282,7 @@ TEST(vtkMikkTSpaceTangents, QuadsStripsPolygonsVertsLinesAndCellData)
       continue;
     }
     double t[4];
-    out->GetPointData()->GetArray("Tangents")->GetTuple(i, t);
+    frame->GetTuple(i, t);
     EXPECT_NEAR(t[0], 1.0, 1e-6) << "point " << i;
     EXPECT_EQ(t[3], 1.0) << "point " << i;
   }
@@ -337,17 +343,17 @@ TEST(vtkMikkTSpaceTangents, SplitPointsKeepPointData)
     EXPECT_EQ(a[1], b[1]);
   }
   // The split points are the mirror line's (s = 0), and the two copies differ in w.
+  auto frame = TangentFrame(out);
   for (vtkIdType q = nIn; q < out->GetNumberOfPoints(); ++q)
   {
     const vtkIdType p = outIds->GetValue(q);
     double tc[2], t1[4], t2[4];
     out->GetPointData()->GetTCoords()->GetTuple(q, tc);
     EXPECT_NEAR(tc[0], 0.0, 1e-7);
-    out->GetPointData()->GetArray("Tangents")->GetTuple(p, t1);
-    out->GetPointData()->GetArray("Tangents")->GetTuple(q, t2);
+    frame->GetTuple(p, t1);
+    frame->GetTuple(q, t2);
     EXPECT_EQ(t1[3], -t2[3]);
   }
-  EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetNumberOfComponents(), 4);
   // Every corner of a triangle on the left (x < 0) is left-handed, on the right right-handed.
   vtkNew<vtkIdList> pts;
   for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
@@ -360,8 +366,7 @@ TEST(vtkMikkTSpaceTangents, SplitPointsKeepPointData)
     }
     for (vtkIdType k = 0; k < 3; ++k)
     {
-      EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetComponent(pts->GetId(k), 3),
-        centroidX > 0 ? 1.0 : -1.0);
+      EXPECT_EQ(frame->GetComponent(pts->GetId(k), 3), centroidX > 0 ? 1.0 : -1.0);
     }
   }
 }
@@ -393,16 +398,19 @@ TEST(vtkMikkTSpaceTangents, SameResultAnyThreadCount)
     FilterRun eight(input);
     vtkSMPTools::SetBackend(backend.c_str());
     vtkSMPTools::Initialize(0);
-    auto* t1 = vtkFloatArray::SafeDownCast(one.Output()->GetPointData()->GetArray("Tangents"));
-    ASSERT_NE(t1, nullptr);
     vtkDataArray* c1 = one.Output()->GetPolys()->GetConnectivityArray();
     for (FilterRun* other : { &two, &eight })
     {
-      auto* t = vtkFloatArray::SafeDownCast(other->Output()->GetPointData()->GetArray("Tangents"));
-      ASSERT_NE(t, nullptr);
-      ASSERT_EQ(t1->GetNumberOfValues(), t->GetNumberOfValues());
-      EXPECT_EQ(0,
-        std::memcmp(t1->GetPointer(0), t->GetPointer(0), sizeof(float) * t->GetNumberOfValues()));
+      for (const char* name : { "Tangents", "TangentHandedness" })
+      {
+        auto* t1 = vtkFloatArray::SafeDownCast(one.Output()->GetPointData()->GetArray(name));
+        auto* t = vtkFloatArray::SafeDownCast(other->Output()->GetPointData()->GetArray(name));
+        ASSERT_TRUE(t1 && t) << name;
+        ASSERT_EQ(t1->GetNumberOfValues(), t->GetNumberOfValues());
+        EXPECT_EQ(0,
+          std::memcmp(t1->GetPointer(0), t->GetPointer(0), sizeof(float) * t->GetNumberOfValues()))
+          << name;
+      }
       vtkDataArray* c = other->Output()->GetPolys()->GetConnectivityArray();
       ASSERT_EQ(c1->GetNumberOfValues(), c->GetNumberOfValues());
       for (vtkIdType i = 0; i < c1->GetNumberOfValues(); ++i)
@@ -455,7 +463,7 @@ TEST(vtkMikkTSpaceTangents, AgreesWithParametricSurfaceSource)
     vtkNew<vtkPolyData> surface;
     surface->DeepCopy(source->GetOutput());
     vtkNew<vtkFloatArray> analytic;
-    analytic->DeepCopy(surface->GetPointData()->GetArray("Tangents"));
+    analytic->DeepCopy(TangentFrame(surface));
     ASSERT_EQ(analytic->GetNumberOfComponents(), 4) << c.Name;
 
     FilterRun run(surface);
@@ -463,7 +471,7 @@ TEST(vtkMikkTSpaceTangents, AgreesWithParametricSurfaceSource)
     vtkPolyData* out = run.Output();
     ExpectValidFrames(out);
     ASSERT_EQ(out->GetNumberOfPoints(), surface->GetNumberOfPoints()) << c.Name;
-    vtkDataArray* mikk = out->GetPointData()->GetArray("Tangents");
+    auto mikk = TangentFrame(out);
     double maxDeg = 0.0, maxSeamDeg = 0.0;
     vtkIdType compared = 0, handedness = 0;
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
@@ -674,8 +682,8 @@ TEST(vtkMikkTSpaceTangents, UnnormalisedNormalsGiveTheUnitNormalsFrames)
   }
   FilterRun unit(torus), any(scaled);
   ASSERT_EQ(unit.Output()->GetNumberOfPoints(), any.Output()->GetNumberOfPoints());
-  vtkDataArray* tu = unit.Output()->GetPointData()->GetArray("Tangents");
-  vtkDataArray* ta = any.Output()->GetPointData()->GetArray("Tangents");
+  auto tu = TangentFrame(unit.Output());
+  auto ta = TangentFrame(any.Output());
   for (vtkIdType i = 0; i < tu->GetNumberOfTuples(); ++i)
   {
     double a[4], b[4];

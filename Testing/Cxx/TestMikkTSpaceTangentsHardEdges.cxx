@@ -14,6 +14,7 @@
 // projection onto either face's plane, so a joined vertex would show on both sides.
 
 #include "MikkTSpaceTestMeshes.h"
+#include "TangentFrameTestHelpers.h"
 
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
@@ -137,7 +138,7 @@ double AngleDeg(const Vec& a, const Vec& b)
 void ExpectEachFacesTangent(vtkPolyData* out, const Fold& fold, const std::string& name)
 {
   SCOPED_TRACE(name);
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   vtkDataArray* normals = out->GetPointData()->GetNormals();
   ASSERT_NE(tangents, nullptr);
   ASSERT_NE(normals, nullptr);

@@ -11,6 +11,7 @@
 
 #include "DisplacementTestSurfaces.h"
 #include "NormalMapBakerTestFrames.h"
+#include "TangentFrameTestHelpers.h"
 
 #include "vtkDisplacementMapFilter.h"
 #include "vtkNormalMapBaker.h"
@@ -509,7 +510,7 @@ TEST(NormalMapBaker, MarginAndUnhitTexels)
   }
   coarse->GetPointData()->SetTCoords(tc);
   coarse->GetPointData()->SetNormals(normals);
-  coarse->GetPointData()->AddArray(tangents);
+  SetTangentFrame(coarse, tangents);
   // A detailed square tilted about y, with a hole (no triangles) over x in [0.6, 0.8].
   vtkNew<vtkPolyData> detailed;
   vtkNew<vtkPoints> dp;
@@ -591,7 +592,7 @@ TEST(NormalMapBaker, MissingTangentsAreComputedWithAWarning)
   EXPECT_EQ(obs->Errors, 0);
   EXPECT_GE(obs->Warnings, 1);
   EXPECT_NE(obs->Messages.find("vtkMikkTSpaceTangents"), std::string::npos);
-  EXPECT_EQ(bare->GetPointData()->GetArray("Tangents"), nullptr); // input untouched
+  EXPECT_EQ(bare->GetPointData()->GetTangents(), nullptr); // input untouched
   EXPECT_EQ(baker->GetNumberOfCoveredTexels(), 32 * 32);
 }
 

@@ -7,6 +7,8 @@
 // differences of the closed-form lambdas, never the classes' own derivative code.
 
 #include "ParametricSurfaceTestHelpers.h"
+#include "TangentFrameTestHelpers.h"
+#include "vtkInformation.h"
 
 #include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
@@ -181,21 +183,28 @@ int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expecta
   vtkPointData* pd = out->GetPointData();
   vtkDataArray* normals = pd->GetNormals();
   vtkDataArray* tcoords = pd->GetTCoords();
-  vtkDataArray* tangents = pd->GetArray("Tangents");
+  vtkDataArray* tangents = pd->GetTangents();
+  vtkDataArray* handedness = pd->GetArray("TangentHandedness");
   vtkDataArray* dPdu = pd->GetArray("dPdu");
   vtkDataArray* dPdv = pd->GetArray("dPdv");
   vtkDataArray* dNdu = pd->GetArray("dNdu");
   vtkDataArray* dNdv = pd->GetArray("dNdv");
-  EXPECT_TRUE(normals && tcoords && tangents && dPdu && dPdv && dNdu && dNdv);
-  if (!(normals && tcoords && tangents && dPdu && dPdv && dNdu && dNdv))
+  EXPECT_TRUE(normals && tcoords && tangents && handedness && dPdu && dPdv && dNdu && dNdv);
+  if (!(normals && tcoords && tangents && handedness && dPdu && dPdv && dNdu && dNdv))
   {
     return 0;
   }
   EXPECT_STREQ(normals->GetName(), "Normals");
   EXPECT_STREQ(tcoords->GetName(), "TCoords");
+  // The frame as vtkSurfaceDetailTangents stores it: VTK's 3-component tangent attribute,
+  // marked as written with the 1-component handedness beside it.
   EXPECT_STREQ(tangents->GetName(), "Tangents");
-  EXPECT_EQ(tangents->GetNumberOfComponents(), 4);
+  EXPECT_EQ(tangents->GetNumberOfComponents(), 3);
   EXPECT_EQ(tangents->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(tangents->GetInformation()->Get(vtkSurfaceDetailTangents::WITH_HANDEDNESS()), 1);
+  EXPECT_EQ(handedness->GetNumberOfComponents(), 1);
+  EXPECT_EQ(handedness->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(vtkSurfaceDetailTangents::GetHandednessProblem(pd), "");
 
   double worstPos = 0, worstN = 0, worstT = 0, worstD = 0, worstDN = 0;
   int checked = 0, handednessWrong = 0, tcoordWrong = 0;
@@ -229,7 +238,7 @@ int CheckAgainstClosedForm(vtkParametricFunction* f, int U, int V, const Expecta
       const Vec tan = Unit(Sub(dPds, Scale(n, DotV(n, dPds))));
       worstT = std::max(worstT, Angle(Tuple(tangents, id), tan));
       const double w = DotV(CrossV(n, tan), dPdt) < 0 ? -1.0 : 1.0;
-      handednessWrong += tangents->GetComponent(id, 3) != w;
+      handednessWrong += handedness->GetComponent(id, 0) != w;
       // dN/du has the size of |Pu| times a curvature: relative to |Pu| / Length. On a join
       // where the surface is only C1 the normal has two one-sided derivatives: not compared.
       const double dnScale = (Norm(pu) + Norm(pv)) / e.Length;
@@ -306,7 +315,7 @@ TEST(ParametricSurfaceAccuracy, SpherePolesTakeTheLimit)
   e.Surface = SeedSphere(1);
   vtkSmartPointer<vtkPolyData> out = Generate(sphere, U, V, e);
   vtkDataArray* normals = out->GetPointData()->GetNormals();
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   for (int i = 0; i <= U; ++i)
   {
     const double theta = 2 * Pi * i / U;
@@ -373,7 +382,7 @@ TEST(ParametricSurfaceAccuracy, RectangleMatchesSeed004)
   e.PositionTolerance = 1e-15;
   EXPECT_EQ(CheckAgainstClosedForm(rect, 4, 4, e), 25);
   out = Generate(rect, 4, 4, e);
-  EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetComponent(0, 3), -1.0);
+  EXPECT_EQ(out->GetPointData()->GetArray("TangentHandedness")->GetComponent(0, 0), -1.0);
 }
 
 TEST(ParametricSurfaceAccuracy, DonutMatchesSeed000)
@@ -399,7 +408,7 @@ TEST(ParametricSurfaceAccuracy, DonutMatchesSeed000)
     const Vec centre = { 2 * p[0] / rho, 2 * p[1] / rho, 0 };
     EXPECT_GT(DotV(Tuple(out->GetPointData()->GetNormals(), id), Sub(p, centre)), 0.49);
     // Seed 000's texture reads the right way round: w = +1 everywhere.
-    EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetComponent(id, 3), 1.0);
+    EXPECT_EQ(out->GetPointData()->GetArray("TangentHandedness")->GetComponent(id, 0), 1.0);
   }
   // The unit normal is (cos b cos a, cos b sin a, sin b) with a = 2 pi u, b = 2 pi v, so
   // dN/du = 2 pi cos b (-sin a, cos a, 0) and dN/dv = 2 pi (-sin b cos a, -sin b sin a, cos b).
@@ -446,7 +455,7 @@ TEST(ParametricSurfaceAccuracy, VTKTorusIsOutwardAndMirrored)
     const Vec centre = { 1.5 * p[0] / rho, 1.5 * p[1] / rho, 0 };
     EXPECT_GT(DotV(Tuple(out->GetPointData()->GetNormals(), id), Sub(p, centre)), 0.49);
     // The texture is mirrored on VTK's torus: the frame is left-handed.
-    EXPECT_EQ(out->GetPointData()->GetArray("Tangents")->GetComponent(id, 3), -1.0);
+    EXPECT_EQ(out->GetPointData()->GetArray("TangentHandedness")->GetComponent(id, 0), -1.0);
   }
   // Triangles wind counter-clockwise around the outward normal.
   vtkIdType npts;
@@ -548,7 +557,7 @@ TEST(ParametricSurfaceAccuracy, VTKKleinBottleIsFiniteAndUnit)
   Expectation e;
   vtkSmartPointer<vtkPolyData> out = Generate(klein, 40, 40, e);
   vtkDataArray* n = out->GetPointData()->GetNormals();
-  vtkDataArray* t = out->GetPointData()->GetArray("Tangents");
+  auto t = TangentFrame(out);
   for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
   {
     EXPECT_NEAR(Norm(Tuple(n, id)), 1.0, 1e-6);
@@ -568,8 +577,8 @@ TEST(ParametricSurfaceAccuracy, OnlyRequestedArrays)
   EXPECT_EQ(source->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
   source->GenerateTangentsOn();
   source->Update();
-  EXPECT_EQ(source->GetOutput()->GetPointData()->GetNumberOfArrays(), 1);
-  EXPECT_NE(source->GetOutput()->GetPointData()->GetArray("Tangents"), nullptr);
+  EXPECT_EQ(source->GetOutput()->GetPointData()->GetNumberOfArrays(), 2); // tangents and handedness
+  EXPECT_NE(source->GetOutput()->GetPointData()->GetTangents(), nullptr);
   // Changing the function re-executes the source.
   const double before = source->GetOutput()->GetPoints()->GetData()->GetComponent(0, 1);
   sphere->SetRadius(3);
@@ -776,7 +785,7 @@ TEST(ParametricSurfaceAccuracy, VaseMatchesSeed004Revolution)
   EXPECT_EQ(CheckAgainstClosedForm(vase, U, V, e), (U + 1) * V); // all but the base
   vtkSmartPointer<vtkPolyData> out = Generate(vase, U, V, e);
   vtkDataArray* normals = out->GetPointData()->GetNormals();
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   for (int i = 0; i <= U; ++i)
   {
     // The base touches the axis at v = 0: the normal there is straight down, and the tangent
@@ -922,7 +931,7 @@ TEST(ParametricSurfaceAccuracy, ConeApexTakesEachColumnsLimit)
       const Vec t = { -std::sin(theta), 0, -std::cos(theta) };
       const double tolerance = j == V ? 1e-4 : 1e-6;
       EXPECT_LT(Angle(Tuple(out->GetPointData()->GetNormals(), id), n), tolerance) << id;
-      EXPECT_LT(Angle(Tuple(out->GetPointData()->GetArray("Tangents"), id), t), tolerance) << id;
+      EXPECT_LT(Angle(Tuple(out->GetPointData()->GetTangents(), id), t), tolerance) << id;
     }
   }
 }

@@ -5,6 +5,7 @@
 // and sweeps over degenerate and extreme surfaces give finite unit frames (or an error).
 
 #include "ParametricSurfaceTestHelpers.h"
+#include "TangentFrameTestHelpers.h"
 
 #include <vtkBezierProfile.h>
 #include <vtkCellArray.h>
@@ -99,7 +100,7 @@ int CountBadFrames(vtkPolyData* out, double unitTolerance = 1e-5)
     }
   }
   vtkDataArray* normals = pd->GetNormals();
-  vtkDataArray* tangents = pd->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
   {
     double n[3], t[4];
@@ -222,7 +223,8 @@ TEST(ParametricSurfaceSource, PiecesTogetherAreTheSerialSurface)
         ASSERT_NE(it, index.end());
         toSerial[id] = it->second;
         // Every array of a piece's point is bit-identical to the serial one.
-        for (const char* name : { "Normals", "TCoords", "Tangents", "dPdu", "dPdv" })
+        for (const char* name :
+          { "Normals", "TCoords", "Tangents", "TangentHandedness", "dPdu", "dPdv" })
         {
           vtkDataArray* a = out->GetPointData()->GetArray(name);
           vtkDataArray* b = serial->GetPointData()->GetArray(name);
@@ -358,7 +360,7 @@ TEST(ParametricSurfaceSource, ThreadCountDoesNotChangeTheResult)
   vtkPolyData* a = results[0];
   vtkPolyData* b = results[1];
   EXPECT_TRUE(SameArrays(a->GetPoints()->GetData(), b->GetPoints()->GetData()));
-  for (const char* name : { "Normals", "TCoords", "Tangents", "dPdu", "dPdv" })
+  for (const char* name : { "Normals", "TCoords", "Tangents", "TangentHandedness", "dPdu", "dPdv" })
   {
     EXPECT_TRUE(SameArrays(a->GetPointData()->GetArray(name), b->GetPointData()->GetArray(name)))
       << name;
@@ -853,7 +855,7 @@ TEST(ParametricSurfaceSource, BigFloatOutputIsTheClosedFormAtAnySplit)
   vtkPolyData* whole = wholes[0];
   ASSERT_EQ(whole->GetNumberOfPoints(), rowLength * (V + 1));
   ASSERT_NE(vtkFloatArray::SafeDownCast(whole->GetPoints()->GetData()), nullptr);
-  const char* names[] = { "Normals", "TCoords", "Tangents" };
+  const char* names[] = { "Normals", "TCoords", "Tangents", "TangentHandedness" };
 
   // One thread or two: the same bytes.
   EXPECT_TRUE(SameArrays(whole->GetPoints()->GetData(), wholes[1]->GetPoints()->GetData()));

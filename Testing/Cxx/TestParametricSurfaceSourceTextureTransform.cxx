@@ -10,6 +10,7 @@
 //   output mesh itself (each triangle's dP/ds and dP/dt from its positions and texture
 //   coordinates), which knows nothing of the source's parameters.
 
+#include "TangentFrameTestHelpers.h"
 #include "vtkParametricSphere.h"
 #include "vtkParametricSurfaceSource.h"
 
@@ -174,7 +175,7 @@ TEST(ParametricSurfaceSourceTextureTransform, TangentIsDPdsOfTheClosedForm)
   {
     SCOPED_TRACE(Describe(tt));
     vtkSmartPointer<vtkPolyData> out = Sphere(tt, false);
-    vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+    auto tangents = TangentFrame(out);
     vtkDataArray* normals = out->GetPointData()->GetNormals();
     ASSERT_NE(tangents, nullptr);
     ASSERT_EQ(tangents->GetNumberOfComponents(), 4);
@@ -215,7 +216,7 @@ TEST(ParametricSurfaceSourceTextureTransform, TangentFollowsTheMeshesOwnDPds)
   {
     SCOPED_TRACE(Describe(tt));
     vtkSmartPointer<vtkPolyData> out = Sphere(tt, false);
-    vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+    auto tangents = TangentFrame(out);
     vtkDataArray* normals = out->GetPointData()->GetNormals();
     vtkDataArray* tc = out->GetPointData()->GetTCoords();
     vtkNew<vtkIdList> ids;

@@ -10,6 +10,7 @@
 // Images must match with PSNR >= 40 dB; each test also shows that a plausible mistake
 // (ignoring handedness, the wrong green direction, no transform, no parallax) is caught.
 
+#include "TangentFrameTestHelpers.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
@@ -17,6 +18,7 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageAlgorithm.h>
 #include <vtkImageData.h>
@@ -32,6 +34,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataTangents.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -142,7 +145,7 @@ vtkSmartPointer<vtkPolyData> MakeRectangle(
   }
   if (tangents)
   {
-    poly->GetPointData()->AddArray(tg);
+    SetTangentFrame(poly, tg);
   }
   return poly;
 }
@@ -508,6 +511,79 @@ TEST(vtkSurfaceDetailMapper, NormalMapMirroredUsesHandedness)
     return Vec3{ -n[0], -n[1], n[2] };
   };
   EXPECT_LT(PSNR(image, scene.Actor, ignoringW, scene.Mat), 30.0);
+}
+
+// Double tangents (which VTK 9.1 does not upload itself) shade as float ones do.
+TEST(vtkSurfaceDetailMapper, NormalMapDoubleTangents)
+{
+  auto poly = MakeRectangle(true);
+  vtkNew<vtkDoubleArray> tangents;
+  tangents->DeepCopy(poly->GetPointData()->GetTangents());
+  poly->GetPointData()->SetTangents(tangents);
+  auto mapper = MakeMapper(poly);
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  Scene scene(mapper);
+  EXPECT_GE(PSNR(scene.Render(), scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+}
+
+// VTK's own normal mapping (vtkProperty::SetNormalTexture) reads SurfaceDetail's tangents,
+// since they are the TANGENTS attribute: on the unmirrored rectangle it draws what our
+// NormalMapping draws. It ignores the handedness, so on the mirrored one it shows the bumps
+// lit from the wrong side, which our mapper does not.
+TEST(vtkSurfaceDetailMapper, VTKNormalTextureReadsTheTangents)
+{
+  for (bool mirrored : { false, true })
+  {
+    SCOPED_TRACE(mirrored ? "mirrored" : "not mirrored");
+    vtkNew<vtkOpenGLPolyDataMapper> plain;
+    plain->SetInputData(MakeRectangle(mirrored));
+    Scene scene(plain);
+    scene.Actor->GetProperty()->SetInterpolationToPhong();
+    scene.Actor->GetProperty()->SetNormalTexture(MakeNormalMap());
+    const auto image = scene.Render();
+    NormalField ignoringW = [](double x, double y)
+    {
+      const Vec3 n = TangentSpaceNormal((1.0 - x) / 2, (y + 1) / 2);
+      return Vec3{ -n[0], -n[1], n[2] };
+    };
+    EXPECT_GE(
+      PSNR(image, scene.Actor, mirrored ? ignoringW : DetailNormal(false), scene.Mat), 40.0);
+    // Without the tangents VTK draws no detail: the picture shows that it read them.
+    EXPECT_LT(PSNR(image, scene.Actor, FlatNormal(), scene.Mat), 30.0);
+  }
+}
+
+// vtkPolyDataTangents replaces the tangents and leaves the handedness beside them: the mapper
+// warns once and still shades the mirrored rectangle right (its tangents follow dP/ds, as
+// ours). Dropping the handedness is warned about too, and then w = +1 as VTK takes it.
+TEST(vtkSurfaceDetailMapper, ReplacedTangentsWarnOnce)
+{
+  vtkNew<vtkPolyDataTangents> vtkTangents;
+  vtkTangents->SetInputData(MakeRectangle(true));
+  vtkTangents->Update();
+  auto replaced = vtkSmartPointer<vtkPolyData>::New();
+  replaced->ShallowCopy(vtkTangents->GetOutput());
+  auto mapper = MakeMapper(replaced);
+  mapper->SetTechniqueToNormalMapping();
+  mapper->SetNormalMap(MakeNormalMap());
+  vtkNew<ErrorCounter> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  mapper->AddObserver(vtkCommand::WarningEvent, errors);
+  Scene scene(mapper);
+  const auto image = scene.Render();
+  scene.Render();
+  EXPECT_EQ(errors->Warnings, 1) << errors->Last;
+  EXPECT_EQ(errors->Errors, 0);
+  EXPECT_NE(errors->Last.find("vtkPolyDataTangents"), std::string::npos) << errors->Last;
+  EXPECT_GE(PSNR(image, scene.Actor, DetailNormal(true), scene.Mat), 40.0);
+
+  auto dropped = MakeRectangle(true);
+  dropped->GetPointData()->RemoveArray("TangentHandedness");
+  mapper->SetInputData(dropped);
+  scene.Render();
+  EXPECT_EQ(errors->Warnings, 2) << errors->Last;
+  EXPECT_NE(errors->Last.find("gone"), std::string::npos) << errors->Last;
 }
 
 // Three-component tangents, set as the point data's active tangents, are taken with w = +1.

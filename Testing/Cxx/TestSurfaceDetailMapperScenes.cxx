@@ -22,6 +22,7 @@
 #include "BrickTextures.h"
 #include "SurfaceDetailImageComparison.h"
 #include "vtkSurfaceDetailMapper.h"
+#include "vtkSurfaceDetailTangents.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -170,10 +171,10 @@ int main(int argc, char* argv[])
   source->Update();
   if (mutation == "flipped-handedness")
   {
-    vtkDataArray* tangents = source->GetOutput()->GetPointData()->GetArray("Tangents");
-    for (vtkIdType id = 0; id < tangents->GetNumberOfTuples(); ++id)
+    vtkDataArray* w = vtkSurfaceDetailTangents::GetHandedness(source->GetOutput()->GetPointData());
+    for (vtkIdType id = 0; id < w->GetNumberOfTuples(); ++id)
     {
-      tangents->SetComponent(id, 3, -tangents->GetComponent(id, 3));
+      w->SetComponent(id, 0, -w->GetComponent(id, 0));
     }
   }
   if (mutation == "half-scale")

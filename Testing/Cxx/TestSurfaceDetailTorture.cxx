@@ -6,6 +6,7 @@
 // w = +-1, and the inputs untouched. The cases are drawn from a seeded generator; the seed is
 // printed with every failure, and SURFACEDETAIL_TORTURE_SEED=<n> replays one run.
 
+#include "TangentFrameTestHelpers.h"
 #include <vtkBezierProfile.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -89,7 +90,7 @@ std::vector<unsigned char> Bytes(vtkDataArray* array)
   return std::vector<unsigned char>(p, p + array->GetNumberOfValues() * array->GetDataTypeSize());
 }
 
-// The soundness of a surface with point normals and (optionally) 4-component tangents.
+// The soundness of a surface with point normals and (optionally) tangent frames.
 // Returns a description of the first defect, or an empty string.
 std::string Defect(vtkPolyData* out)
 {
@@ -99,7 +100,7 @@ std::string Defect(vtkPolyData* out)
     return out->GetNumberOfCells() ? "cells without points" : "";
   }
   vtkDataArray* normals = out->GetPointData()->GetNormals();
-  vtkDataArray* tangents = out->GetPointData()->GetArray("Tangents");
+  auto tangents = TangentFrame(out);
   for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
   {
     double p[3];

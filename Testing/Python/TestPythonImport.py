@@ -82,9 +82,14 @@ torus = source.GetOutput()
 check(isinstance(torus, vtkPolyData), "the source's output is not a vtkPolyData")
 check(torus.GetNumberOfPoints() == 17 * 9, "the torus has %d points, not 17 x 9"
       % torus.GetNumberOfPoints())
-tangents = torus.GetPointData().GetArray("Tangents")
-check(tangents is not None and tangents.GetNumberOfComponents() == 4,
-      "the torus has no 4-component Tangents")
+tangents = torus.GetPointData().GetTangents()
+check(tangents is not None and tangents.GetNumberOfComponents() == 3,
+      "the torus has no 3-component TANGENTS attribute")
+handedness = surfacedetail.vtkSurfaceDetailTangents.GetHandedness(torus.GetPointData())
+check(handedness is not None and handedness.GetName() == "TangentHandedness",
+      "the torus has no TangentHandedness array")
+check(tangents.GetInformation().Get(surfacedetail.vtkSurfaceDetailTangents.WITH_HANDEDNESS())
+      == 1, "the torus's tangents are not marked WITH_HANDEDNESS")
 check(triangles.GetOutput().GetNumberOfCells() == torus.GetNumberOfCells(),
       "VTK's vtkTriangleFilter did not take the source's triangles")
 
@@ -139,9 +144,9 @@ textured = vtkTexturedSphereSource()
 mikk = surfacedetail.vtkMikkTSpaceTangents()
 mikk.SetInputConnection(textured.GetOutputPort())
 mikk.Update()
-frames = mikk.GetOutput().GetPointData().GetArray("Tangents")
-check(frames is not None and frames.GetNumberOfComponents() == 4,
-      "vtkMikkTSpaceTangents gave no 4-component Tangents on vtkTexturedSphereSource")
+frames = mikk.GetOutput().GetPointData()
+check(frames.GetTangents() is not None and frames.GetArray("TangentHandedness") is not None,
+      "vtkMikkTSpaceTangents gave no tangent frame on vtkTexturedSphereSource")
 
 # The OpenImageIO reader and writer beside VTK's PNG reader.
 reader = surfacedetail.vtkOIIOImageReader()
