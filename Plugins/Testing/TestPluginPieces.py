@@ -7,7 +7,8 @@
 rank, writes the pieces beside it and compares them on rank 0 with that file: the same number
 of cells and the same bounds, and at every point (matched by its texture coordinates, which are
 unique on the surface) the same position, normal, tangent and handedness. A point that two
-pieces share must agree in both (no crack)."""
+pieces share must agree in both (no crack). `pvbatch TestPluginPieces.py <plugin> reference
+<file.pvtp> <cxx.vtp>` compares the same way the C++ filters' surface with the plugin's."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
@@ -15,6 +16,12 @@ from vtkmodules.vtkIOXML import vtkXMLPPolyDataReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 plugin, mode, path = sys.argv[1:4]
+if mode == "reference":
+    # The plugin's serial surface against the C++ filters' own (PluginReferenceSurface).
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reference = vtkXMLPolyDataReader()
+    reference.SetFileName(sys.argv[4])
+    reference.Update()
 LoadPlugin(plugin, remote=False, ns=globals())
 
 surface = ParametricSurface(ParametricFunction="Donut")
@@ -31,7 +38,8 @@ tangents = MikkTSpaceTangents(Input=displaced)
 # it). ASCII: this VTK 9.2 could not read back its own appended binary file of this surface.
 controller = vtkMultiProcessController.GetGlobalController()
 pieces = path.replace(".pvtp", "-%d-ranks.pvtp" % controller.GetNumberOfProcesses())
-SaveData(path if mode == "write" else pieces, proxy=tangents, DataMode="Ascii")
+if mode != "reference":
+    SaveData(path if mode == "write" else pieces, proxy=tangents, DataMode="Ascii")
 if controller.GetLocalProcessId() != 0:
     sys.exit(0)
 if mode == "write":
@@ -47,7 +55,7 @@ def read(name):
 
 
 serial = read(path)
-gathered = read(pieces)
+gathered = reference.GetOutput() if mode == "reference" else read(pieces)
 
 
 def values(poly, i):
@@ -94,6 +102,10 @@ for i in points:
 if len(seen) != serial.GetNumberOfPoints():
     failures.append("%d of %d serial points in the pieces" % (len(seen),
                                                               serial.GetNumberOfPoints()))
+names = [set(p.GetPointData().GetArrayName(a) for a in range(p.GetPointData().GetNumberOfArrays()))
+         - {"vtkGhostType"} for p in (gathered, serial)]
+if names[0] != names[1]:
+    failures.append("point arrays %s, serial %s" % (sorted(names[0]), sorted(names[1])))
 bounds = [abs(a - b) for a, b in zip(gathered.GetBounds(), serial.GetBounds())]
 if max(bounds) > 1e-6:
     failures.append("bounds differ by %g" % max(bounds))
@@ -104,4 +116,5 @@ print("%d points gathered (%d serial), largest difference %g"
 for f in failures:
     print("MISMATCH: " + f)
 if not failures:
-    print("pieces match the serial surface")
+    print("the C++ filters' surface matches the plugin's" if mode == "reference"
+          else "pieces match the serial surface")
