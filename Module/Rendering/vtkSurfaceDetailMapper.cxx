@@ -343,12 +343,11 @@ void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
     technique = Plain;
   }
   this->ActiveTechnique = technique;
-  vtkDataArray* handedness = nullptr;
   if (technique != Plain)
   {
     this->ActiveUsesTangents = usesTangents;
-    handedness = usesTangents ? vtkSurfaceDetailTangents::GetHandedness(pd) : nullptr;
-    this->ActiveUsesHandedness = handedness != nullptr;
+    this->ActiveUsesHandedness =
+      usesTangents && vtkSurfaceDetailTangents::GetHandedness(pd) != nullptr;
     this->ActiveUsesNormalMap = usesNormalMap;
     this->ActiveUsesHeightMap = usesHeightMap;
     this->ActiveUsesReliefMap = usesReliefMap;

@@ -76,8 +76,13 @@ void vtkSurfaceDetailTangents::SetFrameFromXYZW(vtkPointData* pd, vtkDataArray* 
 //------------------------------------------------------------------------------
 vtkDataArray* vtkSurfaceDetailTangents::GetHandedness(vtkPointData* pd)
 {
+  // An array of another shape, or of another length than the tangents, is not their
+  // handedness: readers index it by the tangents' point ids.
   vtkDataArray* w = pd ? pd->GetArray(GetHandednessArrayName()) : nullptr;
-  return w && w->GetNumberOfComponents() == 1 ? w : nullptr;
+  vtkDataArray* t = pd ? pd->GetTangents() : nullptr;
+  const bool matches = w && w->GetNumberOfComponents() == 1 &&
+    (!t || t->GetNumberOfTuples() == w->GetNumberOfTuples());
+  return matches ? w : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -93,10 +98,10 @@ std::string vtkSurfaceDetailTangents::GetHandednessProblem(vtkPointData* pd)
   const bool hasHandedness = GetHandedness(pd) != nullptr;
   if (marked && !hasHandedness)
   {
-    return "The tangents were written with a \"TangentHandedness\" array that is gone (a filter "
-           "removed it); the bitangents are taken as cross(N, T), which is wrong where the "
-           "texture coordinates are mirrored. Keep that array, or make the tangents again "
-           "(vtkMikkTSpaceTangents) after the filter.";
+    return "The tangents were written with a \"TangentHandedness\" array that is gone or no "
+           "longer matches them (a filter removed or changed it); the bitangents are taken as "
+           "cross(N, T), which is wrong where the texture coordinates are mirrored. Keep that "
+           "array, or make the tangents again (vtkMikkTSpaceTangents) after the filter.";
   }
   if (!marked && hasHandedness)
   {

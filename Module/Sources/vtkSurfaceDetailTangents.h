@@ -69,7 +69,10 @@ public:
    */
   static void SetFrameFromXYZW(vtkPointData* pd, vtkDataArray* frame);
 
-  /** The handedness array of @a pd (1 component), or null when it has none. */
+  /**
+   * The handedness array of @a pd, or null when it has none that fits: 1 component and as
+   * many tuples as the TANGENTS attribute.
+   */
   static vtkDataArray* GetHandedness(vtkPointData* pd);
 
   /**

@@ -242,8 +242,8 @@ TEST(vtkSurfaceDetailTangents, ReplacedTangentsAreAProblem)
   EXPECT_EQ(none->Count, 0) << none->Last;
 }
 
-// A filter that keeps only some arrays can drop the handedness of marked tangents; VTK's
-// own tangents (no mark, no handedness) are no problem.
+// A filter that keeps only some arrays can drop the handedness of marked tangents, or leave
+// one that no longer fits them; VTK's own tangents (no mark, no handedness) are no problem.
 TEST(vtkSurfaceDetailTangents, DroppedHandednessIsAProblem)
 {
   auto sphere = Sphere(true);
@@ -258,6 +258,27 @@ TEST(vtkSurfaceDetailTangents, DroppedHandednessIsAProblem)
   EXPECT_EQ(vtkSurfaceDetailTangents::GetHandedness(pd), nullptr);
   const std::string problem = vtkSurfaceDetailTangents::GetHandednessProblem(pd);
   EXPECT_NE(problem.find("gone"), std::string::npos) << problem;
+
+  // A handedness array that no longer fits the tangents (here one value short) is not read:
+  // readers index it by point id.
+  vtkNew<vtkPolyData> shortened;
+  shortened->DeepCopy(sphere);
+  shortened->GetPointData()
+    ->GetArray("TangentHandedness")
+    ->SetNumberOfTuples(sphere->GetNumberOfPoints() - 1);
+  EXPECT_EQ(vtkSurfaceDetailTangents::GetHandedness(shortened->GetPointData()), nullptr);
+  EXPECT_NE(vtkSurfaceDetailTangents::GetHandednessProblem(shortened->GetPointData())
+              .find("no longer matches"),
+    std::string::npos);
+  vtkNew<vtkNormalMapBaker> baker;
+  baker->SetInputData(0, shortened);
+  baker->SetInputData(1, sphere);
+  baker->SetTextureSize(16, 16);
+  vtkNew<WarningCounter> warnings;
+  baker->AddObserver(vtkCommand::WarningEvent, warnings);
+  baker->Update();
+  EXPECT_EQ(warnings->Count, 1) << warnings->Last;
+  EXPECT_GT(baker->GetOutput()->GetNumberOfPoints(), 0);
 
   vtkNew<vtkPolyData> plain;
   plain->ShallowCopy(sphere);
