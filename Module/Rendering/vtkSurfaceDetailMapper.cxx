@@ -3,94 +3,28 @@
 #include "vtkSurfaceDetailMapper.h"
 
 #include "vtkActor.h"
-#include "vtkAlgorithm.h"
-#include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataArray.h"
 #include "vtkDataObject.h"
-#include "vtkImageData.h"
-#include "vtkMatrix3x3.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLTexture.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtkShader.h"
 #include "vtkShaderProgram.h"
+#include "vtkSurfaceDetailShading.h"
 #include "vtkTexture.h"
-#include "vtkTextureObject.h"
-
-#include "vtkSurfaceDetailBumpFS.h"
-#include "vtkSurfaceDetailConventions.h"
-#include "vtkSurfaceDetailNormalCoding.h"
-#include "vtkSurfaceDetailNormalMapFS.h"
-#include "vtkSurfaceDetailParallaxFS.h"
-#include "vtkSurfaceDetailReliefDepthFS.h"
-#include "vtkSurfaceDetailReliefFS.h"
-#include "vtkSurfaceDetailReliefShadowFS.h"
-#include "vtkSurfaceDetailTangentFrameFS.h"
-#include "vtkSurfaceDetailTangents.h"
 
 #include <algorithm>
-#include <cmath>
-#include <regex>
-#include <sstream>
-#include <vector>
 
 vtkStandardNewMacro(vtkSurfaceDetailMapper);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, NormalMap, vtkTexture);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, HeightMap, vtkTexture);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, ReliefMap, vtkTexture);
 
-namespace
+//------------------------------------------------------------------------------
+vtkSurfaceDetailMapper::vtkSurfaceDetailMapper()
+  : Shading(new vtkSurfaceDetailShading(this))
 {
-// Our tags sit just before VTK's, so VTK's tags stay where the superclass expects them.
-const char* const DecTag = "//VTK::SurfaceDetail::Dec";
-const char* const VSImplTag = "//VTK::SurfaceDetail::Impl";
-const char* const TCoordImplTag = "//VTK::SurfaceDetail::TCoord::Impl";
-const char* const NormalImplTag = "//VTK::SurfaceDetail::Normal::Impl";
-// VTK 9.1 uploads float tangents as its own tangentMC but not double ones, so the mapper
-// maps them itself, by name, whatever their type.
-const char* const TangentAttribute = "sdTangentMC";
-const char* const HandednessAttribute = "sdHandednessMC";
-
-// The image behind a texture, brought up to date; nullptr if there is none. On a pipeline
-// where nothing changed, UpdateWholeExtent only walks the pipeline MTimes and sends no
-// request to any algorithm (HeightProducerUpdatedOnlyWhenChanged counts them), the same
-// per-frame update vtkTexture::Render does; a check of our own would repeat that walk.
-vtkImageData* TextureImage(vtkTexture* texture)
-{
-  if (!texture)
-  {
-    return nullptr;
-  }
-  if (vtkAlgorithm* producer = texture->GetInputAlgorithm())
-  {
-    producer->UpdateWholeExtent();
-  }
-  return texture->GetInput();
-}
-
-// vtkOpenGLTexture passes unsigned char colours through as they are and, with direct
-// scalars, floats too; other types go through a lookup table or are read as 0-255.
-bool NormalMapTypeReadable(vtkDataArray* scalars, vtkTexture* texture)
-{
-  const int type = scalars->GetDataType();
-  return type == VTK_UNSIGNED_CHAR ||
-    (type == VTK_FLOAT && texture->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS);
-}
-
-int TextureUnit(vtkTexture* texture)
-{
-  auto* glTexture = vtkOpenGLTexture::SafeDownCast(texture);
-  return glTexture ? glTexture->GetTextureUnit() : -1;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -174,203 +108,13 @@ vtkMTimeType vtkSurfaceDetailMapper::GetMTime()
 //------------------------------------------------------------------------------
 const char* vtkSurfaceDetailMapper::GetTechniqueAsString()
 {
-  return TechniqueName(this->Technique);
+  return vtkSurfaceDetailShading::TechniqueName(this->Technique);
 }
 
 //------------------------------------------------------------------------------
-const char* vtkSurfaceDetailMapper::TechniqueName(int technique)
+int vtkSurfaceDetailMapper::GetActiveTechnique()
 {
-  switch (technique)
-  {
-    case Plain:
-      return "Plain";
-    case NormalMapping:
-      return "NormalMapping";
-    case BumpMapping:
-      return "BumpMapping";
-    case ParallaxMapping:
-      return "ParallaxMapping";
-    case ReliefMapping:
-      return "ReliefMapping";
-    default:
-      return "Unknown";
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkSurfaceDetailMapper::ResolveTechnique(vtkActor* act)
-{
-  this->ActiveTechnique = Plain;
-  this->ActiveUsesTangents = false;
-  this->ActiveUsesHandedness = false;
-  this->ActiveUsesNormalMap = false;
-  this->ActiveUsesHeightMap = false;
-  this->ActiveUsesReliefMap = false;
-
-  int technique = this->Technique;
-  std::string problem;
-  // Relief reads its relief map if it has one, else the height map (with the normal map if
-  // one is set); parallax reads the height map and, if set, the normal map.
-  const bool usesReliefMap = technique == ReliefMapping && this->ReliefMap != nullptr;
-  const bool heightRelief = technique == ReliefMapping && !usesReliefMap;
-  const bool usesNormalMap = technique == NormalMapping ||
-    ((technique == ParallaxMapping || heightRelief) && this->NormalMap != nullptr);
-  const bool usesHeightMap =
-    technique == BumpMapping || technique == ParallaxMapping || heightRelief;
-  const bool usesTangents =
-    usesNormalMap || usesReliefMap || (technique == BumpMapping && !this->TangentFree);
-
-  vtkPolyData* input = this->CurrentInput;
-  vtkPointData* pd = input ? input->GetPointData() : nullptr;
-  if (technique != Plain && pd)
-  {
-    vtkDataArray* tangents = pd->GetTangents();
-    vtkDataArray* tcoords = pd->GetTCoords();
-    vtkImageData* normalImage = usesNormalMap ? TextureImage(this->NormalMap) : nullptr;
-    vtkImageData* heightImage = usesHeightMap ? TextureImage(this->HeightMap) : nullptr;
-    vtkImageData* reliefImage = usesReliefMap ? TextureImage(this->ReliefMap) : nullptr;
-    vtkDataArray* reliefScalars = reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
-    std::ostringstream err;
-    double heightScale = 1.0;
-    const char* name = TechniqueName(technique);
-    if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
-    {
-      err << name << " needs smooth shading; the actor's property has flat interpolation. "
-          << "Use SetInterpolationToGouraud() or SetInterpolationToPhong().";
-    }
-    else if (!pd->GetNormals())
-    {
-      err << name << " needs point normals; the input has none. Generate them first "
-          << "(vtkPolyDataNormals, or the source's GenerateNormals).";
-    }
-    else if (!tcoords || tcoords->GetNumberOfComponents() != 2)
-    {
-      err << name << " needs 2-component texture coordinates; the input has "
-          << (tcoords ? "texture coordinates with another number of components" : "none")
-          << ". Generate them first (e.g. vtkParametricSurfaceSource).";
-    }
-    else if (usesTangents && (!tangents || !tangents->GetName()))
-    {
-      err << name << " needs point tangents (a named TANGENTS attribute); the input has "
-          << (tangents ? "tangents without a name" : "none")
-          << ". Generate tangents first (vtkParametricSurfaceSource with "
-          << "GenerateTangents, or vtkMikkTSpaceTangents)"
-          << (technique == BumpMapping ? ", or turn TangentFree on." : ".");
-    }
-    else if (usesNormalMap && !this->NormalMap)
-    {
-      err << name << " needs a normal map: call SetNormalMap().";
-    }
-    else if (usesNormalMap &&
-      (!normalImage || !normalImage->GetPointData()->GetScalars() ||
-        normalImage->GetPointData()->GetScalars()->GetNumberOfComponents() < 3))
-    {
-      err << "The normal map must be an image with 3 or 4 components (RGB = 0.5*n + 0.5); "
-          << "this one has "
-          << (normalImage && normalImage->GetPointData()->GetScalars()
-                 ? normalImage->GetPointData()->GetScalars()->GetNumberOfComponents()
-                 : 0)
-          << ".";
-    }
-    else if (usesNormalMap &&
-      !NormalMapTypeReadable(normalImage->GetPointData()->GetScalars(), this->NormalMap))
-    {
-      err << "The normal map's scalars are "
-          << normalImage->GetPointData()->GetScalars()->GetDataTypeAsString()
-          << (this->NormalMap->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS
-                 ? ""
-                 : " without SetColorModeToDirectScalars() on the texture")
-          << ", which VTK's texture does not read as 0.5*n + 0.5: use unsigned char, or float "
-          << "in [0,1] with SetColorModeToDirectScalars() (vtkImageShiftScale converts).";
-    }
-    else if (usesReliefMap && (!reliefScalars || reliefScalars->GetNumberOfComponents() != 4))
-    {
-      err << "The relief map must be an image with 4 components (RGB = 0.5*n + 0.5, A = depth)"
-          << "; this one has " << (reliefScalars ? reliefScalars->GetNumberOfComponents() : 0)
-          << ". Make it with vtkHeightMapToNormalMap and OutputRelief on.";
-    }
-    else if (usesReliefMap && !NormalMapTypeReadable(reliefScalars, this->ReliefMap))
-    {
-      err << "The relief map's scalars are " << reliefScalars->GetDataTypeAsString()
-          << (this->ReliefMap->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS
-                 ? ""
-                 : " without SetColorModeToDirectScalars() on the texture")
-          << ", which VTK's texture does not read as they are: use unsigned char, or float "
-          << "in [0,1] with SetColorModeToDirectScalars().";
-    }
-    else if (usesHeightMap && !this->HeightMap)
-    {
-      err << name << " needs a height map: call SetHeightMap()"
-          << (technique == ReliefMapping ? ", or give it a relief map (SetReliefMap)." : ".");
-    }
-    else if (usesHeightMap && (!heightImage || !heightImage->GetPointData()->GetScalars()))
-    {
-      err << "The height map texture has no image scalars: give it an input image.";
-    }
-    else if (usesHeightMap &&
-      !vtkSurfaceDetail::HeightMapScale(
-        heightImage->GetPointData()->GetScalars()->GetDataType(), heightScale))
-    {
-      err << "The height map's scalars are "
-          << heightImage->GetPointData()->GetScalars()->GetDataTypeAsString() << ": "
-          << vtkSurfaceDetail::HeightMapTypeAdvice() << ".";
-    }
-    else if (usesHeightMap &&
-      this->HeightComponent >= heightImage->GetPointData()->GetScalars()->GetNumberOfComponents())
-    {
-      err << "HeightComponent is " << this->HeightComponent << " but the height map has "
-          << heightImage->GetPointData()->GetScalars()->GetNumberOfComponents() << " component(s).";
-    }
-    if (!err.str().empty())
-    {
-      problem = err.str() + " Rendering without surface detail.";
-      technique = Plain;
-    }
-  }
-
-  if (problem != this->ReportedProblem)
-  {
-    this->ReportedProblem = problem;
-    if (!problem.empty())
-    {
-      vtkErrorMacro(<< problem);
-    }
-  }
-
-  // Lighting off means no normal is ever read: nothing to do but draw as VTK does.
-  if (technique == Plain || !act->GetProperty()->GetLighting())
-  {
-    technique = Plain;
-  }
-  this->ActiveTechnique = technique;
-  if (technique != Plain)
-  {
-    this->ActiveUsesTangents = usesTangents;
-    this->ActiveUsesHandedness =
-      usesTangents && vtkSurfaceDetailTangents::GetHandedness(pd) != nullptr;
-    this->ActiveUsesNormalMap = usesNormalMap;
-    this->ActiveUsesHeightMap = usesHeightMap;
-    this->ActiveUsesReliefMap = usesReliefMap;
-  }
-
-  const std::string handednessProblem =
-    this->ActiveUsesTangents ? vtkSurfaceDetailTangents::GetHandednessProblem(pd) : "";
-  if (handednessProblem != this->ReportedHandednessProblem)
-  {
-    this->ReportedHandednessProblem = handednessProblem;
-    if (!handednessProblem.empty())
-    {
-      vtkWarningMacro(<< handednessProblem);
-    }
-  }
-
-  // The tangent attributes are uploaded only while a technique reads them.
-  vtkDataArray* tangents = this->ActiveUsesTangents ? pd->GetTangents() : nullptr;
-  this->MapAttribute(
-    TangentAttribute, tangents ? tangents->GetName() : "", this->MappedTangentArray);
-  this->MapAttribute(HandednessAttribute,
-    this->ActiveUsesHandedness ? vtkSurfaceDetailTangents::GetHandednessArrayName() : "",
-    this->MappedHandednessArray);
+  return this->Shading->GetActiveTechnique();
 }
 
 //------------------------------------------------------------------------------
@@ -397,197 +141,50 @@ void vtkSurfaceDetailMapper::MapAttribute(
 //------------------------------------------------------------------------------
 bool vtkSurfaceDetailMapper::AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act)
 {
-  if (this->ActiveTechnique == Plain || !cellBO ||
-    act->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  if (!cellBO)
   {
     return false;
   }
-  if (cellBO != &this->Primitives[PrimitiveTris] && cellBO != &this->Primitives[PrimitiveTriStrips])
-  {
-    return false;
-  }
-  // Flat shading uploads no point normals (and then no normalMC to build the frame from).
-  if (this->VBOs->GetNumberOfComponents("normalMC") != 3 ||
-    this->VBOs->GetNumberOfComponents("tcoord") != 2)
-  {
-    return false;
-  }
+  const bool triangles =
+    cellBO == &this->Primitives[PrimitiveTris] || cellBO == &this->Primitives[PrimitiveTriStrips];
+  const bool uploaded = this->VBOs->GetNumberOfComponents("normalMC") == 3 &&
+    this->VBOs->GetNumberOfComponents("tcoord") == 2;
   auto info = this->PrimitiveInfo.find(cellBO);
-  return info != this->PrimitiveInfo.end() && info->second.LastLightComplexity > 0;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkSurfaceDetailMapper::ShaderKey() const
-{
-  std::ostringstream key;
-  key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesHandedness
-      << this->ActiveUsesNormalMap << this->ActiveUsesHeightMap << this->ActiveUsesReliefMap;
-  if (this->ActiveTechnique == ReliefMapping)
-  {
-    key << this->SelfShadowing << this->DepthCorrection;
-  }
-  return key.str();
+  const int lightComplexity =
+    info != this->PrimitiveInfo.end() ? info->second.LastLightComplexity : 0;
+  return this->Shading->AppliesTo(triangles, uploaded, lightComplexity, act);
 }
 
 //------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
-  this->ResolveTechnique(act);
-  // Our maps are not the actor's or the property's textures, so we bind them ourselves
-  // for the duration of this piece; SetMapperShaderParameters reads their units.
-  if (this->ActiveUsesNormalMap)
-  {
-    this->NormalMap->Render(ren);
-  }
-  if (this->ActiveUsesReliefMap)
-  {
-    this->ReliefMap->Render(ren);
-  }
-  if (this->ActiveUsesHeightMap)
-  {
-    this->UploadHeightMap(ren);
-    this->HeightTexture->Activate();
-  }
+  this->Shading->Resolve(this, { this->CurrentInput }, act);
+  this->MapAttribute(vtkSurfaceDetailShading::TangentAttribute, this->Shading->GetTangentArray(),
+    this->MappedTangentArray);
+  this->MapAttribute(vtkSurfaceDetailShading::HandednessAttribute,
+    this->Shading->GetHandednessArray(), this->MappedHandednessArray);
+  this->Shading->BindMaps(ren);
   this->Superclass::RenderPieceStart(ren, act);
-}
-
-//------------------------------------------------------------------------------
-void vtkSurfaceDetailMapper::UploadHeightMap(vtkRenderer* ren)
-{
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkImageData* image = this->HeightMap->GetInput();
-  vtkDataArray* scalars = image->GetPointData()->GetScalars();
-  const vtkMTimeType stamp =
-    std::max({ image->GetMTime(), scalars->GetMTime(), this->HeightMap->GetMTime() });
-  if (!this->HeightTexture)
-  {
-    this->HeightTexture = vtkSmartPointer<vtkTextureObject>::New();
-  }
-  // Bump mapping reads only the gradient: two channels instead of three is a third less
-  // texture traffic per fragment. Parallax reads the height too (and the gradient when it
-  // lights the relief without a normal map).
-  const int components = this->ActiveTechnique == BumpMapping ? 2 : 3;
-  if (this->HeightTexture->GetContext() == window && stamp == this->HeightUploadStamp &&
-    this->DifferenceScheme == this->HeightUploadDifferenceScheme &&
-    components == this->HeightUploadComponents &&
-    this->HeightComponent == this->HeightUploadComponent)
-  {
-    return;
-  }
-  int dims[3];
-  image->GetDimensions(dims);
-  const int w = dims[0], h = dims[1];
-  // ResolveTechnique has refused the types this does not accept.
-  double scale = 1.0;
-  vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
-  const int comp = this->HeightComponent; // ResolveTechnique has checked it exists
-  // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
-  std::vector<double> values(static_cast<size_t>(w) * h);
-  vtkIdType nonFinite = 0;
-  for (size_t k = 0; k < values.size(); ++k)
-  {
-    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), comp);
-    nonFinite += std::isfinite(v) ? 0 : 1;
-    values[k] = std::isfinite(v) ? v : 0.0;
-  }
-  if (nonFinite > 0)
-  {
-    vtkWarningMacro(<< "The height map has " << nonFinite
-                    << " non-finite values (NaN or infinite); they are read as height 0.");
-  }
-  // Texel (i,j) holds (h, dh/ds, dh/dt), or (dh/ds, dh/dt) for bump mapping, the derivatives per
-  // unit of texture coordinate by forward or central differences with the texture's own wrap mode.
-  // Differences of linearly interpolated heights taken one texel apart equal the linear
-  // interpolation of these texel differences (both use the same weights), so one lookup gives
-  // exactly what the classic three-lookup Cg code computes, at a third of the texture traffic. With
-  // ClampToBorder the height outside is the border colour's HeightComponent and its
-  // differences are 0 (the sampler's border below): the identity holds there as well.
-  const int wrap = this->HeightMap->GetWrap();
-  const bool border = wrap == vtkTexture::ClampToBorder;
-  const double borderHeight = this->HeightMap->GetBorderColor()[comp];
-  auto height = [&](int i, int j)
-  {
-    if (border && (i < 0 || i >= w || j < 0 || j >= h))
-    {
-      return borderHeight;
-    }
-    i = vtkSurfaceDetail::WrapIndex(i, w, wrap);
-    j = vtkSurfaceDetail::WrapIndex(j, h, wrap);
-    return values[static_cast<size_t>(j) * w + i];
-  };
-  const bool central = this->DifferenceScheme == Central;
-  const int back = central ? 1 : 0;
-  const double span = central ? 2.0 : 1.0;
-  const int gradient = components - 2; // the channel of dh/ds
-  std::vector<float> texels(components * static_cast<size_t>(w) * h);
-  for (int j = 0; j < h; ++j)
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      float* texel = &texels[components * (static_cast<size_t>(j) * w + i)];
-      if (gradient > 0)
-      {
-        texel[0] = static_cast<float>(height(i, j));
-      }
-      texel[gradient] = static_cast<float>((height(i + 1, j) - height(i - back, j)) * w / span);
-      texel[gradient + 1] = static_cast<float>((height(i, j + 1) - height(i, j - back)) * h / span);
-    }
-  }
-  this->HeightTexture->SetContext(window);
-  this->HeightTexture->SetRequireTextureFloat(true);
-  // The texture object keeps the internal format of its last upload unless told to forget
-  // it, which would read a 3-channel upload as 2 channels after a switch from bump mapping.
-  this->HeightTexture->ResetFormatAndType();
-  this->HeightTexture->Create2DFromRaw(w, h, components, VTK_FLOAT, texels.data());
-  // vtkTexture and vtkTextureObject number their wrap modes alike.
-  this->HeightTexture->SetWrapS(this->HeightMap->GetWrap());
-  this->HeightTexture->SetWrapT(this->HeightMap->GetWrap());
-  const float borderFirst = components == 3 ? static_cast<float>(borderHeight) : 0.f;
-  this->HeightTexture->SetBorderColor(borderFirst, 0.f, 0.f, 0.f);
-  const int filter =
-    this->HeightMap->GetInterpolate() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
-  this->HeightTexture->SetMinificationFilter(filter);
-  this->HeightTexture->SetMagnificationFilter(filter);
-  this->HeightUploadStamp = stamp;
-  this->HeightUploadDifferenceScheme = this->DifferenceScheme;
-  this->HeightUploadComponents = components;
-  this->HeightUploadComponent = comp;
 }
 
 //------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
-  if (this->ActiveUsesHeightMap)
-  {
-    this->HeightTexture->Deactivate();
-  }
-  if (this->ActiveUsesNormalMap)
-  {
-    this->NormalMap->PostRender(ren);
-  }
-  if (this->ActiveUsesReliefMap)
-  {
-    this->ReliefMap->PostRender(ren);
-  }
+  this->Shading->UnbindMaps(ren);
 }
 
 //------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
-  if (this->NormalMap)
+  for (vtkTexture* map : { this->NormalMap, this->HeightMap, this->ReliefMap })
   {
-    this->NormalMap->ReleaseGraphicsResources(win);
+    if (map)
+    {
+      map->ReleaseGraphicsResources(win);
+    }
   }
-  if (this->ReliefMap)
-  {
-    this->ReliefMap->ReleaseGraphicsResources(win);
-  }
-  if (this->HeightTexture)
-  {
-    this->HeightTexture->ReleaseGraphicsResources(win);
-  }
-  this->HeightUploadStamp = 0;
+  this->Shading->ReleaseGraphicsResources(win);
   this->BuiltShaderKeys.clear();
   this->Superclass::ReleaseGraphicsResources(win);
 }
@@ -599,7 +196,7 @@ bool vtkSurfaceDetailMapper::GetNeedToRebuildShaders(
   this->IgnoreUniformTime = true;
   bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
   this->IgnoreUniformTime = false;
-  const std::string key = this->AppliesTo(&cellBO, act) ? this->ShaderKey() : std::string();
+  const std::string key = this->AppliesTo(&cellBO, act) ? this->Shading->ShaderKey() : "";
   std::string& built = this->BuiltShaderKeys[&cellBO];
   if (built != key)
   {
@@ -624,262 +221,39 @@ void vtkSurfaceDetailMapper::ReplaceShaderValues(
 {
   if (this->AppliesTo(this->LastBoundBO, act))
   {
-    std::string vs = shaders[vtkShader::Vertex]->GetSource();
-    std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Normal::Dec", std::string(DecTag) + "\n//VTK::Normal::Dec");
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Normal::Impl", std::string(VSImplTag) + "\n  //VTK::Normal::Impl");
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::Normal::Dec", std::string(DecTag) + "\n//VTK::Normal::Dec");
-    // The texture coordinate (parallax) is settled before anything samples a texture, and
-    // the normal after VTK has interpolated it but before its lighting code reads it.
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::Color::Impl", std::string(TCoordImplTag) + "\n  //VTK::Color::Impl");
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::Light::Impl", std::string(NormalImplTag) + "\n  //VTK::Light::Impl");
-    shaders[vtkShader::Vertex]->SetSource(vs);
-    shaders[vtkShader::Fragment]->SetSource(fs);
+    this->Shading->AddTags(shaders);
   }
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 }
 
-//------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::ReplaceShaderNormal(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::ReplaceShaderNormal(shaders, ren, act);
-  if (!this->AppliesTo(this->LastBoundBO, act))
+  if (this->AppliesTo(this->LastBoundBO, act))
   {
-    return;
+    this->Shading->ReplaceNormal(shaders);
   }
-  std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  std::string fs = shaders[vtkShader::Fragment]->GetSource();
-
-  // The frame is built per vertex in the mesh's coordinates and sent as normalMatrix*T and
-  // normalMatrix*B (see vtkSurfaceDetailTangentFrameFS.glsl for why not MCVCMatrix*T).
-  std::string vsDec;
-  std::string vsImpl;
-  std::string fsDec;
-  if (this->ActiveUsesTangents)
-  {
-    // Without a handedness array, w = +1 as VTK takes it.
-    vsDec += this->ActiveUsesHandedness ? "in float sdHandednessMC;\n"
-                                        : "const float sdHandednessMC = 1.0;\n";
-    vsDec +=
-      "in vec3 sdTangentMC;\nout vec3 sdTangentVCVSOutput;\nout vec3 sdBitangentVCVSOutput;\n";
-    vsImpl += "{\n"
-              "    vec3 sdN = normalize(normalMC);\n"
-              "    vec3 sdT = sdTangentMC - sdN * dot(sdN, sdTangentMC);\n"
-              "    float sdLen = length(sdT);\n"
-              "    sdT = sdLen > 0.0 ? sdT / sdLen : vec3(0.0);\n"
-              "    vec3 sdB = (sdHandednessMC < 0.0 ? -1.0 : 1.0) * cross(sdN, sdT);\n"
-              "    float sdNLen = length(normalMatrix * sdN);\n"
-              "    sdTangentVCVSOutput = (normalMatrix * sdT) / sdNLen;\n"
-              "    sdBitangentVCVSOutput = (normalMatrix * sdB) / sdNLen;\n"
-              "  }\n";
-    fsDec += "in vec3 sdTangentVCVSOutput;\nin vec3 sdBitangentVCVSOutput;\n";
-  }
-  const bool marches =
-    this->ActiveTechnique == ParallaxMapping || this->ActiveTechnique == ReliefMapping;
-  if (marches)
-  {
-    // A depth D along the unit object normal n is the view vector D*M*n (M the 3x3 of
-    // MCVCMatrix); its part along the unit view normal N = normalMatrix*n/|normalMatrix*n|,
-    // with normalMatrix = M^-T, is D*(M n).(M^-T n)/|M^-T n| = D/|normalMatrix*n|. That,
-    // not |M n|, is the depth below the surface that the ray test needs.
-    vsDec += "out float sdDepthUnitVCVSOutput;\n";
-    vsImpl += "sdDepthUnitVCVSOutput = 1.0 / length(normalMatrix * normalize(normalMC));\n";
-    fsDec += "in float sdDepthUnitVCVSOutput;\n";
-  }
-  if (this->ActiveUsesTangents)
-  {
-    fsDec += vtkSurfaceDetailTangentFrameFS;
-  }
-  if (this->ActiveUsesNormalMap || this->ActiveUsesReliefMap)
-  {
-    // A relief map is read as a normal map (its RGB) through the same sampler.
-    fsDec += vtkSurfaceDetailNormalCoding;
-    fsDec += vtkSurfaceDetailNormalMapFS;
-  }
-  if (this->ActiveUsesHeightMap)
-  {
-    // Where UploadHeightMap put the gradient (dh/ds, dh/dt).
-    fsDec += this->ActiveTechnique == BumpMapping ? "#define SD_GRADIENT rg\n"
-                                                  : "#define SD_GRADIENT gb\n";
-    fsDec += vtkSurfaceDetailBumpFS;
-  }
-  if (this->ActiveTechnique == ParallaxMapping)
-  {
-    fsDec += vtkSurfaceDetailParallaxFS;
-  }
-  if (this->ActiveTechnique == ReliefMapping)
-  {
-    // Where the depth is read: the relief map's alpha, or one minus the height.
-    fsDec += this->ActiveUsesReliefMap
-      ? "#define SD_RELIEF_SAMPLER sdNormalMap\n"
-        "#define SD_RELIEF_DEPTH(tc) textureLod(sdNormalMap, tc, sdReliefLod).a\n"
-      : "#define SD_RELIEF_SAMPLER sdHeightMap\n"
-        "#define SD_RELIEF_DEPTH(tc) (1.0 - textureLod(sdHeightMap, tc, sdReliefLod).r)\n";
-    fsDec += vtkSurfaceDetailReliefFS;
-    if (this->SelfShadowing)
-    {
-      fsDec += vtkSurfaceDetailReliefShadowFS;
-    }
-    if (this->DepthCorrection)
-    {
-      fsDec += vtkSurfaceDetailReliefDepthFS;
-    }
-  }
-  vtkShaderProgram::Substitute(vs, DecTag, vsDec + DecTag);
-  vtkShaderProgram::Substitute(vs, VSImplTag, vsImpl + VSImplTag);
-  vtkShaderProgram::Substitute(fs, DecTag, fsDec + DecTag);
-  shaders[vtkShader::Vertex]->SetSource(vs);
-  shaders[vtkShader::Fragment]->SetSource(fs);
 }
 
-//------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::ReplaceShaderLight(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::ReplaceShaderLight(shaders, ren, act);
-  if (!this->AppliesTo(this->LastBoundBO, act))
+  if (this->AppliesTo(this->LastBoundBO, act))
   {
-    return;
-  }
-  // VTK's lighting (headlight, light kit, positional and spot lights) reads
-  // normalVCVSOutput: replacing it there is all the lighting needs.
-  std::string nTS;
-  if (this->ActiveUsesNormalMap || this->ActiveUsesReliefMap)
-  {
-    nTS = "sdNormalMapTS(tcoordVCVSOutput)";
-  }
-  else if (this->ActiveUsesTangents)
-  {
-    nTS = "sdBumpTS(tcoordVCVSOutput)";
-  }
-  // VTK has flipped the normal on back faces; the frame is built for the front face and
-  // the result flipped back.
-  std::string impl = "// SurfaceDetail: the detail normal, in view coordinates\n  ";
-  if (!nTS.empty())
-  {
-    impl += "normalVCVSOutput = sdTangentToView(" + nTS +
-      ", gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput, sdTangentVCVSOutput, "
-      "sdBitangentVCVSOutput);\n"
-      "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
-  }
-  else if (this->ActiveTechnique == ReliefMapping)
-  {
-    // The relief's own normal, at the hit, for the front face the march used.
-    impl += "normalVCVSOutput = sdReliefHeightNormal(tcoordVCVSOutput, "
-            "textureLod(sdHeightMap, tcoordVCVSOutput, sdReliefLod).gb);\n"
-            "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
-  }
-  else
-  {
-    // The surface gradient is that of the front face, whichever face is drawn.
-    impl += "normalVCVSOutput = sdBumpSurfaceGradient(gl_FrontFacing ? normalVCVSOutput : "
-            "-normalVCVSOutput, vertexVC.xyz, tcoordVCVSOutput, "
-            "sdHeightGradient(tcoordVCVSOutput));\n"
-            "  if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n";
-  }
-  std::string fs = shaders[vtkShader::Fragment]->GetSource();
-  vtkShaderProgram::Substitute(fs, NormalImplTag, impl);
-  if (this->ActiveTechnique == ReliefMapping && this->SelfShadowing)
-  {
-    this->AddReliefShadows(fs);
-  }
-  shaders[vtkShader::Fragment]->SetSource(fs);
-}
-
-//------------------------------------------------------------------------------
-void vtkSurfaceDetailMapper::AddReliefShadows(std::string& fs)
-{
-  // VTK 9.1 writes one diffuse factor df per light: the headlight's from normal.z, a light
-  // kit's from lightDirectionVC<i>, positional and spot lights' from vertLightDirectionVC,
-  // each followed by a specular factor sf = sign(df)*... (or pow(df, ...) for the
-  // headlight). Each df is passed through sdShadowed with the direction toward its light,
-  // and each sign(df) specular factor gets the same visibility.
-  const std::regex sceneLight(
-    "(\\bdf = max\\(0\\.0, ?(?:attenuation\\*)?dot\\(normalVCVSOutput, -(\\w+)\\)\\);)");
-  const std::string headlight = "float df = max(0.0,normalVCVSOutput.z);";
-  auto lights = std::distance(std::sregex_iterator(fs.begin(), fs.end(), sceneLight), {});
-  fs = std::regex_replace(fs, sceneLight, "$1\n  df = sdShadowed(df, -$2);");
-  if (vtkShaderProgram::Substitute(
-        fs, headlight, headlight + "\n  df = sdShadowed(df, vec3(0.0, 0.0, 1.0));"))
-  {
-    ++lights;
-  }
-  vtkShaderProgram::Substitute(fs, "sf = sign(df)*", "sf = sdLightVisibility*sign(df)*", true);
-  if (lights == 0)
-  {
-    // Only a VTK whose lighting code differs from 9.1's gets here.
-    vtkErrorMacro("No light of VTK's fragment shader was recognised: the relief is drawn "
-                  "without self-shadowing.");
+    this->Shading->ReplaceLight(shaders);
   }
 }
 
-//------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::ReplaceShaderTCoord(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::ReplaceShaderTCoord(shaders, ren, act);
-  if (!this->AppliesTo(this->LastBoundBO, act))
+  if (this->AppliesTo(this->LastBoundBO, act))
   {
-    return;
+    this->Shading->ReplaceTCoord(shaders);
   }
-  std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  std::string fs = shaders[vtkShader::Fragment]->GetSource();
-
-  // Every texture lookup, VTK's colour texture included, reads tcoordVCVSOutput. We make it
-  // a plain variable fed from our own varying, so that parallax can move it for all of them.
-  // With an actor texture VTK has declared the varying already (and applied any texture
-  // transform); without one we pass the "tcoord" attribute through ourselves.
-  const std::string fsDecl = "in vec2 sdTCoordVCVSOutput;\nvec2 tcoordVCVSOutput;\n";
-  if (vs.find("tcoordVCVSOutput") != std::string::npos)
-  {
-    // Whole identifiers only: VTK's seamless-texture varyings (tcoordVCVSOutputU1, ...) keep
-    // their names.
-    vs = std::regex_replace(vs, std::regex("\\btcoordVCVSOutput\\b"), "sdTCoordVCVSOutput");
-    if (!vtkShaderProgram::Substitute(fs, "in vec2 tcoordVCVSOutput;\n", fsDecl))
-    {
-      // Only a VTK whose shader text differs from 9.1's gets here; say so rather than
-      // leave a shader that does not compile without explanation.
-      vtkErrorMacro("VTK's fragment shader does not declare \"in vec2 tcoordVCVSOutput;\" "
-                    "as VTK 9.1 does; the surface-detail shader will not compile.");
-    }
-    vtkShaderProgram::Substitute(vs, DecTag, "");
-    vtkShaderProgram::Substitute(vs, VSImplTag, "");
-    vtkShaderProgram::Substitute(fs, DecTag, "");
-  }
-  else
-  {
-    vtkShaderProgram::Substitute(vs, DecTag, "in vec2 tcoord;\nout vec2 sdTCoordVCVSOutput;\n");
-    vtkShaderProgram::Substitute(vs, VSImplTag, "sdTCoordVCVSOutput = tcoord;\n");
-    vtkShaderProgram::Substitute(fs, DecTag, fsDecl);
-  }
-
-  std::string impl = "tcoordVCVSOutput = sdTCoordVCVSOutput;\n";
-  if (this->ActiveTechnique == ReliefMapping)
-  {
-    impl += "  tcoordVCVSOutput = sdReliefTCoord(sdTCoordVCVSOutput, vertexVC.xyz,\n"
-            "    normalize(gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput),\n"
-            "    sdDepthUnitVCVSOutput);\n";
-    if (this->DepthCorrection)
-    {
-      impl += "  gl_FragDepth = sdReliefFragDepth(vertexVC.xyz);\n";
-    }
-  }
-  if (this->ActiveTechnique == ParallaxMapping)
-  {
-    // VTK has not yet redeclared normalVCVSOutput (normalised, flipped on back faces).
-    impl += "  tcoordVCVSOutput = sdParallaxTCoord(sdTCoordVCVSOutput, vertexVC.xyz,\n"
-            "    normalize(gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput),\n"
-            "    sdDepthUnitVCVSOutput);\n";
-  }
-  vtkShaderProgram::Substitute(fs, TCoordImplTag, impl);
-  shaders[vtkShader::Vertex]->SetSource(vs);
-  shaders[vtkShader::Fragment]->SetSource(fs);
 }
 
 //------------------------------------------------------------------------------
@@ -887,50 +261,9 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
-  if (!this->AppliesTo(&cellBO, act) || !cellBO.Program)
+  if (cellBO.Program && this->AppliesTo(&cellBO, act))
   {
-    return;
-  }
-  vtkShaderProgram* program = cellBO.Program;
-  if (this->ActiveUsesNormalMap)
-  {
-    program->SetUniformi("sdNormalMap", TextureUnit(this->NormalMap));
-    const float strength = static_cast<float>(this->NormalScale);
-    const float scaleXY[2] = { strength, this->GreenUp ? strength : -strength };
-    program->SetUniform2f("sdNormalScaleXY", scaleXY);
-  }
-  if (this->ActiveUsesHeightMap)
-  {
-    program->SetUniformi("sdHeightMap", this->HeightTexture->GetTextureUnit());
-    program->SetUniformf("sdBumpScale", static_cast<float>(this->BumpScale));
-  }
-  if (this->ActiveTechnique == ParallaxMapping || this->ActiveTechnique == ReliefMapping)
-  {
-    program->SetUniformf("sdDepthScale", static_cast<float>(this->DepthScale));
-    program->SetUniformi(
-      "sdCameraParallel", ren->GetActiveCamera()->GetParallelProjection() ? 1 : 0);
-  }
-  if (this->ActiveUsesReliefMap)
-  {
-    program->SetUniformi("sdNormalMap", TextureUnit(this->ReliefMap));
-    const float scaleXY[2] = { 1.f, this->GreenUp ? 1.f : -1.f };
-    program->SetUniform2f("sdNormalScaleXY", scaleXY);
-  }
-  if (this->ActiveTechnique == ReliefMapping)
-  {
-    program->SetUniformi("sdLinearSearchSteps", this->LinearSearchSteps);
-    program->SetUniformi("sdBinarySearchSteps", this->BinarySearchSteps);
-    program->SetUniformi("sdAdaptiveSteps", this->AdaptiveSteps ? 1 : 0);
-    if (this->DepthCorrection)
-    {
-      vtkMatrix4x4* wcvc;
-      vtkMatrix3x3* normalMatrix;
-      vtkMatrix4x4* vcdc;
-      vtkMatrix4x4* wcdc;
-      vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera())
-        ->GetKeyMatrices(ren, wcvc, normalMatrix, vcdc, wcdc);
-      program->SetUniformMatrix("sdVCDCMatrix", vcdc);
-    }
+    this->Shading->SetUniforms(cellBO.Program, ren);
   }
 }
 
@@ -963,8 +296,8 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
 void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Technique: " << TechniqueName(this->Technique) << "\n";
-  os << indent << "ActiveTechnique: " << TechniqueName(this->ActiveTechnique) << "\n";
+  os << indent << "Technique: " << vtkSurfaceDetailShading::TechniqueName(this->Technique) << "\n";
+  os << indent << "ActiveTechnique: " << vtkSurfaceDetailShading::TechniqueName(this->GetActiveTechnique()) << "\n";
   os << indent << "NormalMap: " << this->NormalMap << "\n";
   os << indent << "HeightMap: " << this->HeightMap << "\n";
   os << indent << "NormalScale: " << this->NormalScale << "\n";

@@ -78,13 +78,13 @@
 
 #include "SurfaceDetailRenderingModule.h" // For export macro
 #include "vtkOpenGLPolyDataMapper.h"
-#include "vtkSmartPointer.h" // For the height texture
 
 #include <map>    // For the per-primitive shader keys
+#include <memory> // For the shading
 #include <string> // For the shader keys
 
+class vtkSurfaceDetailShading;
 class vtkTexture;
-class vtkTextureObject;
 
 class SURFACEDETAILRENDERING_EXPORT vtkSurfaceDetailMapper : public vtkOpenGLPolyDataMapper
 {
@@ -279,7 +279,7 @@ public:
    * The technique used in the last render: the requested one, or Plain when the input
    * could not support it (see the class documentation).
    */
-  vtkGetMacro(ActiveTechnique, int);
+  int GetActiveTechnique();
 
   /**
    * Copies the technique, the maps and every setting, then the superclass's state.
@@ -299,7 +299,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
 protected:
-  vtkSurfaceDetailMapper() = default;
+  vtkSurfaceDetailMapper();
   ~vtkSurfaceDetailMapper() override;
 
   void ReplaceShaderValues(
@@ -335,39 +335,17 @@ private:
   vtkSurfaceDetailMapper(const vtkSurfaceDetailMapper&) = delete;
   void operator=(const vtkSurfaceDetailMapper&) = delete;
 
-  static const char* TechniqueName(int technique);
-
-  // Works out what the input and textures allow; reports a problem once.
-  void ResolveTechnique(vtkActor* act);
   // Whether the primitive being built or drawn gets the detail shading.
   bool AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act);
-  std::string ShaderKey() const;
-  // Uploads the height map's first channel and its finite differences as a 32-bit float
-  // RGB texture (integer types scaled to [0,1]): vtkOpenGLTexture would store float images
-  // in 8 bits, too coarse for differences.
-  void UploadHeightMap(vtkRenderer* ren);
   // Maps point array @a array (empty: none) to vertex attribute @a attribute, where it is not
   // mapped already (@a mapped remembers what is).
   void MapAttribute(const char* attribute, const std::string& array, std::string& mapped);
-  // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
-  void AddReliefShadows(std::string& fs);
 
-  int ActiveTechnique = Plain;
-  bool ActiveUsesTangents = false;
-  bool ActiveUsesHandedness = false;
-  bool ActiveUsesNormalMap = false;
-  bool ActiveUsesHeightMap = false;
-  bool ActiveUsesReliefMap = false;
-  std::string ReportedProblem;
-  std::string ReportedHandednessProblem;
+  // The shading itself, shared with vtkCompositeSurfaceDetailMapper's helpers.
+  std::unique_ptr<vtkSurfaceDetailShading> Shading;
   std::string MappedTangentArray;
   std::string MappedHandednessArray;
   std::map<const vtkOpenGLHelper*, std::string> BuiltShaderKeys;
-  vtkSmartPointer<vtkTextureObject> HeightTexture;
-  vtkMTimeType HeightUploadStamp = 0;
-  int HeightUploadDifferenceScheme = Central;
-  int HeightUploadComponents = 0;
-  int HeightUploadComponent = 0;
   // When a uniform-only setting last changed; GetMTime leaves it out while the superclass
   // decides whether to rebuild (IgnoreUniformTime).
   vtkTimeStamp UniformTime;
