@@ -43,6 +43,7 @@ public:
   vtkSurfaceDetailShading& operator=(const vtkSurfaceDetailShading&) = delete;
 
   static const char* TechniqueName(int technique);
+  void SetReporter(vtkObject* reporter) { this->Reporter = reporter; }
 
   // The vertex attributes the shaders read the tangent and its handedness from.
   static const char* const TangentAttribute;

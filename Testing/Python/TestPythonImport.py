@@ -188,6 +188,15 @@ actor = vtkActor()
 actor.SetMapper(mapper)
 check(actor.GetMapper() is mapper, "vtkActor did not keep the mapper")
 
+# The composite mapper takes its technique from a vtkSurfaceDetailMapper it holds or shares.
+composite = surfacedetail.vtkCompositeSurfaceDetailMapper()
+check(composite.IsA("vtkCompositePolyDataMapper2"),
+      "the composite mapper is not a vtkCompositePolyDataMapper2")
+composite.SetDetail(mapper)
+check(composite.GetDetail() is mapper, "SetDetail did not share the settings")
+check(composite.GetDetail().GetTechnique() == surfacedetail.vtkSurfaceDetailMapper.BumpMapping,
+      "the shared settings lost the technique")
+
 if failures:
     print("%d check(s) failed" % len(failures))
     sys.exit(1)
