@@ -1,7 +1,10 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 # SPDX-License-Identifier: BSD-3-Clause
 """Each filter of the SurfaceDetail plugin given input it cannot use: the filter's own error
-message names the problem, the output is empty, and pvpython goes on (no crash)."""
+message names the problem, the output is empty, and pvpython goes on (no crash). The
+representation given a surface it cannot shade says why once and draws it plain.
+
+    pvpython TestPluginBadInput.py <plugin> <a normal map image>"""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
@@ -48,5 +51,22 @@ for name, make, expected in cases:
     if expected not in said or points != 0:
         print("FAILED: %s did not refuse its bad input clearly" % name)
         failed = True
+
+# The representation given a surface without tangents: normal mapping names what is missing
+# once, and the surface is drawn plain.
+view = CreateRenderView()
+view.ViewSize = [200, 150]
+display = Show(ParametricSurface(), view)  # texture coordinates, no tangents
+display.SetRepresentationType("Surface Detail")
+display.SurfaceDetailTechnique = "Normal Mapping"
+display.SurfaceDetailNormalMap = CreateTexture(sys.argv[2])
+before = len(messages.text)
+Render(view)
+Render(view)
+said = [text for text in messages.text[before:] if "tangents" in text]
+print("Surface Detail representation said: %s" % " ".join(said).strip()[:200])
+if len(said) != 1:
+    print("FAILED: the representation did not report the missing tangents once")
+    failed = True
 if not failed:
     print("every bad input refused")
