@@ -6,6 +6,11 @@
 # beside libvtk9-dev (python3-paraview conflicts with python3-vtk9), so everything runs in a
 # Debian root made with debootstrap: made once (about 4 GB, a few minutes) and reused, at
 # $PARAVIEW_ROOT (default /var/cache/surfacedetail/paraview-root). Needs root.
+#
+#   bash scripts/paraview.sh                      build the plugin and run its tests
+#   bash scripts/paraview.sh --window <out.png>   build it, then open ParaView's window on
+#       Examples/ParaView/DisplacedReliefTorus.py under Xvfb and take a picture of the whole
+#       window (scripts/paraview-window.sh, run in the root; the README's picture)
 set -euo pipefail
 # --help prints the comment above and does nothing else.
 if [[ "${1-}" == --help || "${1-}" == -h ]]; then
@@ -66,6 +71,14 @@ fi
 
 chroot "$root" bash -c "set -e
   cmake -S /src/Plugins -B /build -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build /build -j $(nproc)
-  cd /build && xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' \
+  cmake --build /build -j $(nproc)"
+if [[ "${1-}" == --window ]]; then
+  # Only the picture needs these: an X screen grabber, a converter and a way to click.
+  chroot "$root" bash -c "export DEBIAN_FRONTEND=noninteractive
+    apt-get install -y -qq --no-install-recommends x11-apps imagemagick xdotool >/dev/null"
+  chroot "$root" bash /src/scripts/paraview-window.sh /tmp/paraview-window.png
+  cp "$root/tmp/paraview-window.png" "$2"
+  exit 0
+fi
+chroot "$root" bash -c "cd /build && xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' \
     ctest --output-on-failure --timeout 600 -j $(nproc)"
