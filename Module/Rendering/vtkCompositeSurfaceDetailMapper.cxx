@@ -107,12 +107,12 @@ protected:
     }
     const bool triangles = cellBO == &this->Primitives[PrimitiveTris] ||
       cellBO == &this->Primitives[PrimitiveTriStrips];
-    const bool uploaded = this->VBOs->GetNumberOfComponents("normalMC") == 3 &&
-      this->VBOs->GetNumberOfComponents("tcoord") == 2;
+    const bool normals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
+    const bool tcoords = this->VBOs->GetNumberOfComponents("tcoord") == 2;
     auto info = this->PrimitiveInfo.find(cellBO);
     const int lightComplexity =
       info != this->PrimitiveInfo.end() ? info->second.LastLightComplexity : 0;
-    return this->Shading.AppliesTo(triangles, uploaded, lightComplexity, act);
+    return this->Shading.AppliesTo(triangles, normals, tcoords, lightComplexity, act);
   }
 
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
@@ -173,7 +173,7 @@ protected:
     this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
     if (cellBO.Program && this->AppliesTo(&cellBO, act))
     {
-      this->Shading.SetUniforms(cellBO.Program, ren);
+      this->Shading.SetUniforms(cellBO.Program, ren, act, this->VBOs);
     }
   }
 

@@ -64,6 +64,16 @@ void vtkSurfaceDetailMapper::SetBumpScale(double scale)
   this->SetUniformSetting(this->BumpScale, scale);
 }
 
+void vtkSurfaceDetailMapper::SetTriplanarScale(double scale)
+{
+  this->SetUniformSetting(this->TriplanarScale, scale);
+}
+
+void vtkSurfaceDetailMapper::SetTriplanarSharpness(double sharpness)
+{
+  this->SetUniformSetting(this->TriplanarSharpness, std::max(sharpness, 1.0));
+}
+
 void vtkSurfaceDetailMapper::SetDepthScale(double depth)
 {
   this->SetUniformSetting(this->DepthScale, std::max(depth, 0.0));
@@ -147,12 +157,12 @@ bool vtkSurfaceDetailMapper::AppliesTo(vtkOpenGLHelper* cellBO, vtkActor* act)
   }
   const bool triangles =
     cellBO == &this->Primitives[PrimitiveTris] || cellBO == &this->Primitives[PrimitiveTriStrips];
-  const bool uploaded = this->VBOs->GetNumberOfComponents("normalMC") == 3 &&
-    this->VBOs->GetNumberOfComponents("tcoord") == 2;
+  const bool normals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
+  const bool tcoords = this->VBOs->GetNumberOfComponents("tcoord") == 2;
   auto info = this->PrimitiveInfo.find(cellBO);
   const int lightComplexity =
     info != this->PrimitiveInfo.end() ? info->second.LastLightComplexity : 0;
-  return this->Shading->AppliesTo(triangles, uploaded, lightComplexity, act);
+  return this->Shading->AppliesTo(triangles, normals, tcoords, lightComplexity, act);
 }
 
 //------------------------------------------------------------------------------
@@ -263,7 +273,7 @@ void vtkSurfaceDetailMapper::SetMapperShaderParameters(
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   if (cellBO.Program && this->AppliesTo(&cellBO, act))
   {
-    this->Shading->SetUniforms(cellBO.Program, ren);
+    this->Shading->SetUniforms(cellBO.Program, ren, act, this->VBOs);
   }
 }
 
@@ -281,6 +291,10 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
     this->SetDifferenceScheme(other->GetDifferenceScheme());
     this->SetHeightComponent(other->GetHeightComponent());
     this->SetTangentFree(other->GetTangentFree());
+    this->SetTriplanar(other->GetTriplanar());
+    this->SetTriplanarSpace(other->GetTriplanarSpace());
+    this->SetTriplanarScale(other->GetTriplanarScale());
+    this->SetTriplanarSharpness(other->GetTriplanarSharpness());
     this->SetDepthScale(other->GetDepthScale());
     this->SetReliefMap(other->GetReliefMap());
     this->SetLinearSearchSteps(other->GetLinearSearchSteps());
@@ -307,6 +321,11 @@ void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "DifferenceScheme: " << (this->DifferenceScheme == Central ? "Central" : "Forward") << "\n";
   os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "TangentFree: " << (this->TangentFree ? "On" : "Off") << "\n";
+  os << indent << "Triplanar: " << (this->Triplanar ? "On" : "Off") << "\n";
+  os << indent << "TriplanarSpace: "
+     << (this->TriplanarSpace == WorldSpace ? "WorldSpace" : "ObjectSpace") << "\n";
+  os << indent << "TriplanarScale: " << this->TriplanarScale << "\n";
+  os << indent << "TriplanarSharpness: " << this->TriplanarSharpness << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "ReliefMap: " << this->ReliefMap << "\n";
   os << indent << "LinearSearchSteps: " << this->LinearSearchSteps << "\n";

@@ -67,6 +67,19 @@
  * uploaded as a float texture holding h and its finite differences (DifferenceScheme), so bump
  * mapping reads one texel per fragment.
  *
+ * Triplanar mapping (TriplanarOn) needs no texture coordinates and no tangents: the actor's
+ * colour texture, the normal map (NormalMapping) and the height map (BumpMapping) are
+ * projected along the three axes of the object's coordinates (or the world's,
+ * TriplanarSpace), TriplanarScale texture squares per unit, and the three blended by the
+ * normal with weights |n_i|^TriplanarSharpness (normalised; a weight under 1/256 is dropped
+ * and its projection not read). Each face is mapped as seen from outside it, the right way
+ * round, the faces along negative axes too, and each projection's normal-map frame is
+ * reoriented to the surface normal, so a bump looks the same on every face and an axis-aligned
+ * box shows on each face exactly what planar texture coordinates would give. The rules (which
+ * axis runs along s and t, their signs) are vtkSurfaceDetail::TriplanarProject in
+ * vtkSurfaceDetailConventions.h. Parallax and relief mapping need texture coordinates and are
+ * refused with triplanar mapping. Textures should repeat (vtkTexture::RepeatOn).
+ *
  * Flat interpolation, lighting off or a non-surface representation draw as the plain
  * mapper does (flat interpolation is reported, as it is likely a mistake).
  *
@@ -205,6 +218,52 @@ public:
   vtkBooleanMacro(TangentFree, bool);
   ///@}
 
+  enum TriplanarSpaceType
+  {
+    ObjectSpace = 0,
+    WorldSpace
+  };
+
+  ///@{
+  /**
+   * Triplanar mapping: the colour texture, normal map and height map projected along the
+   * axes instead of read at texture coordinates (see the class description). Default false.
+   */
+  vtkSetMacro(Triplanar, bool);
+  vtkGetMacro(Triplanar, bool);
+  vtkBooleanMacro(Triplanar, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The axes triplanar mapping projects along: the mesh's own coordinates (ObjectSpace, the
+   * default: the texture moves with the actor) or the world's (WorldSpace: the texture stays
+   * where it is in the world while the actor moves through it).
+   */
+  vtkSetClampMacro(TriplanarSpace, int, ObjectSpace, WorldSpace);
+  vtkGetMacro(TriplanarSpace, int);
+  void SetTriplanarSpaceToObjectSpace() { this->SetTriplanarSpace(ObjectSpace); }
+  void SetTriplanarSpaceToWorldSpace() { this->SetTriplanarSpace(WorldSpace); }
+  ///@}
+
+  ///@{
+  /**
+   * Texture squares per unit of the triplanar space (texture coordinate = scale *
+   * coordinate). Default 1.
+   */
+  void SetTriplanarScale(double scale);
+  vtkGetMacro(TriplanarScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * The exponent of the triplanar blend weights |n_i|^sharpness, at least 1: higher gives
+   * narrower transitions between the projections. Default 4.
+   */
+  void SetTriplanarSharpness(double sharpness);
+  vtkGetMacro(TriplanarSharpness, double);
+  ///@}
+
   ///@{
   /**
    * Depth of the height field for parallax and relief mapping, in the mesh's own (object)
@@ -323,6 +382,10 @@ protected:
   int DifferenceScheme = Central;
   int HeightComponent = 0;
   bool TangentFree = false;
+  bool Triplanar = false;
+  int TriplanarSpace = ObjectSpace;
+  double TriplanarScale = 1.0;
+  double TriplanarSharpness = 4.0;
   double DepthScale = 0.05;
   vtkTexture* ReliefMap = nullptr;
   int LinearSearchSteps = 32;

@@ -9,9 +9,12 @@
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLTexture.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -31,6 +34,7 @@
 #include "vtkSurfaceDetailReliefShadowFS.h"
 #include "vtkSurfaceDetailTangentFrameFS.h"
 #include "vtkSurfaceDetailTangents.h"
+#include "vtkSurfaceDetailTriplanarFS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +48,7 @@ const char* const DecTag = "//VTK::SurfaceDetail::Dec";
 const char* const VSImplTag = "//VTK::SurfaceDetail::Impl";
 const char* const TCoordImplTag = "//VTK::SurfaceDetail::TCoord::Impl";
 const char* const NormalImplTag = "//VTK::SurfaceDetail::Normal::Impl";
+const char* const TriplanarColorTag = "//VTK::SurfaceDetail::TriplanarColor::Impl";
 // The techniques and schemes, by their mapper's names.
 constexpr int Plain = vtkSurfaceDetailMapper::Plain;
 constexpr int NormalMapping = vtkSurfaceDetailMapper::NormalMapping;
@@ -137,8 +142,9 @@ Needs NeedsOf(int technique, vtkSurfaceDetailMapper* detail)
   needs.NormalMap = technique == NormalMapping ||
     ((technique == ParallaxMapping || heightRelief) && detail->GetNormalMap() != nullptr);
   needs.HeightMap = technique == BumpMapping || technique == ParallaxMapping || heightRelief;
-  needs.Tangents = needs.NormalMap || needs.ReliefMap ||
-    (technique == BumpMapping && !detail->GetTangentFree());
+  // Triplanar mapping builds its frames from the axes.
+  needs.Tangents = !detail->GetTriplanar() &&
+    (needs.NormalMap || needs.ReliefMap || (technique == BumpMapping && !detail->GetTangentFree()));
   return needs;
 }
 }
@@ -160,8 +166,14 @@ std::string vtkSurfaceDetailShading::Problem(int technique, vtkPolyData* block, 
   vtkDataArray* reliefScalars = reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
   std::ostringstream err;
   double heightScale = 1.0;
-  const char* name = TechniqueName(technique);
-  if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
+  const bool triplanar = this->Detail->GetTriplanar();
+  const char* name = technique == Plain ? "Triplanar mapping" : TechniqueName(technique);
+  if (triplanar && (technique == ParallaxMapping || technique == ReliefMapping))
+  {
+    err << name << " needs texture coordinates: triplanar mapping projects colour, normal "
+        << "and height maps (Plain, NormalMapping, BumpMapping) only. Turn Triplanar off.";
+  }
+  else if (act->GetProperty()->GetInterpolation() == VTK_FLAT)
   {
     err << name << " needs smooth shading; the actor's property has flat interpolation. "
         << "Use SetInterpolationToGouraud() or SetInterpolationToPhong().";
@@ -171,7 +183,7 @@ std::string vtkSurfaceDetailShading::Problem(int technique, vtkPolyData* block, 
     err << name << " needs point normals; the input has none. Generate them first "
         << "(vtkPolyDataNormals, or the source's GenerateNormals).";
   }
-  else if (!tcoords || tcoords->GetNumberOfComponents() != 2)
+  else if (!triplanar && (!tcoords || tcoords->GetNumberOfComponents() != 2))
   {
     err << name << " needs 2-component texture coordinates; the input has "
         << (tcoords ? "texture coordinates with another number of components" : "none")
@@ -263,12 +275,19 @@ void vtkSurfaceDetailShading::Resolve(
   this->ActiveUsesNormalMap = false;
   this->ActiveUsesHeightMap = false;
   this->ActiveUsesReliefMap = false;
+  this->ActiveTriplanar = false;
+  this->ActiveTriplanarColor = false;
 
   int technique = detail->GetTechnique();
+  // The actor's colour texture is projected where the input has no texture coordinates
+  // (where it has, VTK's own texturing applies it by them).
+  vtkPolyData* first = blocks.empty() ? nullptr : blocks.front();
+  bool triplanarColor = detail->GetTriplanar() && act->GetTexture() && first &&
+    !first->GetPointData()->GetTCoords();
   std::string problem;
   for (vtkPolyData* block : blocks)
   {
-    if (technique != Plain && block && problem.empty())
+    if ((technique != Plain || triplanarColor) && block && problem.empty())
     {
       problem = this->Problem(technique, block, act);
     }
@@ -277,6 +296,7 @@ void vtkSurfaceDetailShading::Resolve(
   {
     problem += " Rendering without surface detail.";
     technique = Plain;
+    triplanarColor = false;
   }
   if (problem != this->ReportedProblem)
   {
@@ -288,13 +308,15 @@ void vtkSurfaceDetailShading::Resolve(
   }
 
   // Lighting off means no normal is ever read: nothing to do but draw as VTK does.
-  if (blocks.empty() || !act->GetProperty()->GetLighting())
+  if (!first || !act->GetProperty()->GetLighting())
   {
     technique = Plain;
+    triplanarColor = false;
   }
-  vtkPointData* pd =
-    technique != Plain && blocks.front() ? blocks.front()->GetPointData() : nullptr;
+  vtkPointData* pd = technique != Plain ? first->GetPointData() : nullptr;
   this->ActiveTechnique = pd ? technique : Plain;
+  this->ActiveTriplanarColor = triplanarColor;
+  this->ActiveTriplanar = detail->GetTriplanar() && (pd || triplanarColor);
   const Needs needs = NeedsOf(technique, detail);
   if (pd)
   {
@@ -325,12 +347,13 @@ void vtkSurfaceDetailShading::Resolve(
 }
 
 //------------------------------------------------------------------------------
-bool vtkSurfaceDetailShading::AppliesTo(
-  bool triangles, bool attributesUploaded, int lightComplexity, vtkActor* act) const
+bool vtkSurfaceDetailShading::AppliesTo(bool triangles, bool normalsUploaded,
+  bool tcoordsUploaded, int lightComplexity, vtkActor* act) const
 {
   // Flat shading uploads no point normals (and then no normalMC to build the frame from).
-  return this->ActiveTechnique != Plain && triangles && attributesUploaded &&
-    lightComplexity > 0 && act->GetProperty()->GetRepresentation() == VTK_SURFACE;
+  return (this->ActiveTechnique != Plain || this->ActiveTriplanarColor) && triangles &&
+    normalsUploaded && (tcoordsUploaded || this->ActiveTriplanar) && lightComplexity > 0 &&
+    act->GetProperty()->GetRepresentation() == VTK_SURFACE;
 }
 
 //------------------------------------------------------------------------------
@@ -338,7 +361,8 @@ std::string vtkSurfaceDetailShading::ShaderKey() const
 {
   std::ostringstream key;
   key << this->ActiveTechnique << this->ActiveUsesTangents << this->ActiveUsesHandedness
-      << this->ActiveUsesNormalMap << this->ActiveUsesHeightMap << this->ActiveUsesReliefMap;
+      << this->ActiveUsesNormalMap << this->ActiveUsesHeightMap << this->ActiveUsesReliefMap
+      << this->ActiveTriplanar << this->ActiveTriplanarColor;
   if (this->ActiveTechnique == ReliefMapping)
   {
     key << this->Detail->GetSelfShadowing() << this->Detail->GetDepthCorrection();
@@ -515,6 +539,9 @@ void vtkSurfaceDetailShading::AddTags(std::map<vtkShader::Type, vtkShader*>& sha
       fs, "//VTK::Color::Impl", std::string(TCoordImplTag) + "\n  //VTK::Color::Impl");
     vtkShaderProgram::Substitute(
       fs, "//VTK::Light::Impl", std::string(NormalImplTag) + "\n  //VTK::Light::Impl");
+    // A projected colour texture modulates the lit colour where VTK's own texturing would.
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::TCoord::Impl", std::string(TriplanarColorTag) + "\n  //VTK::TCoord::Impl");
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
   }
@@ -550,6 +577,23 @@ void vtkSurfaceDetailShading::ReplaceNormal(std::map<vtkShader::Type, vtkShader*
               "  }\n";
     fsDec += "in vec3 sdTangentVCVSOutput;\nin vec3 sdBitangentVCVSOutput;\n";
   }
+  if (this->ActiveTriplanar)
+  {
+    // Position and normal in the triplanar space (the object's or the world's), and the map
+    // from that space's normals to view coordinates: normalMatrix after the way back to the
+    // object's normals.
+    vsDec += "uniform mat4 sdTriplanarMatrix;\nuniform mat3 sdTriplanarNormalMatrix;\n"
+             "uniform mat3 sdTriplanarToObjectNormal;\n"
+             "out vec3 sdTriplanarPositionVSOutput;\nout vec3 sdTriplanarNormalVSOutput;\n"
+             "out mat3 sdTriplanarToViewVSOutput;\n";
+    vsImpl += "sdTriplanarPositionVSOutput = (sdTriplanarMatrix * vertexMC).xyz;\n"
+              "  sdTriplanarNormalVSOutput = sdTriplanarNormalMatrix * normalMC;\n"
+              "  sdTriplanarToViewVSOutput = normalMatrix * sdTriplanarToObjectNormal;\n";
+    fsDec += "in mat3 sdTriplanarToViewVSOutput;\n";
+    fsDec += this->ActiveTriplanarColor ? "#define SD_TRIPLANAR_COLOR\n" : "";
+    fsDec += this->ActiveUsesNormalMap ? "#define SD_TRIPLANAR_NORMAL_MAP\n" : "";
+    fsDec += this->ActiveTechnique == BumpMapping ? "#define SD_TRIPLANAR_BUMP\n" : "";
+  }
   const bool marches =
     this->ActiveTechnique == ParallaxMapping || this->ActiveTechnique == ReliefMapping;
   if (marches)
@@ -578,6 +622,10 @@ void vtkSurfaceDetailShading::ReplaceNormal(std::map<vtkShader::Type, vtkShader*
     fsDec += this->ActiveTechnique == BumpMapping ? "#define SD_GRADIENT rg\n"
                                                   : "#define SD_GRADIENT gb\n";
     fsDec += vtkSurfaceDetailBumpFS;
+  }
+  if (this->ActiveTriplanar)
+  {
+    fsDec += vtkSurfaceDetailTriplanarFS;
   }
   if (this->ActiveTechnique == ParallaxMapping)
   {
@@ -614,7 +662,11 @@ void vtkSurfaceDetailShading::ReplaceLight(std::map<vtkShader::Type, vtkShader*>
   // VTK's lighting (headlight, light kit, positional and spot lights) reads
   // normalVCVSOutput: replacing it there is all the lighting needs.
   std::string nTS;
-  if (this->ActiveUsesNormalMap || this->ActiveUsesReliefMap)
+  if (this->ActiveTriplanar)
+  {
+    // nTS stays empty: the triplanar branch below builds the normal.
+  }
+  else if (this->ActiveUsesNormalMap || this->ActiveUsesReliefMap)
   {
     nTS = "sdNormalMapTS(tcoordVCVSOutput)";
   }
@@ -625,7 +677,24 @@ void vtkSurfaceDetailShading::ReplaceLight(std::map<vtkShader::Type, vtkShader*>
   // VTK has flipped the normal on back faces; the frame is built for the front face and
   // the result flipped back.
   std::string impl = "// SurfaceDetail: the detail normal, in view coordinates\n  ";
-  if (!nTS.empty())
+  if (this->ActiveTriplanar && this->ActiveTechnique == Plain)
+  {
+    impl.clear(); // a projected colour texture only
+  }
+  else if (this->ActiveTriplanar)
+  {
+    // The triplanar normal of the front face, taken to view coordinates.
+    impl += "{\n"
+            "    vec3 sdN = normalize(sdTriplanarNormalVSOutput);\n"
+            "    vec3 sdD = sdTriplanarToViewVSOutput *\n"
+            "      sdTriplanarDetailNormal(sdTriplanarPositionVSOutput, sdN);\n"
+            "    float sdLen2 = dot(sdD, sdD);\n"
+            "    normalVCVSOutput = sdLen2 > 0.0 ? sdD * inversesqrt(sdLen2)\n"
+            "      : (gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput);\n"
+            "    if (!gl_FrontFacing) { normalVCVSOutput = -normalVCVSOutput; }\n"
+            "  }\n";
+  }
+  else if (!nTS.empty())
   {
     impl += "normalVCVSOutput = sdTangentToView(" + nTS +
       ", gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput, sdTangentVCVSOutput, "
@@ -688,6 +757,24 @@ void vtkSurfaceDetailShading::ReplaceTCoord(std::map<vtkShader::Type, vtkShader*
 {
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  if (this->ActiveTriplanar)
+  {
+    // No texture coordinate is read or moved; the projected colour modulates the lit colour
+    // as VTK's texturing does (gl_FragData[0] * tcolor).
+    vtkShaderProgram::Substitute(vs, DecTag, "");
+    vtkShaderProgram::Substitute(vs, VSImplTag, "");
+    vtkShaderProgram::Substitute(fs, DecTag, "");
+    vtkShaderProgram::Substitute(fs, TCoordImplTag, "");
+    vtkShaderProgram::Substitute(fs, TriplanarColorTag,
+      this->ActiveTriplanarColor
+        ? "gl_FragData[0] = gl_FragData[0] * sdTriplanarColor(sdTriplanarPositionVSOutput,\n"
+          "    normalize(sdTriplanarNormalVSOutput));"
+        : "");
+    shaders[vtkShader::Vertex]->SetSource(vs);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    return;
+  }
+  vtkShaderProgram::Substitute(fs, TriplanarColorTag, "");
 
   // Every texture lookup, VTK's colour texture included, reads tcoordVCVSOutput. We make it
   // a plain variable fed from our own varying, so that parallax can move it for all of them.
@@ -741,8 +828,13 @@ void vtkSurfaceDetailShading::ReplaceTCoord(std::map<vtkShader::Type, vtkShader*
 }
 
 //------------------------------------------------------------------------------
-void vtkSurfaceDetailShading::SetUniforms(vtkShaderProgram* program, vtkRenderer* ren) const
+void vtkSurfaceDetailShading::SetUniforms(vtkShaderProgram* program, vtkRenderer* ren,
+  vtkActor* act, vtkOpenGLVertexBufferObjectGroup* vbos) const
 {
+  if (this->ActiveTriplanar)
+  {
+    this->SetTriplanarUniforms(program, act, vbos);
+  }
   if (this->ActiveUsesNormalMap)
   {
     program->SetUniformi("sdNormalMap", TextureUnit(this->Detail->GetNormalMap()));
@@ -782,5 +874,70 @@ void vtkSurfaceDetailShading::SetUniforms(vtkShaderProgram* program, vtkRenderer
         ->GetKeyMatrices(ren, wcvc, normalMatrix, vcdc, wcdc);
       program->SetUniformMatrix("sdVCDCMatrix", vcdc);
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailShading::SetTriplanarUniforms(
+  vtkShaderProgram* program, vtkActor* act, vtkOpenGLVertexBufferObjectGroup* vbos) const
+{
+  // vertexMC is the point shifted and scaled by VTK (vtkOpenGLVertexBufferObject): the
+  // matrix first undoes that, then, in world space, applies the actor's matrix.
+  vtkNew<vtkMatrix4x4> toSpace;
+  vtkOpenGLVertexBufferObject* points = vbos ? vbos->GetVBO("vertexMC") : nullptr;
+  if (points && points->GetCoordShiftAndScaleEnabled())
+  {
+    const std::vector<double>& shift = points->GetShift();
+    const std::vector<double>& scale = points->GetScale();
+    for (int i = 0; i < 3; ++i)
+    {
+      toSpace->SetElement(i, i, 1.0 / scale[i]);
+      toSpace->SetElement(i, 3, shift[i]);
+    }
+  }
+  vtkNew<vtkMatrix3x3> normalToSpace;
+  vtkNew<vtkMatrix3x3> spaceToObjectNormal;
+  if (this->Detail->GetTriplanarSpace() == vtkSurfaceDetailMapper::WorldSpace)
+  {
+    vtkMatrix4x4* model = act->GetMatrix();
+    vtkMatrix4x4::Multiply4x4(model, toSpace, toSpace);
+    // Normals go to the world with the inverse transpose of the model matrix's 3x3 part, and
+    // come back with its transpose.
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        spaceToObjectNormal->SetElement(i, j, model->GetElement(j, i));
+        normalToSpace->SetElement(i, j, model->GetElement(i, j));
+      }
+    }
+    normalToSpace->Invert();
+    normalToSpace->Transpose();
+  }
+  // GLSL reads matrices column by column.
+  float matrix[16];
+  float normals[9];
+  float back[9];
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      matrix[4 * j + i] = static_cast<float>(toSpace->GetElement(i, j));
+      if (i < 3 && j < 3)
+      {
+        normals[3 * j + i] = static_cast<float>(normalToSpace->GetElement(i, j));
+        back[3 * j + i] = static_cast<float>(spaceToObjectNormal->GetElement(i, j));
+      }
+    }
+  }
+  program->SetUniformMatrix4x4("sdTriplanarMatrix", matrix);
+  program->SetUniformMatrix3x3("sdTriplanarNormalMatrix", normals);
+  program->SetUniformMatrix3x3("sdTriplanarToObjectNormal", back);
+  program->SetUniformf("sdTriplanarScale", static_cast<float>(this->Detail->GetTriplanarScale()));
+  program->SetUniformf(
+    "sdTriplanarSharpness", static_cast<float>(this->Detail->GetTriplanarSharpness()));
+  if (this->ActiveTriplanarColor)
+  {
+    program->SetUniformi("sdTriplanarColorTexture", TextureUnit(act->GetTexture()));
   }
 }

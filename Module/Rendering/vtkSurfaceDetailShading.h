@@ -26,6 +26,7 @@
 
 class vtkActor;
 class vtkObject;
+class vtkOpenGLVertexBufferObjectGroup;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
@@ -62,24 +63,26 @@ public:
 
   /**
    * Whether a primitive gets the detail: @a triangles (polygons or strips), drawn with point
-   * normals and 2-component texture coordinates uploaded (@a attributesUploaded), and lit
+   * normals uploaded, and 2-component texture coordinates unless mapped triplanar, and lit
    * (@a lightComplexity above 0).
    */
-  bool AppliesTo(bool triangles, bool attributesUploaded, int lightComplexity, vtkActor* act) const;
+  bool AppliesTo(bool triangles, bool normalsUploaded, bool tcoordsUploaded, int lightComplexity,
+    vtkActor* act) const;
   // The shader features in use: a program is rebuilt when it changes.
   std::string ShaderKey() const;
 
   ///@{
   /**
-   * Shader edits, each called after VTK's own replacement of the same name, for a primitive
-   * the detail applies to.
+   * Shader edits for a primitive the detail applies to: AddTags before VTK's replacements,
+   * the others each after VTK's own replacement of the same name.
    */
   void AddTags(std::map<vtkShader::Type, vtkShader*>& shaders) const;
   void ReplaceNormal(std::map<vtkShader::Type, vtkShader*>& shaders) const;
   void ReplaceLight(std::map<vtkShader::Type, vtkShader*>& shaders) const;
   void ReplaceTCoord(std::map<vtkShader::Type, vtkShader*>& shaders) const;
   ///@}
-  void SetUniforms(vtkShaderProgram* program, vtkRenderer* ren) const;
+  void SetUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act,
+    vtkOpenGLVertexBufferObjectGroup* vbos) const;
 
   // Binds the maps for the piece being drawn (uploading the height map when it changed).
   void BindMaps(vtkRenderer* ren);
@@ -93,6 +96,8 @@ private:
   void UploadHeightMap(vtkRenderer* ren);
   // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
   void AddReliefShadows(std::string& fs) const;
+  void SetTriplanarUniforms(
+    vtkShaderProgram* program, vtkActor* act, vtkOpenGLVertexBufferObjectGroup* vbos) const;
   // The problem that keeps @a technique from @a block, "" if none.
   std::string Problem(int technique, vtkPolyData* block, vtkActor* act) const;
 
@@ -104,6 +109,8 @@ private:
   bool ActiveUsesNormalMap = false;
   bool ActiveUsesHeightMap = false;
   bool ActiveUsesReliefMap = false;
+  bool ActiveTriplanar = false;
+  bool ActiveTriplanarColor = false;
   std::string TangentArray;
   std::string HandednessArray;
   std::string ReportedProblem;

@@ -22,6 +22,9 @@
  * - Normal maps store 0.5*n + 0.5 per component; green up (+Y = +t) by default.
  * - Integer normal maps round to nearest (flat is (128,128,255) in 8 bits); decoding
  *   renormalises (EncodeNormal/DecodeNormal; GLSL twin vtkSurfaceDetailNormalCoding.glsl).
+ * - Triplanar projection (TriplanarWeights, TriplanarProject, TriplanarNormal; GLSL twin
+ *   glsl/vtkSurfaceDetailTriplanarFS.glsl): three planar projections along the axes, each
+ *   seen from outside the face it maps, blended by the normal.
  */
 
 #ifndef vtkSurfaceDetailConventions_h
@@ -281,6 +284,83 @@ inline const char* HeightMapTypeAdvice()
   return "height maps are unsigned char or unsigned short (fractions of their range), or float "
          "or double (heights as they are): convert other types with vtkImageShiftScale "
          "(SetOutputScalarTypeToFloat, with the shift and scale that give the heights you mean)";
+}
+
+/**
+ * Triplanar blend weights of unit normal @a n: w_i = |n_i|^sharpness over their sum, then
+ * every weight under 1/256 set to 0 and the rest renormalised, so that a projection that
+ * would change an 8-bit colour by less than one level is not read at all. They sum to one.
+ */
+inline void TriplanarWeights(const double n[3], double sharpness, double w[3])
+{
+  double sum = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    w[i] = std::pow(std::abs(n[i]), sharpness);
+    sum += w[i];
+  }
+  double kept = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    w[i] = sum > 0.0 ? w[i] / sum : 1.0 / 3.0;
+    w[i] = w[i] < 1.0 / 256.0 ? 0.0 : w[i];
+    kept += w[i];
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    w[i] /= kept;
+  }
+}
+
+/**
+ * The planar projection along axis @a axis (0 = x, 1 = y, 2 = z) of point @a p whose normal
+ * is @a n: its texture coordinates (@a st, scaled by @a scale) and its tangent and bitangent
+ * (unit axis vectors along +s and +t). Each face is mapped as seen from outside it, right way
+ * round: T x B points out of the face, on the faces along negative axes too. With sigma the
+ * sign of n along the axis (+1 where it is 0):
+ *   x:  s =  sigma*y,  t = z,  T = (0, sigma, 0),  B = (0, 0, 1)
+ *   y:  s = -sigma*x,  t = z,  T = (-sigma, 0, 0), B = (0, 0, 1)
+ *   z:  s =  sigma*x,  t = y,  T = (sigma, 0, 0),  B = (0, 1, 0)
+ */
+inline void TriplanarProject(int axis, const double p[3], const double n[3], double scale,
+  double st[2], double tangent[3], double bitangent[3])
+{
+  const double sigma = n[axis] < 0.0 ? -1.0 : 1.0;
+  const int s = axis == 0 ? 1 : 0; // the axis s runs along
+  const double sSign = axis == 1 ? -sigma : sigma;
+  const int t = axis == 2 ? 1 : 2; // the axis t runs along
+  st[0] = scale * sSign * p[s];
+  st[1] = scale * p[t];
+  for (int i = 0; i < 3; ++i)
+  {
+    tangent[i] = i == s ? sSign : 0.0;
+    bitangent[i] = i == t ? 1.0 : 0.0;
+  }
+}
+
+/**
+ * A tangent-space normal @a nTS of projection frame (@a tangent, @a bitangent) on a surface
+ * of unit normal @a n, as a vector in the projection's space: the frame is reoriented to the
+ * surface (T made orthogonal to n, B = n x T), so that a bump looks the same on every face
+ * and the flat normal (0,0,1) gives the surface normal. Not normalised; the detail normal
+ * is the sum over the projections of weight times this normalised, itself normalised.
+ */
+inline void TriplanarNormal(const double nTS[3], const double n[3], const double tangent[3],
+  double out[3])
+{
+  const double along = n[0] * tangent[0] + n[1] * tangent[1] + n[2] * tangent[2];
+  double T[3] = { tangent[0] - along * n[0], tangent[1] - along * n[1], tangent[2] - along * n[2] };
+  const double length = std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
+  for (double& c : T)
+  {
+    c = length > 0.0 ? c / length : 0.0;
+  }
+  const double B[3] = { n[1] * T[2] - n[2] * T[1], n[2] * T[0] - n[0] * T[2],
+    n[0] * T[1] - n[1] * T[0] };
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = nTS[0] * T[i] + nTS[1] * B[i] + nTS[2] * n[i];
+  }
 }
 
 } // namespace vtkSurfaceDetail

@@ -58,23 +58,23 @@ constexpr int WindowSize = 200;
 constexpr double Pi = 3.14159265358979323846;
 using Vec3 = std::array<double, 3>;
 
-Vec3 Normalized(const Vec3& v)
+inline Vec3 Normalized(const Vec3& v)
 {
   const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
   return { v[0] / l, v[1] / l, v[2] / l };
 }
-double Dot(const Vec3& a, const Vec3& b)
+inline double Dot(const Vec3& a, const Vec3& b)
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 // The test surface: h(s,t) = 0.5 + 0.2 sin(2 pi s) + 0.15 sin(4 pi t + 1), periodic on the
 // unit square, with different slopes along s and t so that swapped axes show.
-double Height(double s, double t)
+inline double Height(double s, double t)
 {
   return 0.5 + 0.2 * std::sin(2 * Pi * s) + 0.15 * std::sin(4 * Pi * t + 1.0);
 }
-void HeightGradient(double s, double t, double& hs, double& ht)
+inline void HeightGradient(double s, double t, double& hs, double& ht)
 {
   hs = 0.4 * Pi * std::cos(2 * Pi * s);
   ht = 0.6 * Pi * std::cos(4 * Pi * t + 1.0);
@@ -82,7 +82,7 @@ void HeightGradient(double s, double t, double& hs, double& ht)
 constexpr double Strength = 0.25; // the normal map is that of z = Strength*h(s,t)
 
 // Tangent-space normal of z = k*h(s,t).
-Vec3 TangentSpaceNormal(double s, double t, double k = Strength)
+inline Vec3 TangentSpaceNormal(double s, double t, double k = Strength)
 {
   double hs, ht;
   HeightGradient(s, t, hs, ht);
@@ -91,7 +91,7 @@ Vec3 TangentSpaceNormal(double s, double t, double k = Strength)
 
 // A (cells x cells) grid over [-1,1]^2 at z = 0 with normal +z, texture coordinates
 // (s,t) = ((x+1)/2, (y+1)/2), or s mirrored (s = (1-x)/2, tangent -x, w = -1).
-vtkSmartPointer<vtkPolyData> MakeRectangle(
+inline vtkSmartPointer<vtkPolyData> MakeRectangle(
   bool mirrored, bool tangents = true, bool tcoords = true, bool normals = true)
 {
   constexpr int cells = 8;
@@ -147,7 +147,7 @@ vtkSmartPointer<vtkPolyData> MakeRectangle(
 }
 
 // A float texture of f(s,t) sampled at texel centres, linear filtering, repeat.
-vtkSmartPointer<vtkTexture> MakeTexture(
+inline vtkSmartPointer<vtkTexture> MakeTexture(
   int size, int comps, const std::function<void(double, double, double*)>& f)
 {
   vtkNew<vtkImageData> image;
@@ -174,7 +174,7 @@ vtkSmartPointer<vtkTexture> MakeTexture(
   return texture;
 }
 
-vtkSmartPointer<vtkTexture> MakeNormalMap(bool greenUp = true)
+inline vtkSmartPointer<vtkTexture> MakeNormalMap(bool greenUp = true)
 {
   return MakeTexture(256, 3,
     [greenUp](double s, double t, double* rgb)
@@ -186,7 +186,7 @@ vtkSmartPointer<vtkTexture> MakeNormalMap(bool greenUp = true)
     });
 }
 
-vtkSmartPointer<vtkTexture> MakeHeightMap(double constant = -1.0)
+inline vtkSmartPointer<vtkTexture> MakeHeightMap(double constant = -1.0)
 {
   return MakeTexture(256, 1,
     [constant](double s, double t, double* h) { h[0] = constant >= 0 ? constant : Height(s, t); });
@@ -283,7 +283,7 @@ struct Hit
   bool Inside;
 };
 
-Hit PixelHit(int i, int j, vtkMatrix4x4* m)
+inline Hit PixelHit(int i, int j, vtkMatrix4x4* m)
 {
   const double wx = -1.0 + 2.0 * (i + 0.5) / WindowSize;
   const double wy = -1.0 + 2.0 * (j + 0.5) / WindowSize;
@@ -308,7 +308,7 @@ Hit PixelHit(int i, int j, vtkMatrix4x4* m)
 
 // VTK's Phong for one directional light, view coordinates = world shifted by the camera
 // (the camera looks down -z from z = 5 with y up).
-Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
+inline Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
 {
   Vec3 L = Normalized({ -LightPosition[0], -LightPosition[1], -LightPosition[2] });
   double attenuation = 1.0;
@@ -339,7 +339,7 @@ Vec3 Shade(const Vec3& nWorld, const Vec3& world, const Material& mat)
 
 // The PSNR of an image against the expected colour (in [0,1], clamped) of every pixel well
 // inside the rectangle placed by matrix m.
-double PSNRInside(const std::vector<unsigned char>& image, vtkMatrix4x4* m,
+inline double PSNRInside(const std::vector<unsigned char>& image, vtkMatrix4x4* m,
   const std::function<Vec3(const Hit&)>& expected)
 {
   double sum = 0.0;
@@ -374,7 +374,7 @@ double PSNRInside(const std::vector<unsigned char>& image, vtkMatrix4x4* m,
 // over the pixels well inside the rectangle.
 using NormalField = std::function<Vec3(double x, double y)>;
 
-double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
+inline double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const NormalField& field,
   const Material& mat)
 {
   vtkMatrix4x4* m = actor->GetMatrix();
@@ -397,7 +397,7 @@ double PSNR(const std::vector<unsigned char>& image, vtkActor* actor, const Norm
 
 // The model-space normal of the detail surface at model point (x,y) of the rectangle,
 // through the frame T = (tx,0,0), B = (0,1,0), N = +z.
-NormalField DetailNormal(bool mirrored, double k = Strength)
+inline NormalField DetailNormal(bool mirrored, double k = Strength)
 {
   return [mirrored, k](double x, double y)
   {
@@ -407,7 +407,7 @@ NormalField DetailNormal(bool mirrored, double k = Strength)
   };
 }
 
-NormalField FlatNormal()
+inline NormalField FlatNormal()
 {
   return [](double, double) { return Vec3{ 0, 0, 1 }; };
 }
@@ -425,7 +425,7 @@ struct ErrorCounter : public vtkCommand
   std::string Last;
 };
 
-vtkSmartPointer<vtkSurfaceDetailMapper> MakeMapper(vtkPolyData* poly)
+inline vtkSmartPointer<vtkSurfaceDetailMapper> MakeMapper(vtkPolyData* poly)
 {
   auto mapper = vtkSmartPointer<vtkSurfaceDetailMapper>::New();
   mapper->SetInputData(poly);

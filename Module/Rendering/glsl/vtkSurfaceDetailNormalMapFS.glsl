@@ -10,8 +10,13 @@
 uniform sampler2D sdNormalMap;
 uniform vec2 sdNormalScaleXY;
 
+vec3 sdNormalMapDecodeTS(vec3 rgb)
+{
+  vec3 n = 2.0 * rgb - 1.0;
+  return vec3(sdNormalScaleXY * n.xy, n.z);
+}
+
 vec3 sdNormalMapTS(vec2 tc)
 {
-  vec3 n = 2.0 * texture(sdNormalMap, tc).rgb - 1.0;
-  return vec3(sdNormalScaleXY * n.xy, n.z);
+  return sdNormalMapDecodeTS(texture(sdNormalMap, tc).rgb);
 }
