@@ -103,10 +103,19 @@ struct Displacer
   double ScaleFactor;
   double Midlevel;
   int Mode;
+  bool Triplanar;
+  double TriplanarScale;
+  double TriplanarSharpness;
 
-  // The heights and slopes of the block's points, in D, Ds, Dt.
+  // The heights and slopes of the block's points, in D, Ds, Dt (triplanar: D and the
+  // gradient G).
   void Sample(PointBlock& b) const
   {
+    if (this->Triplanar)
+    {
+      this->SampleTriplanar(b);
+      return;
+    }
     const int nc = this->In.TCoordsNC;
     const R* tc = this->In.TCoords;
     for (int k = 0; k < b.Count; ++k)
@@ -115,6 +124,53 @@ struct Displacer
       b.T[k] = tc[nc * b.Ids[k] + 1];
     }
     this->Map.Sample(b.Count, b.S, b.T, b.D, b.Ds, b.Dt);
+  }
+
+  // The height blended from the three projections of the height map (D), and its gradient
+  // in the input's coordinates (Gx, Gy, Gz): each projection's slopes along its own axes, the
+  // weights held constant.
+  void SampleTriplanar(PointBlock& b) const
+  {
+    UnitNormals(this->In, b);
+    // Per projection: the points' texture coordinates, weights and axis frames.
+    double st[3][2][Block], w[3][Block], T[3][3][Block], B[3][3][Block];
+    for (int k = 0; k < b.Count; ++k)
+    {
+      const R* q = this->In.Points + 3 * b.Ids[k];
+      const double p[3] = { double(q[0]), double(q[1]), double(q[2]) };
+      const double n[3] = { b.Nx[k], b.Ny[k], b.Nz[k] };
+      double weights[3];
+      vtkSurfaceDetail::TriplanarWeights(n, this->TriplanarSharpness, weights);
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        double coordinates[2], tangent[3], bitangent[3];
+        vtkSurfaceDetail::TriplanarProject(
+          axis, p, n, this->TriplanarScale, coordinates, tangent, bitangent);
+        st[axis][0][k] = coordinates[0];
+        st[axis][1][k] = coordinates[1];
+        w[axis][k] = weights[axis];
+        for (int c = 0; c < 3; ++c)
+        {
+          T[axis][c][k] = tangent[c];
+          B[axis][c][k] = bitangent[c];
+        }
+      }
+      b.D[k] = b.Gx[k] = b.Gy[k] = b.Gz[k] = 0.0;
+    }
+    Lanes h, hs, ht;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Map.Sample(b.Count, st[axis][0], st[axis][1], h, hs, ht);
+      for (int k = 0; k < b.Count; ++k)
+      {
+        // s and t advance TriplanarScale per unit along T and B.
+        const double c = w[axis][k] * this->TriplanarScale;
+        b.D[k] += w[axis][k] * h[k];
+        b.Gx[k] += c * (hs[k] * T[axis][0][k] + ht[k] * B[axis][0][k]);
+        b.Gy[k] += c * (hs[k] * T[axis][1][k] + ht[k] * B[axis][1][k]);
+        b.Gz[k] += c * (hs[k] * T[axis][2][k] + ht[k] * B[axis][2][k]);
+      }
+    }
   }
 
   // The heights in D, Ds, Dt made displacements d = ScaleFactor (h - Midlevel) and their slopes,
@@ -127,6 +183,21 @@ struct Displacer
       b.D[k] = Finite(scale * (b.D[k] - midlevel));
       b.Ds[k] = Finite(scale * b.Ds[k]);
       b.Dt[k] = Finite(scale * b.Dt[k]);
+      b.Gx[k] = Finite(scale * b.Gx[k]);
+      b.Gy[k] = Finite(scale * b.Gy[k]);
+      b.Gz[k] = Finite(scale * b.Gz[k]);
+    }
+  }
+
+  // Triplanar Approximate normals: n minus the displacement's gradient along the surface.
+  static void TriplanarNormals(PointBlock& b)
+  {
+    for (int k = 0; k < b.Count; ++k)
+    {
+      const double along = b.Gx[k] * b.Nx[k] + b.Gy[k] * b.Ny[k] + b.Gz[k] * b.Nz[k];
+      b.Mx[k] = b.Nx[k] - (b.Gx[k] - along * b.Nx[k]);
+      b.My[k] = b.Ny[k] - (b.Gy[k] - along * b.Ny[k]);
+      b.Mz[k] = b.Nz[k] - (b.Gz[k] - along * b.Nz[k]);
     }
   }
 
@@ -218,7 +289,12 @@ struct Displacer
         const double offset[3] = { b.D[k] * b.Nx[k], b.D[k] * b.Ny[k], b.D[k] * b.Nz[k] };
         this->WritePoint(b.Ids[k], offset);
       }
-      if (Analytic)
+      if (Analytic && this->Triplanar)
+      {
+        TriplanarNormals(b);
+        WriteNormalsAndTangents(this->In, this->Out, b);
+      }
+      else if (Analytic)
       {
         Derivatives(this->In, this->FitSums, sums, begin, Exact, b);
         Directions<Exact>(b);
@@ -277,8 +353,11 @@ public:
     in.NumPoints = input->GetNumberOfPoints();
     in.Points = this->Read(input->GetPoints()->GetData());
     in.Normals = this->Read(this->InNormals);
-    in.TCoords = this->Read(pd->GetTCoords());
-    in.TCoordsNC = pd->GetTCoords()->GetNumberOfComponents();
+    if (!filter->GetTriplanar())
+    {
+      in.TCoords = this->Read(pd->GetTCoords());
+      in.TCoordsNC = pd->GetTCoords()->GetNumberOfComponents();
+    }
     if (derivatives)
     {
       in.DPdu = this->Read(Vector(pd, "dPdu"));
@@ -316,7 +395,8 @@ public:
 
     // Passes that sum over polygons own ranges of points of the runs' grain.
     const bool exact = mode == vtkDisplacementMapFilter::Exact;
-    const bool analytic = exact || mode == vtkDisplacementMapFilter::Approximate;
+    const bool triplanar = f->GetTriplanar();
+    const bool analytic = !triplanar && (exact || mode == vtkDisplacementMapFilter::Approximate);
     const Fits<R, Id> fits{ this->In, polys, runs, analytic && !this->In.DPdu,
       exact && !this->In.DNdu };
     const vtkIdType grain = fits.Any() || mode == vtkDisplacementMapFilter::Mesh
@@ -329,7 +409,8 @@ public:
     const bool mesh = mode == vtkDisplacementMapFilter::Mesh;
     vtkSurfaceDetail::Progress progress(f, 0.2, 0.95, mesh ? 2 * n : n);
     const Displacer<R, Id> pass{ this->In, this->Out, *map, fits, scratch, progress,
-      f->GetScaleFactor(), f->GetMidlevel(), mode };
+      f->GetScaleFactor(), f->GetMidlevel(), mode, triplanar, f->GetTriplanarScale(),
+      f->GetTriplanarSharpness() };
     vtkSMPTools::For(0, n, grain, pass);
     MergeSeamPoints(pass, groups);
     if (mesh)
@@ -537,7 +618,13 @@ bool vtkDisplacementMapFilter::CheckSurface(vtkPolyData* input)
                   "generate the surface with vtkParametricSurfaceSource.");
     return false;
   }
-  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  if (this->Triplanar && this->NormalMode == Exact)
+  {
+    vtkErrorMacro("Exact normals need texture coordinates (and the surface's derivatives in "
+                  "them); with Triplanar sampling choose the Approximate or Mesh NormalMode.");
+    return false;
+  }
+  if (!this->Triplanar && (!tcoords || tcoords->GetNumberOfComponents() < 2))
   {
     vtkErrorMacro("The input has no point texture coordinates (2 or more components); "
                   "they locate each point in the height map. Generate them, e.g. with "
@@ -631,7 +718,9 @@ int vtkDisplacementMapFilter::RequestData(
   // One precision for all: float when every array read is float (as VTK's sources make them),
   // else double. The work is done in double either way.
   vtkPointData* pd = input->GetPointData();
-  const bool analytic = this->NormalMode == Approximate || this->NormalMode == Exact;
+  // Triplanar sampling takes its slopes along the axes: no surface derivatives are read.
+  const bool analytic =
+    !this->Triplanar && (this->NormalMode == Approximate || this->NormalMode == Exact);
   vtkDataArray* dPdu = Vector(pd, "dPdu");
   vtkDataArray* dPdv = Vector(pd, "dPdv");
   const bool derivatives = analytic && dPdu && dPdv;
@@ -640,7 +729,7 @@ int vtkDisplacementMapFilter::RequestData(
   vtkDataArray* dNdv = Vector(pd, "dNdv");
   const bool normalDerivatives = derivatives && this->NormalMode == Exact && dNdu && dNdv;
   std::vector<vtkDataArray*> used = { input->GetPoints()->GetData(), pd->GetNormals(),
-    pd->GetTCoords(), this->InputTangents(input) };
+    this->Triplanar ? nullptr : pd->GetTCoords(), this->InputTangents(input) };
   if (derivatives)
   {
     used.insert(used.end(), { dPdu, dPdv });
@@ -752,6 +841,9 @@ void vtkDisplacementMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BorderHeight: " << this->BorderHeight << "\n";
   os << indent << "Interpolation: " << this->GetInterpolationAsString() << "\n";
   os << indent << "NormalMode: " << this->GetNormalModeAsString() << "\n";
+  os << indent << "Triplanar: " << (this->Triplanar ? "On" : "Off") << "\n";
+  os << indent << "TriplanarScale: " << this->TriplanarScale << "\n";
+  os << indent << "TriplanarSharpness: " << this->TriplanarSharpness << "\n";
   os << indent << "MergeSeams: " << (this->MergeSeams ? "On" : "Off") << "\n";
   os << indent << "SeamTolerance: " << this->SeamTolerance << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";

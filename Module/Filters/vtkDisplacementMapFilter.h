@@ -243,6 +243,30 @@ public:
 
   ///@{
   /**
+   * Triplanar sampling, for surfaces without texture coordinates (isosurfaces, scans, terrain):
+   * the height at a point is the blend of the height map projected along the three axes of
+   * the input's coordinates, TriplanarScale texture squares per unit, weighted by the point's
+   * normal with exponent TriplanarSharpness, by the rules vtkSurfaceDetailMapper's triplanar
+   * mapping uses (vtkSurfaceDetail::TriplanarProject and TriplanarWeights in
+   * vtkSurfaceDetailConventions.h), so that a displaced surface and a bump-mapped one of the
+   * same map agree. Normal modes: Approximate gives n - grad d made unit, grad d the gradient
+   * of the displacement along the surface (each projection's slope taken along its own axes,
+   * the weights held constant, as bump mapping does); Mesh and Input as without it; Exact
+   * needs texture coordinates and is refused. For small displacements the Approximate normal
+   * is what the mapper's triplanar bump mapping shades with BumpScale = ScaleFactor *
+   * TriplanarScale. Default off.
+   */
+  vtkSetMacro(Triplanar, bool);
+  vtkGetMacro(Triplanar, bool);
+  vtkBooleanMacro(Triplanar, bool);
+  vtkSetMacro(TriplanarScale, double);
+  vtkGetMacro(TriplanarScale, double);
+  vtkSetClampMacro(TriplanarSharpness, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(TriplanarSharpness, double);
+  ///@}
+
+  ///@{
+  /**
    * Whether coincident points (texture seams, poles) are moved together and share normals.
    * Default on.
    */
@@ -308,6 +332,9 @@ protected:
   double BorderHeight = 0.0;
   int Interpolation = Linear;
   int NormalMode = Exact;
+  bool Triplanar = false;
+  double TriplanarScale = 1.0;
+  double TriplanarSharpness = 4.0;
   bool MergeSeams = true;
   double SeamTolerance = 1e-6;
   int OutputPointsPrecision = DEFAULT_PRECISION;

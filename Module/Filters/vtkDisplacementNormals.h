@@ -103,6 +103,7 @@ struct PointBlock
   Lanes Ntx, Nty, Ntz; // n_t (Exact)
   Lanes Mx, My, Mz;    // the output normals
   Lanes Tx, Ty, Tz;    // the output tangents
+  Lanes Gx, Gy, Gz;    // triplanar: the height's, then the displacement's gradient
   Lanes Ok;            // a flag per point for the step at hand
 
   /// The points [first, first + count).

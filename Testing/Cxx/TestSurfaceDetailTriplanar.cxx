@@ -14,6 +14,7 @@
 
 #include "SurfaceDetailImageComparison.h"
 #include "SurfaceDetailMapperAnalyticScene.h"
+#include "vtkDisplacementMapFilter.h"
 #include "vtkParametricSphere.h"
 #include "vtkParametricSurfaceSource.h"
 #include "vtkSurfaceDetailConventions.h"
@@ -472,4 +473,74 @@ TEST(vtkSurfaceDetailTriplanar, WorldSpaceFollowsTheWorld)
   };
   const auto world = moved(true);
   EXPECT_LE(FractionOver(world, moved(false)), SurfaceDetailImageComparison::MaxFractionOver);
+}
+
+// A sphere displaced a little by the filter's triplanar sampling (Approximate normals, drawn
+// plain) shades as the undisplaced sphere bump-mapped triplanar with the same map and
+// BumpScale = ScaleFactor * TriplanarScale; bumps sunk instead of raised do not.
+TEST(vtkSurfaceDetailTriplanar, DisplacementAgreesWithBumpMapping)
+{
+  constexpr double scaleFactor = 0.05;
+  auto heights = MakeHeightMap();
+  vtkNew<vtkParametricSphere> sphere;
+  sphere->SetRadius(SphereRadius);
+  vtkNew<vtkParametricSurfaceSource> source;
+  source->SetParametricFunction(sphere);
+  source->SetUResolution(512);
+  source->SetVResolution(256);
+  source->GenerateTextureCoordinatesOff();
+  vtkNew<vtkDisplacementMapFilter> displace;
+  displace->SetInputConnection(source->GetOutputPort());
+  displace->SetSourceData(heights->GetInput());
+  displace->SetWrapToRepeat();
+  displace->SetScaleFactor(scaleFactor);
+  displace->SetMidlevel(0.5);
+  displace->SetNormalModeToApproximate();
+  displace->TriplanarOn();
+  displace->SetTriplanarScale(Scale);
+  displace->Update();
+  auto displacedMapper = MakeMapper(displace->GetOutput());
+  Scene displaced(displacedMapper);
+  const auto reference = displaced.Render();
+
+  auto render = [&](double bumpScale)
+  {
+    auto mapper = MakeSphereMapper();
+    mapper->SetTechniqueToBumpMapping();
+    mapper->SetHeightMap(heights);
+    mapper->SetBumpScale(bumpScale);
+    Scene scene(mapper);
+    return scene.Render();
+  };
+  auto psnr = [&](const std::vector<unsigned char>& image)
+  {
+    double sum = 0.0;
+    long count = 0;
+    for (int j = 0; j < WindowSize; ++j)
+    {
+      for (int i = 0; i < WindowSize; ++i)
+      {
+        const double x = -1.0 + 2.0 * (i + 0.5) / WindowSize;
+        const double y = -1.0 + 2.0 * (j + 0.5) / WindowSize;
+        if (x * x + y * y > 0.9 * 0.9 * SphereRadius * SphereRadius)
+        {
+          continue;
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          const double d = double(image[3 * (j * WindowSize + i) + k]) -
+            reference[3 * (j * WindowSize + i) + k];
+          sum += d * d;
+          ++count;
+        }
+      }
+    }
+    return 10.0 * std::log10(255.0 * 255.0 / std::max(sum / count, 1e-12));
+  };
+  const double agree = psnr(render(scaleFactor * Scale));
+  const double sunk = psnr(render(-scaleFactor * Scale));
+  std::cout << "bump mapping against the displaced sphere: " << agree << " dB; sunk: " << sunk
+            << " dB\n";
+  EXPECT_GE(agree, 40.0);
+  EXPECT_LT(sunk, 35.0);
 }
