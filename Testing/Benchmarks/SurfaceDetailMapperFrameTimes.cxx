@@ -10,12 +10,15 @@
 // the relief variants the image error (RMSE in 8-bit levels over the surface's pixels)
 // against relief with 256 linear and 16 binary steps, so that settings compare at equal
 // error.
-// Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall]
+// Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall|triplanar]
 //   rounds: default 60. --size: the window's side, default 1024 (a real GPU needs 4096 for
 //   the surface shading to outweigh a frame's fixed cost). --scene: a sphere filling most of
-//   the window (default), or a wall seen head-on filling all of it.
+//   the window (default), a wall seen head-on filling all of it, or the sphere without
+//   texture coordinates mapped triplanar (colour, colour + normal map, bump) at several blend
+//   sharpnesses, with the share of its pixels that read one, two or three projections.
 
 #include "SurfaceDetailTruthScenes.h"
+#include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMapper.h"
 
 #include <vtkActor.h>
@@ -86,7 +89,12 @@ struct Variant
   int BinarySteps = 8;
   bool Shadows = false;
   bool DepthCorrection = false;
+  double TriplanarSharpness = 0.0; // 0: texture coordinates; else triplanar, this sharpness
 };
+
+// Texture squares per unit when the sphere is mapped triplanar: about the size of the texture
+// squares its texture coordinates give it.
+constexpr double TriplanarScale = 0.7;
 
 // The height map's relief map: normals of the relief DepthScale deep on a texture square
 // about as large as the scene's, depth in alpha.
@@ -123,6 +131,9 @@ vtkSmartPointer<vtkActor> MakeActor(
     detail->SetBinarySearchSteps(variant.BinarySteps);
     detail->SetSelfShadowing(variant.Shadows);
     detail->SetDepthCorrection(variant.DepthCorrection);
+    detail->SetTriplanar(variant.TriplanarSharpness > 0.0);
+    detail->SetTriplanarSharpness(std::max(variant.TriplanarSharpness, 1.0));
+    detail->SetTriplanarScale(TriplanarScale);
     mapper = detail;
   }
   mapper->SetInputConnection(surface);
@@ -157,6 +168,37 @@ double SurfaceRMSE(const std::vector<unsigned char>& a, const std::vector<unsign
   return count ? std::sqrt(sum / (3.0 * count)) : 0.0;
 }
 
+// The share of a sphere's pixels (seen along any axis: a sphere looks the same from all)
+// whose blend reads one, two or three projections, for the sharpnesses timed.
+void PrintProjectionShares()
+{
+  std::printf("\n| sharpness | pixels reading 1 projection | 2 | 3 |\n|---|---:|---:|---:|\n");
+  for (const double sharpness : { 1.0, 4.0, 16.0 })
+  {
+    double share[3] = { 0, 0, 0 }, total = 0;
+    constexpr int n = 400;
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = -1 + 2 * (i + 0.5) / n, y = -1 + 2 * (j + 0.5) / n;
+        if (x * x + y * y >= 1)
+        {
+          continue;
+        }
+        const double normal[3] = { x, y, std::sqrt(1 - x * x - y * y) };
+        double w[3];
+        vtkSurfaceDetail::TriplanarWeights(normal, sharpness, w);
+        const int read = (w[0] > 0) + (w[1] > 0) + (w[2] > 0);
+        share[read - 1] += 1;
+        total += 1;
+      }
+    }
+    std::printf("| %g | %.0f%% | %.0f%% | %.0f%% |\n", sharpness, 100 * share[0] / total,
+      100 * share[1] / total, 100 * share[2] / total);
+  }
+}
+
 const char* Option(int argc, char* argv[], const char* name, const char* fallback)
 {
   for (int i = 1; i + 1 < argc; ++i)
@@ -177,11 +219,12 @@ int main(int argc, char* argv[])
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
       std::cout
-        << "Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall]\n\n"
+        << "Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall|triplanar]\n\n"
            "Median frame time of each vtkSurfaceDetailMapper technique against VTK's plain\n"
            "mapper, and relief's image error against a reference, as a Markdown table.\n"
            "rounds: default 60; --size: the window's side, default 1024; --scene: a sphere\n"
-           "filling most of the window (default) or a wall seen head-on.\n";
+           "filling most of the window (default), a wall seen head-on, or the sphere mapped\n"
+           "triplanar (no texture coordinates) at several blend sharpnesses.\n";
       return 0;
     }
   }
@@ -190,7 +233,20 @@ int main(int argc, char* argv[])
   const std::string scene = Option(argc, argv, "--scene", "sphere");
   using SDM = vtkSurfaceDetailMapper;
   const int relief = SDM::ReliefMapping;
-  const std::vector<Variant> variants = {
+  const std::vector<Variant> triplanarVariants = {
+    { "vtkOpenGLPolyDataMapper (plain, colour by texture coordinates)", -1 },
+    { "NormalMapping by texture coordinates", SDM::NormalMapping },
+    { "Triplanar colour, sharpness 4", SDM::Plain, false, 32, true, 8, false, false, 4.0 },
+    { "Triplanar colour + NormalMapping, sharpness 1", SDM::NormalMapping, false, 32, true, 8,
+      false, false, 1.0 },
+    { "Triplanar colour + NormalMapping, sharpness 4", SDM::NormalMapping, false, 32, true, 8,
+      false, false, 4.0 },
+    { "Triplanar colour + NormalMapping, sharpness 16", SDM::NormalMapping, false, 32, true, 8,
+      false, false, 16.0 },
+    { "Triplanar colour + BumpMapping, sharpness 4", SDM::BumpMapping, false, 32, true, 8, false,
+      false, 4.0 },
+  };
+  const std::vector<Variant> detailVariants = {
     { "vtkOpenGLPolyDataMapper (plain)", -1 },
     { "Plain", SDM::Plain },
     { "NormalMapping", SDM::NormalMapping },
@@ -207,6 +263,7 @@ int main(int argc, char* argv[])
     { "ReliefMapping, DepthCorrection", relief, false, 32, true, 8, false, true },
     { "ReliefMapping, reference 256 + 16", relief, false, 256, false, 16 },
   };
+  const std::vector<Variant>& variants = scene == "triplanar" ? triplanarVariants : detailVariants;
   const size_t reference = variants.size() - 1;
 
   vtkNew<vtkParametricSurfaceSource> source;
@@ -233,12 +290,21 @@ int main(int argc, char* argv[])
   }
   source->GenerateTangentsOn();
   vtkSmartPointer<vtkTexture> reliefMap = ReliefTexture(depth, textureSide);
+  // Triplanar variants draw the same sphere without texture coordinates (with them, VTK
+  // itself would apply the colour texture by them).
+  vtkNew<vtkParametricSurfaceSource> bare;
+  bare->SetParametricFunction(sphere);
+  bare->SetUResolution(128);
+  bare->SetVResolution(64);
+  bare->GenerateTextureCoordinatesOff();
 
   vtkNew<vtkRenderer> renderer;
   std::vector<vtkSmartPointer<vtkActor>> actors;
   for (const auto& variant : variants)
   {
-    actors.push_back(MakeActor(source->GetOutputPort(), variant, reliefMap, depth));
+    vtkAlgorithmOutput* surface =
+      variant.TriplanarSharpness > 0.0 ? bare->GetOutputPort() : source->GetOutputPort();
+    actors.push_back(MakeActor(surface, variant, reliefMap, depth));
     renderer->AddActor(actors.back());
   }
   renderer->ResetCamera();
@@ -306,5 +372,9 @@ int main(int argc, char* argv[])
   }
   std::printf(
     "\n%d interleaved frames per variant, %dx%d, scene %s\n", rounds, size, size, scene.c_str());
+  if (scene == "triplanar")
+  {
+    PrintProjectionShares();
+  }
   return 0;
 }
