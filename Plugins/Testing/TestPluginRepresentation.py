@@ -8,8 +8,10 @@ its baseline by the project's strict comparison.
 A torus with the repository's brick maps: normal mapping with a normal map made in the pipeline
 (a "Height Map To Normal Map" filter behind a texture), bump mapping with a height map read from
 a file, parallax mapping with both and the brick colours, relief mapping with the filter's
-relief map and self-shadowing. Prints "every picture matches its baseline"; with "off" the same
-scenes are drawn with the technique switched off (Plain), and each must then fail its baseline:
+relief map and self-shadowing; and triplanar normal mapping with the brick colours on an
+isosurface of the Wavelet source, which has no texture coordinates. Prints "every picture
+matches its baseline"; with "off" the same scenes are drawn with the technique (or triplanar
+mapping) switched off, and each must then fail its baseline:
 prints "every technique switched off was caught"."""
 import os
 import sys
@@ -117,6 +119,38 @@ for name, settings in scenes.items():
     results[name] = fraction_over(candidate, baseline)
     print("%s: %.4f of the pixels differ by more than %d levels" %
           (name, results[name], TOLERANCE))
+
+# Triplanar mapping on an isosurface without texture coordinates or tangents: the brick
+# colours and the pipeline normal map projected along the axes.
+Hide(torus, view)
+iso = Contour(Input=Wavelet(), ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0],
+              ComputeNormals=1)
+iso_display = Show(iso, view)
+ColorBy(iso_display, None)
+iso_display.SetRepresentationType("Surface Detail")
+iso_display.DiffuseColor = [1.0, 1.0, 1.0]
+iso_display.SurfaceDetailTechnique = "Normal Mapping"
+iso_display.SurfaceDetailNormalMap = pipeline_texture(normal_map)
+iso_display.Texture = scenes["parallax"]["Texture"]
+iso_display.SurfaceDetailTriplanar = 0 if switched_off else 1
+iso_display.SurfaceDetailTriplanarScale = 0.1
+view.CameraPosition = [30.0, 24.0, 40.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.ResetCamera()
+GetActiveCamera().Dolly(1.5)
+scenes["triplanar"] = {}
+candidate = os.path.join(output, "Representation_triplanar.png")
+SaveScreenshot(candidate, view)
+if rank == 0:
+    baseline = os.path.join(baselines, "Representation_triplanar.png")
+    if not os.path.exists(baseline):
+        print("ImageNotFound: %s (the candidate is %s)" % (baseline, candidate))
+        results["triplanar"] = 1.0
+    else:
+        results["triplanar"] = fraction_over(candidate, baseline)
+        print("triplanar: %.4f of the pixels differ by more than %d levels" %
+              (results["triplanar"], TOLERANCE))
 
 if rank == 0:
     failed = [name for name, over in results.items() if over > MAX_FRACTION_OVER]

@@ -46,6 +46,10 @@ public:
   void SetBumpScale(double scale);
   void SetDifferenceScheme(int scheme);
   void SetTangentFree(bool tangentFree);
+  void SetTriplanar(bool triplanar);
+  void SetTriplanarSpace(int space);
+  void SetTriplanarScale(double scale);
+  void SetTriplanarSharpness(double sharpness);
   void SetDepthScale(double depth);
   void SetLinearSearchSteps(int steps);
   void SetBinarySearchSteps(int steps);
