@@ -7,6 +7,11 @@
 # Surface Detail group and writes a picture of the whole screen to the file given. The clicks
 # are at fixed places of a 1500 x 950 screen: they fit ParaView 5.11's default layout.
 set -euo pipefail
+# --help prints the comment above and does nothing else.
+if [[ "${1-}" == --help || "${1-}" == -h ]]; then
+  sed -n '4,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "${BASH_SOURCE[0]}"
+  exit 0
+fi
 out="${1:?usage: paraview-window.sh <out.png>}"
 export DISPLAY=:57 HOME=/tmp/paraview-window-home
 export PV_PLUGIN_PATH=/build/lib/SurfaceDetail SURFACEDETAIL_DATA=/src/Data

@@ -544,3 +544,53 @@ TEST(vtkSurfaceDetailTriplanar, DisplacementAgreesWithBumpMapping)
   EXPECT_GE(agree, 40.0);
   EXPECT_LT(sunk, 35.0);
 }
+
+namespace
+{
+class ProgramProbe : public vtkSurfaceDetailMapper
+{
+public:
+  static ProgramProbe* New();
+  vtkTypeMacro(ProgramProbe, vtkSurfaceDetailMapper);
+  std::string FragmentSource()
+  {
+    vtkShaderProgram* program = this->Primitives[PrimitiveTris].Program;
+    return program ? program->GetFragmentShader()->GetSource() : std::string();
+  }
+};
+vtkStandardNewMacro(ProgramProbe);
+}
+
+// Only what is switched on is compiled: colour alone has no normal code, normal mapping no bump
+// code, and triplanar off no triplanar code.
+TEST(vtkSurfaceDetailTriplanar, ShaderHoldsOnlyWhatIsOn)
+{
+  vtkNew<ProgramProbe> mapper;
+  mapper->SetInputData(MakeBox(false));
+  mapper->SetNormalMap(MakeNormalMap());
+  mapper->SetHeightMap(MakeHeightMap());
+  mapper->TriplanarOn();
+  Scene scene(mapper);
+  scene.Actor->SetTexture(MakeColourTexture());
+  auto has = [&](const char* what) { return mapper->FragmentSource().find(what) != std::string::npos; };
+  scene.Render();
+  EXPECT_TRUE(has("#define SD_TRIPLANAR_COLOR"));
+  EXPECT_FALSE(has("#define SD_TRIPLANAR_NORMAL_MAP"));
+  EXPECT_FALSE(has("sdTriplanarDetailNormal(sdTriplanarPositionVSOutput"));
+  mapper->SetTechniqueToNormalMapping();
+  scene.Render();
+  EXPECT_TRUE(has("#define SD_TRIPLANAR_NORMAL_MAP"));
+  EXPECT_FALSE(has("#define SD_TRIPLANAR_BUMP"));
+  EXPECT_FALSE(has("uniform sampler2D sdHeightMap"));
+  mapper->SetTechniqueToBumpMapping();
+  scene.Render();
+  EXPECT_TRUE(has("#define SD_TRIPLANAR_BUMP"));
+  EXPECT_FALSE(has("uniform sampler2D sdNormalMap"));
+  scene.Actor->SetTexture(nullptr);
+  scene.Render();
+  EXPECT_FALSE(has("#define SD_TRIPLANAR_COLOR"));
+  mapper->SetTechniqueToPlain();
+  mapper->TriplanarOff(); // the box has no texture coordinates: plain, no triplanar code
+  scene.Render();
+  EXPECT_FALSE(has("sdTriplanar"));
+}
