@@ -35,6 +35,9 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkObjectFactory.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkSphereSource.h>
 #include <vtkTexture.h>
@@ -104,7 +107,35 @@ struct Options
   bool SelfShadowing = false;
   bool DepthCorrection = false;
   double Depth = 0.0; // 0: the surface's own
+  bool CountReads = false; // draw the depth reads of each fragment (ReadCountingMapper)
+  bool AdaptiveSteps = true;
 };
+
+// A test-only shader variant, the cost measure that no rasteriser's speed enters: every read
+// of the relief's depth is counted, and each fragment writes its count in red (in 1/255ths,
+// up to 255) and full green, which the background does not have, instead of its colour.
+class ReadCountingMapper : public vtkSurfaceDetailMapper
+{
+public:
+  static ReadCountingMapper* New();
+  vtkTypeMacro(ReadCountingMapper, vtkSurfaceDetailMapper);
+
+protected:
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    if (vtkShaderProgram::Substitute(fs, "float sdReliefDepthAt(vec2 tc)\n{\n",
+          "int sdDepthReads = 0;\nfloat sdReliefDepthAt(vec2 tc)\n{\n  sdDepthReads += 1;\n"))
+    {
+      fs.insert(fs.rfind('}'),
+        "  gl_FragData[0] = vec4(float(min(sdDepthReads, 255)) / 255.0, 1.0, 0.0, 1.0);\n");
+    }
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
+};
+vtkStandardNewMacro(ReadCountingMapper);
 
 vtkSmartPointer<vtkActor> SurfaceActor(
   Surface surface, Look look, const Options& options = Options())
@@ -127,7 +158,10 @@ vtkSmartPointer<vtkActor> SurfaceActor(
     return actor;
   }
   vtkSmartPointer<vtkPolyData> mesh = Tessellate(surface, surface.Coarse);
-  vtkNew<vtkSurfaceDetailMapper> mapper;
+  auto mapper = options.CountReads ? vtkSmartPointer<vtkSurfaceDetailMapper>(
+                                       vtkSmartPointer<ReadCountingMapper>::New())
+                                   : vtkSmartPointer<vtkSurfaceDetailMapper>::New();
+  mapper->SetAdaptiveSteps(options.AdaptiveSteps);
   mapper->SetInputData(mesh);
   vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
   vtkNew<vtkHeightMapToNormalMap> maps;
@@ -629,4 +663,73 @@ TEST(SurfaceDetailRelief, ReliefBelowAPixelIsNormalMapping)
   Draw(view, { relief(Wall().Depth) }, deep);
   EXPECT_LE(MaxDifference(normal, shallow), 2);
   EXPECT_GT(ObjectRMSE(normal, deep), 5.0);
+}
+
+namespace
+{
+struct Reads
+{
+  double Mean = 0.0;
+  int P99 = 0;
+  int Max = 0;
+  long Fragments = 0;
+};
+
+// The depth reads per fragment of relief mapping on @a surface, from a relief map.
+Reads CountReads(const Surface& surface, Options options)
+{
+  options.CountReads = true;
+  View view;
+  FitView(surface, view);
+  Picture picture;
+  Draw(view, { SurfaceActor(surface, Look::Relief, options) }, picture);
+  std::vector<int> counts;
+  for (size_t p = 0; p + 2 < picture.RGB.size(); p += 3)
+  {
+    if (picture.RGB[p + 1] == 255 && picture.RGB[p + 2] == 0)
+    {
+      counts.push_back(picture.RGB[p]);
+    }
+  }
+  Reads reads;
+  reads.Fragments = static_cast<long>(counts.size());
+  if (counts.empty())
+  {
+    return reads;
+  }
+  std::sort(counts.begin(), counts.end());
+  double sum = 0.0;
+  for (int c : counts)
+  {
+    sum += c;
+  }
+  reads.Mean = sum / counts.size();
+  reads.P99 = counts[static_cast<size_t>(0.99 * (counts.size() - 1))];
+  reads.Max = counts.back();
+  std::cout << surface.Name << (options.AdaptiveSteps ? ", adaptive" : ", fixed 32 + 8")
+            << ": depth reads per fragment, mean " << reads.Mean << ", 99th percentile "
+            << reads.P99 << ", most " << reads.Max << " (" << reads.Fragments << " fragments)\n";
+  return reads;
+}
+} // namespace
+
+// The read counts follow the search: with fixed steps every fragment the relief reaches reads
+// the first depth, at least one linear step and all the binary steps, and none more than
+// 1 + LinearSearchSteps + BinarySearchSteps; adaptive steps read fewer on every truth scene.
+TEST(SurfaceDetailRelief, DepthReadsFollowTheSearch)
+{
+  vtkNew<vtkSurfaceDetailMapper> defaults;
+  const int most = 1 + defaults->GetLinearSearchSteps() + defaults->GetBinarySearchSteps();
+  for (const Surface& surface : { Wall(), Ball(), Ring() })
+  {
+    Options fixed;
+    fixed.AdaptiveSteps = false;
+    const Reads all = CountReads(surface, fixed);
+    ASSERT_GT(all.Fragments, 1000) << surface.Name;
+    EXPECT_LE(all.Max, most) << surface.Name;
+    EXPECT_GE(all.Mean, 2 + defaults->GetBinarySearchSteps() - 0.5) << surface.Name;
+    const Reads adaptive = CountReads(surface, Options());
+    EXPECT_LT(adaptive.Mean, all.Mean) << surface.Name;
+    EXPECT_LE(adaptive.Max, most) << surface.Name;
+  }
 }
