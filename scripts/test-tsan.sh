@@ -39,6 +39,8 @@ programs=(
   TestParametricSurfaceSourceTextureTransform
   TestDisplacementMapFilter TestDisplacementMapFilterAccuracy TestDisplacementMapFilterParametric
   TestDisplacementMapFilterHardEdges TestDisplacementMapFilterClosedForms
+  TestDisplacementMapFilterInput TestDisplacementMapFilterPrecision
+  TestDisplacementMapFilterNormals TestDisplacementMapFilterTriplanar
   TestMikkTSpaceTangents TestMikkTSpaceTangentsHardEdges
   TestHeightMapToNormalMap TestHeightMapToNormalMapKernels
   TestNormalMapBaker TestNormalMapBakerRayReach
@@ -51,6 +53,7 @@ suites=(
   ParametricSurfaceSource ParametricSurfaceAccuracy ParametricSurfaceSourceTextureTransform
   DisplacementMapFilter DisplacementMapFilterAccuracy DisplacementMapFilterParametric
   DisplacementMapFilterHardEdges DisplacementMapFilterClosedForms
+  vtkDisplacementMapFilterTriplanar
   vtkMikkTSpaceTangents MikkTSpaceTangentsHardEdges
   TestHeightMapToNormalMap HeightMapToNormalMapKernels
   NormalMapBaker NormalMapBakerRayReach
