@@ -142,6 +142,14 @@ TEST(vtkCompositeSurfaceDetailMapper, EveryTechniqueAsTheSingleMapper)
         m->SetNormalMap(MakeNormalMap());
         m->SetDepthScale(0.1);
       } },
+    { "triplanar-normal",
+      [](vtkSurfaceDetailMapper* m)
+      {
+        m->SetTechniqueToNormalMapping();
+        m->SetNormalMap(MakeNormalMap());
+        m->TriplanarOn();
+        m->SetTriplanarScale(0.7);
+      } },
     { "relief-shadow-depth",
       [](vtkSurfaceDetailMapper* m)
       {
