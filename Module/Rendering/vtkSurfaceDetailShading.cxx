@@ -684,10 +684,11 @@ void vtkSurfaceDetailShading::ReplaceLight(std::map<vtkShader::Type, vtkShader*>
   else if (this->ActiveTriplanar)
   {
     // The triplanar normal of the front face, taken to view coordinates.
+    // The colour is read here too, once, and applied where VTK applies textures.
     impl += "{\n"
             "    vec3 sdN = normalize(sdTriplanarNormalVSOutput);\n"
-            "    vec3 sdD = sdTriplanarToViewVSOutput *\n"
-            "      sdTriplanarDetailNormal(sdTriplanarPositionVSOutput, sdN);\n"
+            "    sdTriplanarSample(sdTriplanarPositionVSOutput, sdN);\n"
+            "    vec3 sdD = sdTriplanarToViewVSOutput * sdTriplanarDetail;\n"
             "    float sdLen2 = dot(sdD, sdD);\n"
             "    normalVCVSOutput = sdLen2 > 0.0 ? sdD * inversesqrt(sdLen2)\n"
             "      : (gl_FrontFacing ? normalVCVSOutput : -normalVCVSOutput);\n"
@@ -765,11 +766,18 @@ void vtkSurfaceDetailShading::ReplaceTCoord(std::map<vtkShader::Type, vtkShader*
     vtkShaderProgram::Substitute(vs, VSImplTag, "");
     vtkShaderProgram::Substitute(fs, DecTag, "");
     vtkShaderProgram::Substitute(fs, TCoordImplTag, "");
-    vtkShaderProgram::Substitute(fs, TriplanarColorTag,
-      this->ActiveTriplanarColor
-        ? "gl_FragData[0] = gl_FragData[0] * sdTriplanarColor(sdTriplanarPositionVSOutput,\n"
-          "    normalize(sdTriplanarNormalVSOutput));"
-        : "");
+    // With a normal technique, the lighting code has sampled the colour already.
+    std::string color;
+    if (this->ActiveTriplanarColor && this->ActiveTechnique == Plain)
+    {
+      color = "sdTriplanarSample(sdTriplanarPositionVSOutput, "
+              "normalize(sdTriplanarNormalVSOutput));\n  ";
+    }
+    if (this->ActiveTriplanarColor)
+    {
+      color += "gl_FragData[0] = gl_FragData[0] * sdTriplanarColor;";
+    }
+    vtkShaderProgram::Substitute(fs, TriplanarColorTag, color);
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
     return;

@@ -576,7 +576,7 @@ TEST(vtkSurfaceDetailTriplanar, ShaderHoldsOnlyWhatIsOn)
   scene.Render();
   EXPECT_TRUE(has("#define SD_TRIPLANAR_COLOR"));
   EXPECT_FALSE(has("#define SD_TRIPLANAR_NORMAL_MAP"));
-  EXPECT_FALSE(has("sdTriplanarDetailNormal(sdTriplanarPositionVSOutput"));
+  EXPECT_FALSE(has("sdTriplanarSample(sdTriplanarPositionVSOutput, sdN)"));
   mapper->SetTechniqueToNormalMapping();
   scene.Render();
   EXPECT_TRUE(has("#define SD_TRIPLANAR_NORMAL_MAP"));

@@ -46,34 +46,19 @@ vec3 sdTriplanarReorient(vec3 nTS, vec3 n, vec3 tangent)
 
 #ifdef SD_TRIPLANAR_COLOR
 uniform sampler2D sdTriplanarColorTexture;
-
-vec4 sdTriplanarColor(vec3 p, vec3 n)
-{
-  vec3 w = sdTriplanarWeights(n);
-  vec3 sigma = vec3(n.x < 0.0 ? -1.0 : 1.0, n.y < 0.0 ? -1.0 : 1.0, n.z < 0.0 ? -1.0 : 1.0);
-  vec4 color = vec4(0.0);
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    vec2 st = sdTriplanarST(axis, sigma[axis], p);
-    vec2 dx = dFdx(st);
-    vec2 dy = dFdy(st);
-    if (w[axis] > 0.0)
-    {
-      color += w[axis] * textureGrad(sdTriplanarColorTexture, st, dx, dy);
-    }
-  }
-  return color;
-}
 #endif
+vec4 sdTriplanarColor = vec4(1.0);   // the projected colour texture
+vec3 sdTriplanarDetail = vec3(0.0);  // the detail normal in triplanar space (not unit)
 
-#if defined(SD_TRIPLANAR_NORMAL_MAP) || defined(SD_TRIPLANAR_BUMP)
-// The detail normal in triplanar space: each projection's normal-map or bump normal in its
-// reoriented frame, blended by the weights.
-vec3 sdTriplanarDetailNormal(vec3 p, vec3 n)
+// Reads every projection whose weight counts, once, for all that is on: the colour into
+// sdTriplanarColor, the normal-map or bump normal, reoriented, into sdTriplanarDetail.
+void sdTriplanarSample(vec3 p, vec3 n)
 {
   vec3 w = sdTriplanarWeights(n);
   vec3 sigma = vec3(n.x < 0.0 ? -1.0 : 1.0, n.y < 0.0 ? -1.0 : 1.0, n.z < 0.0 ? -1.0 : 1.0);
-  vec3 detail = vec3(0.0);
+#ifdef SD_TRIPLANAR_COLOR
+  sdTriplanarColor = vec4(0.0);
+#endif
   for (int axis = 0; axis < 3; ++axis)
   {
     vec2 st = sdTriplanarST(axis, sigma[axis], p);
@@ -81,6 +66,10 @@ vec3 sdTriplanarDetailNormal(vec3 p, vec3 n)
     vec2 dy = dFdy(st);
     if (w[axis] > 0.0)
     {
+#ifdef SD_TRIPLANAR_COLOR
+      sdTriplanarColor += w[axis] * textureGrad(sdTriplanarColorTexture, st, dx, dy);
+#endif
+#if defined(SD_TRIPLANAR_NORMAL_MAP) || defined(SD_TRIPLANAR_BUMP)
 #ifdef SD_TRIPLANAR_NORMAL_MAP
       vec3 nTS = sdNormalMapDecodeTS(textureGrad(sdNormalMap, st, dx, dy).rgb);
 #else
@@ -88,9 +77,8 @@ vec3 sdTriplanarDetailNormal(vec3 p, vec3 n)
 #endif
       vec3 nA = sdTriplanarReorient(nTS, n, sdTriplanarTangent(axis, sigma[axis]));
       float len2 = dot(nA, nA);
-      detail += w[axis] * (len2 > 0.0 ? nA * inversesqrt(len2) : n);
+      sdTriplanarDetail += w[axis] * (len2 > 0.0 ? nA * inversesqrt(len2) : n);
+#endif
     }
   }
-  return detail;
 }
-#endif
