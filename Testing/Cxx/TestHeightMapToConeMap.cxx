@@ -1,0 +1,244 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkHeightMapToConeMap against the bilinear surface sampled densely, an independent truth:
+// the apex is the highest point over each footprint, no sampled point lies inside any cone from
+// any apex of its footprint, and the cones are within a stated fraction of the widest the
+// sampled surface allows. Also a closed form (one raised texel on a flat map), thread counts
+// and bad input.
+
+#include "vtkHeightMapToConeMap.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkMinimalStandardRandomSequence.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkSMPTools.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Map
+{
+  int W, H;
+  bool Repeat;
+  std::vector<double> Height;
+
+  // The relief's depth at texel (i, j), wrapped or clamped.
+  double Texel(int i, int j) const
+  {
+    i = this->Repeat ? ((i % W) + W) % W : std::min(std::max(i, 0), W - 1);
+    j = this->Repeat ? ((j % H) + H) % H : std::min(std::max(j, 0), H - 1);
+    return 1.0 - this->Height[j * W + i];
+  }
+
+  // OpenGL's bilinear surface at texel-index position (x, y) (texel centres at integers).
+  double Depth(double x, double y) const
+  {
+    const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+    const double fx = x - i, fy = y - j;
+    return (1 - fx) * (1 - fy) * this->Texel(i, j) + fx * (1 - fy) * this->Texel(i + 1, j) +
+      (1 - fx) * fy * this->Texel(i, j + 1) + fx * fy * this->Texel(i + 1, j + 1);
+  }
+
+  // Distance in texture coordinates, the nearest repeat where the pattern repeats.
+  double Distance(double x0, double y0, double x1, double y1) const
+  {
+    double dx = std::abs(x1 - x0), dy = std::abs(y1 - y0);
+    if (this->Repeat)
+    {
+      dx = std::fmod(dx, W);
+      dy = std::fmod(dy, H);
+      dx = std::min(dx, W - dx);
+      dy = std::min(dy, H - dy);
+    }
+    return std::hypot(dx / W, dy / H);
+  }
+};
+
+Map RandomMap(int w, int h, bool repeat, int seed)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(seed);
+  Map m{ w, h, repeat, std::vector<double>(w * h) };
+  for (double& v : m.Height)
+  {
+    v = random->GetValue();
+    random->Next();
+    v = v * v * v; // mostly low, a few tall texels: narrow and wide cones both
+  }
+  return m;
+}
+
+vtkSmartPointer<vtkImageData> Image(const Map& m)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(m.W, m.H, 1);
+  image->AllocateScalars(VTK_DOUBLE, 1);
+  std::copy(m.Height.begin(), m.Height.end(), static_cast<double*>(image->GetScalarPointer()));
+  return image;
+}
+
+std::vector<float> Cones(const Map& m, double maxRatio = 1.0)
+{
+  vtkNew<vtkHeightMapToConeMap> filter;
+  filter->SetInputData(Image(m));
+  filter->SetWrap(m.Repeat ? vtkSurfaceDetail::Repeat : vtkSurfaceDetail::ClampToEdge);
+  filter->SetMaxConeRatio(maxRatio);
+  filter->Update();
+  auto* cones = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetScalars());
+  EXPECT_NE(cones, nullptr);
+  EXPECT_EQ(std::string(cones && cones->GetName() ? cones->GetName() : ""), "ConeMap");
+  return cones ? std::vector<float>(cones->GetPointer(0), cones->GetPointer(0) + 2 * m.W * m.H)
+               : std::vector<float>();
+}
+
+// Dense samples of the surface: every eighth of a texel over the map (repeat), and a texel
+// beyond its edges (clamp, where the edges continue).
+template <typename F>
+void ForSurfaceSamples(const Map& m, F&& f)
+{
+  const double margin = m.Repeat ? 0.0 : 1.0;
+  for (double y = -margin; y < m.H + margin - (m.Repeat ? 0.0 : 1.0) + 1e-9; y += 0.125)
+  {
+    for (double x = -margin; x < m.W + margin - (m.Repeat ? 0.0 : 1.0) + 1e-9; x += 0.125)
+    {
+      f(x, y, m.Depth(x, y));
+    }
+  }
+}
+
+// The widest cone the sampled surface allows texel (i, j) from every apex of its footprint.
+double Widest(const Map& m, int i, int j, double apex, double maxRatio)
+{
+  double widest = maxRatio;
+  ForSurfaceSamples(m,
+    [&](double x, double y, double depth)
+    {
+      if (depth < apex)
+      {
+        for (double ay = j - 0.5; ay <= j + 0.5; ay += 0.25)
+        {
+          for (double ax = i - 0.5; ax <= i + 0.5; ax += 0.25)
+          {
+            widest = std::min(widest, m.Distance(ax, ay, x, y) / (apex - depth));
+          }
+        }
+      }
+    });
+  return widest;
+}
+} // namespace
+
+// The apex is the highest point of the surface over the footprint; no sampled point lies inside
+// the cone from any apex of the footprint; and the cones are on average within a stated
+// fraction of the widest the samples allow (never zero).
+TEST(HeightMapToConeMap, ConesAreEmptyAndNearTheWidest)
+{
+  for (const bool repeat : { true, false })
+  {
+    const Map m = RandomMap(12, 9, repeat, repeat ? 3 : 4);
+    const std::vector<float> cones = Cones(m, 4.0);
+    double sum = 0.0;
+    int counted = 0;
+    for (int j = 0; j < m.H; ++j)
+    {
+      for (int i = 0; i < m.W; ++i)
+      {
+        const double apex = cones[2 * (j * m.W + i)], ratio = cones[2 * (j * m.W + i) + 1];
+        double highest = 1e300;
+        for (double y = j - 0.5; y <= j + 0.5; y += 0.125)
+        {
+          for (double x = i - 0.5; x <= i + 0.5; x += 0.125)
+          {
+            highest = std::min(highest, m.Depth(x, y));
+          }
+        }
+        EXPECT_LE(apex, highest + 1e-12);
+        EXPECT_GE(apex, highest - 1e-6) << "the apex is not the footprint's highest point";
+        EXPECT_GT(ratio, 0.0) << "texel " << i << ", " << j;
+        const double widest = Widest(m, i, j, apex, 4.0);
+        EXPECT_LE(ratio, widest * (1 + 1e-9)) << "texel " << i << ", " << j
+                                              << ": a sampled point lies inside the cone";
+        if (widest < 4.0)
+        {
+          sum += ratio / widest;
+          ++counted;
+        }
+      }
+    }
+    std::cout << (repeat ? "repeat" : "clamp") << ": the cones are on average " << sum / counted
+              << " of the widest the sampled surface allows\n";
+    EXPECT_GE(sum / counted, 0.45);
+  }
+}
+
+// One raised texel on a flat map, n texels along a row from it: the spike's cells begin
+// n - 1.5 texels from the footprint, one unit of depth up; the slope term (a texel's rise over
+// a texel) is narrower only for n < 3.
+TEST(HeightMapToConeMap, OneRaisedTexel)
+{
+  Map m{ 32, 32, true, std::vector<double>(32 * 32, 0.0) };
+  m.Height[10 * 32 + 10] = 1.0;
+  const std::vector<float> cones = Cones(m, 4.0);
+  for (int n = 3; n <= 12; ++n)
+  {
+    const int i = 10 + n, j = 10;
+    EXPECT_NEAR(cones[2 * (j * 32 + i)], 1.0, 1e-7);
+    EXPECT_NEAR(cones[2 * (j * 32 + i) + 1], (n - 1.5) / 32.0, 1e-6) << "n = " << n;
+  }
+  // The spike's own texel is the top: nothing above it, the widest cone.
+  EXPECT_NEAR(cones[2 * (10 * 32 + 10)], 0.0, 1e-7);
+  EXPECT_FLOAT_EQ(cones[2 * (10 * 32 + 10) + 1], 4.0f);
+}
+
+TEST(HeightMapToConeMap, SameAtAnyThreadCount)
+{
+  const Map m = RandomMap(64, 48, true, 11);
+  vtkSMPTools::Initialize(1);
+  const std::vector<float> one = Cones(m);
+  vtkSMPTools::Initialize(2);
+  const std::vector<float> two = Cones(m);
+  EXPECT_EQ(one, two);
+}
+
+TEST(HeightMapToConeMap, BadInputIsAnError)
+{
+  std::string said;
+  vtkNew<vtkCallbackCommand> listen;
+  listen->SetClientData(&said);
+  listen->SetCallback([](vtkObject*, unsigned long, void* client, void* data)
+    { *static_cast<std::string*>(client) = static_cast<const char*>(data); });
+  auto expectRefused = [&](vtkImageData* image, int wrap, const char* words)
+  {
+    vtkNew<vtkHeightMapToConeMap> filter;
+    filter->AddObserver(vtkCommand::ErrorEvent, listen);
+    filter->SetInputData(image);
+    filter->SetWrap(wrap);
+    said.clear();
+    filter->Update();
+    EXPECT_NE(said.find(words), std::string::npos) << said;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(4, 4, 4);
+  volume->AllocateScalars(VTK_FLOAT, 1);
+  expectRefused(volume, vtkSurfaceDetail::Repeat, "2-D image");
+  vtkNew<vtkImageData> signedMap;
+  signedMap->SetDimensions(4, 4, 1);
+  signedMap->AllocateScalars(VTK_INT, 1);
+  expectRefused(signedMap, vtkSurfaceDetail::Repeat, "vtkImageShiftScale");
+  vtkSmartPointer<vtkImageData> flat = Image(Map{ 4, 4, true, std::vector<double>(16, 0.5) });
+  expectRefused(flat, vtkSurfaceDetail::MirroredRepeat, "Repeat or ClampToEdge");
+  flat->GetPointData()->GetScalars()->SetComponent(5, 0, std::nan(""));
+  expectRefused(flat, vtkSurfaceDetail::Repeat, "non-finite");
+}
