@@ -25,10 +25,12 @@
  * steepest slope G of the cells around the way there, also at most G times its distance above
  * it; so y cannot limit the ratio below max(g / (a - highest corner), 1 / G). The ratio is the
  * least of these over the cells above the apex: narrower than the widest cone the exact surface
- * allows (TestHeightMapToConeMap states by how much), never wider. It is found by branch and
- * bound over a pyramid of each block of cells' highest corner, not by testing every texel
- * against every other; each texel's search is independent, so the result does not depend on
- * the number of threads (vtkSMPTools).
+ * allows (TestHeightMapToConeMap states by how much), never wider. It is found by a best-first
+ * branch and bound over a pyramid of each block of cells' highest corner (the block nearest in
+ * bound first, until no block left can narrow the cone), not by testing every texel against
+ * every other; each texel's search is independent, so the result does not depend on the number
+ * of threads (vtkSMPTools). The work grows with how wide the cones are: flat, wide-open maps
+ * cost the most.
  *
  * Distances are in texture coordinates (s, t), the texture square being 1 x 1 whatever its
  * texels, and wrap with Wrap: Repeat (default: tiling maps) or ClampToEdge (the edge texels
