@@ -20,6 +20,7 @@ vtkStandardNewMacro(vtkSurfaceDetailMapper);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, NormalMap, vtkTexture);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, HeightMap, vtkTexture);
 vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, ReliefMap, vtkTexture);
+vtkCxxSetObjectMacro(vtkSurfaceDetailMapper, ConeMap, vtkTexture);
 
 //------------------------------------------------------------------------------
 vtkSurfaceDetailMapper::vtkSurfaceDetailMapper()
@@ -33,6 +34,7 @@ vtkSurfaceDetailMapper::~vtkSurfaceDetailMapper()
   this->SetNormalMap(nullptr);
   this->SetHeightMap(nullptr);
   this->SetReliefMap(nullptr);
+  this->SetConeMap(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -105,7 +107,7 @@ vtkMTimeType vtkSurfaceDetailMapper::GetMTime()
   // The maps' own changes reach the picture through their textures and uploads, not through
   // the shader, so they too are left out of the rebuild decision.
   mtime = std::max(mtime, this->UniformTime.GetMTime());
-  for (vtkTexture* map : { this->NormalMap, this->HeightMap, this->ReliefMap })
+  for (vtkTexture* map : { this->NormalMap, this->HeightMap, this->ReliefMap, this->ConeMap })
   {
     if (map)
     {
@@ -187,7 +189,7 @@ void vtkSurfaceDetailMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 void vtkSurfaceDetailMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
-  for (vtkTexture* map : { this->NormalMap, this->HeightMap, this->ReliefMap })
+  for (vtkTexture* map : { this->NormalMap, this->HeightMap, this->ReliefMap, this->ConeMap })
   {
     if (map)
     {
@@ -297,6 +299,7 @@ void vtkSurfaceDetailMapper::ShallowCopy(vtkAbstractMapper* m)
     this->SetTriplanarSharpness(other->GetTriplanarSharpness());
     this->SetDepthScale(other->GetDepthScale());
     this->SetReliefMap(other->GetReliefMap());
+    this->SetConeMap(other->GetConeMap());
     this->SetLinearSearchSteps(other->GetLinearSearchSteps());
     this->SetBinarySearchSteps(other->GetBinarySearchSteps());
     this->SetAdaptiveSteps(other->GetAdaptiveSteps());
@@ -328,6 +331,7 @@ void vtkSurfaceDetailMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TriplanarSharpness: " << this->TriplanarSharpness << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "ReliefMap: " << this->ReliefMap << "\n";
+  os << indent << "ConeMap: " << this->ConeMap << "\n";
   os << indent << "LinearSearchSteps: " << this->LinearSearchSteps << "\n";
   os << indent << "BinarySearchSteps: " << this->BinarySearchSteps << "\n";
   os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";

@@ -49,7 +49,11 @@
  *   follow the view (AdaptiveSteps: one per texel the ray crosses, between a few and
  *   LinearSearchSteps), and where the whole depth is less than about a pixel on screen
  *   the relief fades to plain normal mapping and no search runs. Silhouettes stay those
- *   of the mesh.
+ *   of the mesh. With a cone map (SetConeMap, from vtkHeightMapToConeMap) the search is by
+ *   cone stepping instead: steps as long as each texel's empty cone allows, a depth read
+ *   only where the ray is as deep as the texel's highest point, then secant steps; it finds
+ *   the hits the linear search finds (and ridges of a texel that it steps over) in fewer
+ *   reads, and the more texels a ray crosses, the fewer.
  *
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
  * input lacks, a normal map with fewer than 3 components or of a type other than unsigned
@@ -285,8 +289,20 @@ public:
 
   ///@{
   /**
+   * Cone map for ReliefMapping: when set, the view ray's linear search becomes cone stepping.
+   * Its input is vtkHeightMapToConeMap's output for the heights the relief's depth comes
+   * from (same size; its Wrap as the texture's: Repeat or ClampToEdge). It is read texel by
+   * texel at full float precision, whatever the texture's interpolation. Default none.
+   */
+  virtual void SetConeMap(vtkTexture*);
+  vtkGetObjectMacro(ConeMap, vtkTexture);
+  ///@}
+
+  ///@{
+  /**
    * Most steps of the relief's linear search (and of each shadow search); with
-   * AdaptiveSteps off, the number of steps always taken. Clamped to [1, 256]. Default 32.
+   * AdaptiveSteps off, the number of steps always taken. With a cone map, the most cone
+   * steps. Clamped to [1, 256]. Default 32.
    */
   void SetLinearSearchSteps(int steps);
   vtkGetMacro(LinearSearchSteps, int);
@@ -294,8 +310,8 @@ public:
 
   ///@{
   /**
-   * Steps of the relief's binary search, each halving the depth bracket. Clamped to
-   * [0, 32]. Default 8.
+   * Steps of the relief's binary search, each halving the depth bracket (with a cone map,
+   * the most secant steps refining it). Clamped to [0, 32]. Default 8.
    */
   void SetBinarySearchSteps(int steps);
   vtkGetMacro(BinarySearchSteps, int);
@@ -388,6 +404,7 @@ protected:
   double TriplanarSharpness = 4.0;
   double DepthScale = 0.05;
   vtkTexture* ReliefMap = nullptr;
+  vtkTexture* ConeMap = nullptr;
   int LinearSearchSteps = 32;
   int BinarySearchSteps = 8;
   bool AdaptiveSteps = true;

@@ -29,8 +29,10 @@
 #include "vtkSurfaceDetailNormalCoding.h"
 #include "vtkSurfaceDetailNormalMapFS.h"
 #include "vtkSurfaceDetailParallaxFS.h"
+#include "vtkSurfaceDetailReliefConeFS.h"
 #include "vtkSurfaceDetailReliefDepthFS.h"
 #include "vtkSurfaceDetailReliefFS.h"
+#include "vtkSurfaceDetailReliefLinearFS.h"
 #include "vtkSurfaceDetailReliefShadowFS.h"
 #include "vtkSurfaceDetailTangentFrameFS.h"
 #include "vtkSurfaceDetailTangents.h"
@@ -126,10 +128,46 @@ const char* vtkSurfaceDetailShading::TechniqueName(int technique)
 //------------------------------------------------------------------------------
 namespace
 {
+// Why a cone map cannot guide the search through @a depthImage's relief, "" if it can: the
+// cones describe one surface, so the map must be the cone map of the same texels.
+std::string ConeMapProblem(
+  vtkImageData* coneImage, vtkDataArray* coneScalars, vtkTexture* cone, vtkImageData* depthImage)
+{
+  std::ostringstream err;
+  int coneDims[3] = { 0, 0, 0 };
+  int depthDims[3] = { 0, 0, 0 };
+  if (coneImage)
+  {
+    coneImage->GetDimensions(coneDims);
+  }
+  depthImage->GetDimensions(depthDims);
+  const int wrap = cone->GetWrap();
+  if (!coneScalars || coneScalars->GetNumberOfComponents() != 2 ||
+    (coneScalars->GetDataType() != VTK_FLOAT && coneScalars->GetDataType() != VTK_DOUBLE))
+  {
+    err << "The cone map must be an image of 2-component floats (apex depth, cone ratio); this "
+        << "one has " << (coneScalars ? coneScalars->GetNumberOfComponents() : 0) << " component(s)"
+        << (coneScalars ? std::string(" of ") + coneScalars->GetDataTypeAsString() : "")
+        << ". Make it with vtkHeightMapToConeMap.";
+  }
+  else if (coneDims[0] != depthDims[0] || coneDims[1] != depthDims[1])
+  {
+    err << "The cone map is " << coneDims[0] << " x " << coneDims[1] << " texels but the relief's "
+        << "depth map is " << depthDims[0] << " x " << depthDims[1]
+        << ": make it with vtkHeightMapToConeMap from the same heights.";
+  }
+  else if (wrap != vtkTexture::Repeat && wrap != vtkTexture::ClampToEdge)
+  {
+    err << "The cone map's texture wraps with mode " << wrap << "; cone maps are made for Repeat "
+        << "or ClampToEdge (vtkHeightMapToConeMap::Wrap).";
+  }
+  return err.str();
+}
+
 // What a technique reads, with the maps that are set.
 struct Needs
 {
-  bool ReliefMap, NormalMap, HeightMap, Tangents;
+  bool ReliefMap, ConeMap, NormalMap, HeightMap, Tangents;
 };
 
 Needs NeedsOf(int technique, vtkSurfaceDetailMapper* detail)
@@ -139,6 +177,7 @@ Needs NeedsOf(int technique, vtkSurfaceDetailMapper* detail)
   Needs needs;
   needs.ReliefMap = technique == ReliefMapping && detail->GetReliefMap() != nullptr;
   const bool heightRelief = technique == ReliefMapping && !needs.ReliefMap;
+  needs.ConeMap = technique == ReliefMapping && detail->GetConeMap() != nullptr;
   needs.NormalMap = technique == NormalMapping ||
     ((technique == ParallaxMapping || heightRelief) && detail->GetNormalMap() != nullptr);
   needs.HeightMap = technique == BumpMapping || technique == ParallaxMapping || heightRelief;
@@ -164,6 +203,8 @@ std::string vtkSurfaceDetailShading::Problem(int technique, vtkPolyData* block, 
   vtkImageData* heightImage = usesHeightMap ? TextureImage(this->Detail->GetHeightMap()) : nullptr;
   vtkImageData* reliefImage = usesReliefMap ? TextureImage(this->Detail->GetReliefMap()) : nullptr;
   vtkDataArray* reliefScalars = reliefImage ? reliefImage->GetPointData()->GetScalars() : nullptr;
+  vtkImageData* coneImage = needs.ConeMap ? TextureImage(this->Detail->GetConeMap()) : nullptr;
+  vtkDataArray* coneScalars = coneImage ? coneImage->GetPointData()->GetScalars() : nullptr;
   std::ostringstream err;
   double heightScale = 1.0;
   const bool triplanar = this->Detail->GetTriplanar();
@@ -261,6 +302,11 @@ std::string vtkSurfaceDetailShading::Problem(int technique, vtkPolyData* block, 
     err << "HeightComponent is " << this->Detail->GetHeightComponent() << " but the height map has "
         << heightImage->GetPointData()->GetScalars()->GetNumberOfComponents() << " component(s).";
   }
+  else if (needs.ConeMap)
+  {
+    err << ConeMapProblem(coneImage, coneScalars, this->Detail->GetConeMap(),
+      usesReliefMap ? reliefImage : heightImage);
+  }
   return err.str();
 }
 
@@ -275,6 +321,7 @@ void vtkSurfaceDetailShading::Resolve(
   this->ActiveUsesNormalMap = false;
   this->ActiveUsesHeightMap = false;
   this->ActiveUsesReliefMap = false;
+  this->ActiveUsesConeMap = false;
   this->ActiveTriplanar = false;
   this->ActiveTriplanarColor = false;
 
@@ -326,6 +373,7 @@ void vtkSurfaceDetailShading::Resolve(
     this->ActiveUsesNormalMap = needs.NormalMap;
     this->ActiveUsesHeightMap = needs.HeightMap;
     this->ActiveUsesReliefMap = needs.ReliefMap;
+    this->ActiveUsesConeMap = needs.ConeMap;
   }
 
   const std::string handednessProblem =
@@ -365,7 +413,8 @@ std::string vtkSurfaceDetailShading::ShaderKey() const
       << this->ActiveTriplanar << this->ActiveTriplanarColor;
   if (this->ActiveTechnique == ReliefMapping)
   {
-    key << this->Detail->GetSelfShadowing() << this->Detail->GetDepthCorrection();
+    key << this->Detail->GetSelfShadowing() << this->Detail->GetDepthCorrection()
+        << this->ActiveUsesConeMap;
   }
   return key.str();
 }
@@ -388,6 +437,53 @@ void vtkSurfaceDetailShading::BindMaps(vtkRenderer* ren)
     this->UploadHeightMap(ren);
     this->HeightTexture->Activate();
   }
+  if (this->ActiveUsesConeMap)
+  {
+    this->UploadConeMap(ren);
+    this->ConeTexture->Activate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceDetailShading::UploadConeMap(vtkRenderer* ren)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkTexture* cone = this->Detail->GetConeMap();
+  vtkImageData* image = cone->GetInput();
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  const vtkMTimeType stamp = std::max({ image->GetMTime(), scalars->GetMTime(), cone->GetMTime() });
+  if (!this->ConeTexture)
+  {
+    this->ConeTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  if (this->ConeTexture->GetContext() == window && stamp == this->ConeUploadStamp)
+  {
+    return;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  // Float, not the 8 bits vtkOpenGLTexture would keep: a rounded-up ratio or a rounded-down
+  // apex would let a step pass through the surface.
+  std::vector<float> texels(2 * static_cast<size_t>(dims[0]) * dims[1]);
+  for (size_t k = 0; k < texels.size() / 2; ++k)
+  {
+    const double apex = scalars->GetComponent(static_cast<vtkIdType>(k), 0);
+    const double ratio = scalars->GetComponent(static_cast<vtkIdType>(k), 1);
+    // A texel that is not finite guides no step: apex at the top, no cone.
+    const bool valid = std::isfinite(apex) && std::isfinite(ratio);
+    texels[2 * k] = valid ? static_cast<float>(std::min(std::max(apex, 0.0), 1.0)) : 0.f;
+    texels[2 * k + 1] = valid ? static_cast<float>(std::max(ratio, 0.0)) : 0.f;
+  }
+  this->ConeTexture->SetContext(window);
+  this->ConeTexture->SetRequireTextureFloat(true);
+  this->ConeTexture->ResetFormatAndType();
+  this->ConeTexture->Create2DFromRaw(dims[0], dims[1], 2, VTK_FLOAT, texels.data());
+  this->ConeTexture->SetWrapS(cone->GetWrap());
+  this->ConeTexture->SetWrapT(cone->GetWrap());
+  // A texel's cone holds for its own footprint only: never blended with a neighbour's.
+  this->ConeTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->ConeTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->ConeUploadStamp = stamp;
 }
 
 //------------------------------------------------------------------------------
@@ -500,6 +596,10 @@ void vtkSurfaceDetailShading::UnbindMaps(vtkRenderer* ren)
   {
     this->HeightTexture->Deactivate();
   }
+  if (this->ActiveUsesConeMap)
+  {
+    this->ConeTexture->Deactivate();
+  }
   if (this->ActiveUsesNormalMap)
   {
     this->Detail->GetNormalMap()->PostRender(ren);
@@ -518,6 +618,11 @@ void vtkSurfaceDetailShading::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->HeightTexture->ReleaseGraphicsResources(win);
   }
+  if (this->ConeTexture)
+  {
+    this->ConeTexture->ReleaseGraphicsResources(win);
+  }
+  this->ConeUploadStamp = 0;
   this->HeightUploadStamp = 0;
 }
 
@@ -640,6 +745,7 @@ void vtkSurfaceDetailShading::ReplaceNormal(std::map<vtkShader::Type, vtkShader*
       : "#define SD_RELIEF_SAMPLER sdHeightMap\n"
         "#define SD_RELIEF_DEPTH(tc) (1.0 - textureLod(sdHeightMap, tc, sdReliefLod).r)\n";
     fsDec += vtkSurfaceDetailReliefFS;
+    fsDec += this->ActiveUsesConeMap ? vtkSurfaceDetailReliefConeFS : vtkSurfaceDetailReliefLinearFS;
     if (this->Detail->GetSelfShadowing())
     {
       fsDec += vtkSurfaceDetailReliefShadowFS;
@@ -872,6 +978,12 @@ void vtkSurfaceDetailShading::SetUniforms(vtkShaderProgram* program, vtkRenderer
     program->SetUniformi("sdLinearSearchSteps", this->Detail->GetLinearSearchSteps());
     program->SetUniformi("sdBinarySearchSteps", this->Detail->GetBinarySearchSteps());
     program->SetUniformi("sdAdaptiveSteps", this->Detail->GetAdaptiveSteps() ? 1 : 0);
+    if (this->ActiveUsesConeMap)
+    {
+      program->SetUniformi("sdConeMap", this->ConeTexture->GetTextureUnit());
+      program->SetUniformi(
+        "sdConeRepeat", this->Detail->GetConeMap()->GetWrap() == vtkTexture::Repeat ? 1 : 0);
+    }
     if (this->Detail->GetDepthCorrection())
     {
       vtkMatrix4x4* wcvc;

@@ -94,6 +94,8 @@ private:
   // (integer types scaled to [0,1]): vtkOpenGLTexture would store float images in 8 bits,
   // too coarse for differences.
   void UploadHeightMap(vtkRenderer* ren);
+  // Uploads the cone map as 32-bit floats, read texel by texel (nearest).
+  void UploadConeMap(vtkRenderer* ren);
   // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
   void AddReliefShadows(std::string& fs) const;
   void SetTriplanarUniforms(
@@ -109,6 +111,7 @@ private:
   bool ActiveUsesNormalMap = false;
   bool ActiveUsesHeightMap = false;
   bool ActiveUsesReliefMap = false;
+  bool ActiveUsesConeMap = false;
   bool ActiveTriplanar = false;
   bool ActiveTriplanarColor = false;
   std::string TangentArray;
@@ -120,6 +123,8 @@ private:
   int HeightUploadDifferenceScheme = -1;
   int HeightUploadComponents = 0;
   int HeightUploadComponent = 0;
+  vtkSmartPointer<vtkTextureObject> ConeTexture;
+  vtkMTimeType ConeUploadStamp = 0;
 };
 
 #endif

@@ -521,6 +521,22 @@ TEST(vtkSurfaceDetailMapper, ParallaxDepthUnderSkewingScale)
   EXPECT_GE(psnr[0], 40.0);
 }
 
+namespace
+{
+// A cone map of zero-width cones at the top of the box: every step it allows is safe.
+vtkSmartPointer<vtkTexture> ConeMap(int size, int components, int wrap, int type = VTK_FLOAT)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(type, components);
+  image->GetPointData()->GetScalars()->Fill(0.0);
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->SetWrap(wrap);
+  return texture;
+}
+}
+
 TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
 {
   struct Case
@@ -531,6 +547,7 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     vtkSmartPointer<vtkTexture> NormalMap;
     vtkSmartPointer<vtkTexture> HeightMap;
     vtkSmartPointer<vtkTexture> ReliefMap = nullptr;
+    vtkSmartPointer<vtkTexture> ConeMap = nullptr;
   };
   auto twoChannel = MakeTexture(8, 2, [](double, double, double* v) { v[0] = v[1] = 0.5; });
   // A flat normal map or a mid height, in a scalar type the mapper cannot read as such.
@@ -592,6 +609,15 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
       vtkSurfaceDetailMapper::ReliefMapping, nullptr, nullptr, typed(VTK_UNSIGNED_CHAR, 4, false) },
     { "relief from a short height map", MakeRectangle(false, false),
       vtkSurfaceDetailMapper::ReliefMapping, nullptr, typed(VTK_SHORT, 1, true) },
+    // A cone map describes one relief: vtkHeightMapToConeMap's output for the same texels.
+    { "one-component cone map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
+      nullptr, MakeHeightMap(), nullptr, ConeMap(256, 1, vtkTexture::Repeat) },
+    { "unsigned char cone map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
+      nullptr, MakeHeightMap(), nullptr, ConeMap(256, 2, vtkTexture::Repeat, VTK_UNSIGNED_CHAR) },
+    { "cone map of another size", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping,
+      nullptr, MakeHeightMap(), nullptr, ConeMap(64, 2, vtkTexture::Repeat) },
+    { "mirrored cone map", MakeRectangle(false), vtkSurfaceDetailMapper::ReliefMapping, nullptr,
+      MakeHeightMap(), nullptr, ConeMap(256, 2, vtkTexture::MirroredRepeat) },
   };
   // One window for all cases: X servers under test do not like windows made in a burst.
   Scene scene(nullptr);
@@ -603,6 +629,7 @@ TEST(vtkSurfaceDetailMapper, BadInputRendersWithoutDetail)
     mapper->SetNormalMap(c.NormalMap);
     mapper->SetHeightMap(c.HeightMap);
     mapper->SetReliefMap(c.ReliefMap);
+    mapper->SetConeMap(c.ConeMap);
     vtkNew<ErrorCounter> errors;
     mapper->AddObserver(vtkCommand::ErrorEvent, errors);
     mapper->AddObserver(vtkCommand::WarningEvent, errors);
@@ -784,6 +811,18 @@ TEST(vtkSurfaceDetailMapper, ShaderBuiltOnceNotPerFrame)
   scene.Render();
   EXPECT_GT(mapper->Builds, shadowing) << "depth correction did not change the shader";
   EXPECT_TRUE(fragmentHas("gl_FragDepth ="));
+  // Cone stepping replaces the linear search's code; without a cone map it is not there.
+  EXPECT_FALSE(fragmentHas("sdReliefConeAt"));
+  const int linear = mapper->Builds;
+  mapper->SetConeMap(ConeMap(256, 2, vtkTexture::Repeat));
+  scene.Render();
+  EXPECT_GT(mapper->Builds, linear) << "a cone map did not change the shader";
+  EXPECT_TRUE(fragmentHas("sdReliefConeAt"));
+  EXPECT_FALSE(fragmentHas("sdReliefIntersect("));
+  mapper->SetConeMap(nullptr);
+  scene.Render();
+  EXPECT_FALSE(fragmentHas("sdReliefConeAt"));
+  EXPECT_TRUE(fragmentHas("sdReliefIntersect("));
 }
 
 // Bump mapping gets a gradient-only height texture, parallax (lit here by the gradient, no
@@ -903,6 +942,8 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   source->SetDepthScale(0.2);
   auto relief = MakeNormalMap();
   source->SetReliefMap(relief);
+  auto cones = ConeMap(8, 2, vtkTexture::Repeat);
+  source->SetConeMap(cones);
   source->SetLinearSearchSteps(12);
   source->SetBinarySearchSteps(5);
   source->AdaptiveStepsOff();
@@ -920,6 +961,7 @@ TEST(vtkSurfaceDetailMapper, ShallowCopyCopiesSettings)
   EXPECT_TRUE(copy->GetTangentFree());
   EXPECT_EQ(copy->GetDepthScale(), 0.2);
   EXPECT_EQ(copy->GetReliefMap(), relief.Get());
+  EXPECT_EQ(copy->GetConeMap(), cones.Get());
   EXPECT_EQ(copy->GetLinearSearchSteps(), 12);
   EXPECT_EQ(copy->GetBinarySearchSteps(), 5);
   EXPECT_FALSE(copy->GetAdaptiveSteps());
@@ -994,6 +1036,7 @@ TEST(vtkSurfaceDetailMapper, PrintSelf)
   EXPECT_NE(os.str().find("SelfShadowing: On"), std::string::npos);
   EXPECT_NE(os.str().find("DepthCorrection: Off"), std::string::npos);
   EXPECT_NE(os.str().find("ReliefMap: 0"), std::string::npos);
+  EXPECT_NE(os.str().find("ConeMap: 0"), std::string::npos);
   EXPECT_NE(os.str().find("Technique: BumpMapping"), std::string::npos);
   EXPECT_NE(os.str().find("DepthScale: 0.125"), std::string::npos);
   EXPECT_NE(os.str().find("TangentFree: Off"), std::string::npos);

@@ -7,6 +7,7 @@
 //   --surface rectangle|sphere|torus|vase
 //   --view head-on|oblique|grazing                 --light
 //   headlight|positional|raking|spot|lightkit
+//   --cones off|on                                 (relief: cone stepping with the heights' cone map)
 //   --mutation none|light-10|flipped-maps|half-scale|flipped-handedness
 // A mutation makes one kind of mistake on purpose (the light turned by 10 degrees about the
 // camera's up axis, the height and normal maps upside down, BumpScale and DepthScale halved,
@@ -27,6 +28,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
+#include <vtkHeightMapToConeMap.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
@@ -122,10 +124,16 @@ int main(int argc, char* argv[])
   const std::string view = Arg(argc, argv, "--view", "head-on");
   const std::string lightName = Arg(argc, argv, "--light", "headlight");
   const std::string mutation = Arg(argc, argv, "--mutation", "none");
+  const std::string cones = Arg(argc, argv, "--cones", "off");
   if (mutation != "none" && mutation != "light-10" && mutation != "flipped-maps" &&
     mutation != "half-scale" && mutation != "flipped-handedness")
   {
     std::cerr << "unknown mutation " << mutation << "\n";
+    return 1;
+  }
+  if (cones != "off" && cones != "on")
+  {
+    std::cerr << "--cones is off or on, not " << cones << "\n";
     return 1;
   }
 
@@ -238,6 +246,13 @@ int main(int argc, char* argv[])
   {
     std::cerr << "unknown technique " << technique << "\n";
     return 1;
+  }
+  if (cones == "on")
+  {
+    vtkNew<vtkHeightMapToConeMap> toCones;
+    toCones->SetInputData(flip ? FlippedRows(heights) : heights);
+    toCones->Update();
+    mapper->SetConeMap(MakeTexture(toCones->GetOutput()));
   }
 
   vtkNew<vtkActor> actor;

@@ -21,12 +21,14 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
+#include <vtkHeightMapToConeMap.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
 #include <vtkParametricDonut.h>
 #include <vtkParametricRectangle.h>
 #include <vtkParametricSphere.h>
@@ -59,10 +61,10 @@ constexpr int Size = 300;
 
 // Smoother bricks than the regression scenes' (wider bevels), so that a displaced mesh a
 // few times finer than the texels converges.
-BrickTextures::Layout TruthBricks()
+BrickTextures::Layout TruthBricks(int size = 128)
 {
   BrickTextures::Layout layout;
-  layout.Size = 128;
+  layout.Size = size;
   layout.Mortar = 0.01;
   layout.Bevel = 0.04;
   return layout;
@@ -109,6 +111,13 @@ struct Options
   double Depth = 0.0; // 0: the surface's own
   bool CountReads = false; // draw the depth reads of each fragment (ReadCountingMapper)
   bool AdaptiveSteps = true;
+  bool ConeStepping = false; // with the cone map of the heights
+  int BinarySteps = -1;      // -1: the default
+  int LinearSteps = -1;      // -1: the default
+  int MapSize = 128;         // texels of the relief's map
+  bool ZeroCones = false;    // a cone map of zero-width cones at the top of the box
+  double ConeWidening = 1.0; // the cone map's ratios times this
+  vtkSmartPointer<vtkImageData> Heights; // instead of the bricks'
 };
 
 // A test-only shader variant, the cost measure that no rasteriser's speed enters: every read
@@ -129,6 +138,9 @@ protected:
     if (vtkShaderProgram::Substitute(fs, "float sdReliefDepthAt(vec2 tc)\n{\n",
           "int sdDepthReads = 0;\nfloat sdReliefDepthAt(vec2 tc)\n{\n  sdDepthReads += 1;\n"))
     {
+      // A cone read costs what a depth read costs.
+      vtkShaderProgram::Substitute(fs, "vec2 sdReliefConeAt(vec2 tc)\n{\n",
+        "vec2 sdReliefConeAt(vec2 tc)\n{\n  sdDepthReads += 1;\n");
       fs.insert(fs.rfind('}'),
         "  gl_FragData[0] = vec4(float(min(sdDepthReads, 255)) / 255.0, 1.0, 0.0, 1.0);\n");
     }
@@ -162,8 +174,17 @@ vtkSmartPointer<vtkActor> SurfaceActor(
                                        vtkSmartPointer<ReadCountingMapper>::New())
                                    : vtkSmartPointer<vtkSurfaceDetailMapper>::New();
   mapper->SetAdaptiveSteps(options.AdaptiveSteps);
+  if (options.LinearSteps >= 0)
+  {
+    mapper->SetLinearSearchSteps(options.LinearSteps);
+  }
+  if (options.BinarySteps >= 0)
+  {
+    mapper->SetBinarySearchSteps(options.BinarySteps);
+  }
   mapper->SetInputData(mesh);
-  vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
+  vtkSmartPointer<vtkImageData> heights =
+    options.Heights ? options.Heights : BrickTextures::Heights(TruthBricks(options.MapSize));
   vtkNew<vtkHeightMapToNormalMap> maps;
   maps->SetInputData(heights);
   maps->SetBumpScale(surface.Depth / MeanTextureSide(surface));
@@ -174,6 +195,19 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   mapper->SetDepthScale(surface.Depth);
   mapper->SetSelfShadowing(options.SelfShadowing);
   mapper->SetDepthCorrection(options.DepthCorrection);
+  if (options.ConeStepping)
+  {
+    vtkNew<vtkHeightMapToConeMap> cones;
+    cones->SetInputData(heights);
+    cones->Update();
+    vtkDataArray* cone = cones->GetOutput()->GetPointData()->GetScalars();
+    for (vtkIdType k = 0; k < cone->GetNumberOfTuples(); ++k)
+    {
+      cone->SetComponent(k, 0, options.ZeroCones ? 0.0 : cone->GetComponent(k, 0));
+      cone->SetComponent(k, 1, options.ZeroCones ? 0.0 : options.ConeWidening * cone->GetComponent(k, 1));
+    }
+    mapper->SetConeMap(RepeatedTexture(cones->GetOutput()));
+  }
   switch (look)
   {
     case Look::Normal:
@@ -386,19 +420,21 @@ double Luma(const unsigned char* p)
 }
 } // namespace
 
+namespace
+{
 // Self-shadowing darkens what a ray cast on the displaced wall finds in shadow, and leaves
 // what it finds lit (pixels whose 3x3 neighbourhood agrees, away from shadow edges).
-TEST(SurfaceDetailRelief, SelfShadowsWhereTheDisplacedWallIsInShadow)
+void ExpectShadowsWhereTheDisplacedWallIsInShadow(const Options& search)
 {
   const Surface wall = Wall();
   View view;
   FitView(wall, view);
   Picture truth, shadowed, unshadowed;
   Draw(view, { SurfaceActor(wall, Look::Truth) }, truth, true);
-  Options withShadows;
+  Options withShadows = search;
   withShadows.SelfShadowing = true;
   Draw(view, { SurfaceActor(wall, Look::Relief, withShadows) }, shadowed);
-  Draw(view, { SurfaceActor(wall, Look::Relief) }, unshadowed);
+  Draw(view, { SurfaceActor(wall, Look::Relief, search) }, unshadowed);
   SaveSideBySide("wall-shadows", { &truth, &shadowed, &unshadowed });
 
   vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
@@ -454,6 +490,19 @@ TEST(SurfaceDetailRelief, SelfShadowsWhereTheDisplacedWallIsInShadow)
   ASSERT_GT(inShadow, 500) << "the scene must have shadows to judge";
   EXPECT_GT(darkened, 0.8 * inShadow);
   EXPECT_GT(unchanged, 0.95 * inLight);
+}
+} // namespace
+
+TEST(SurfaceDetailRelief, SelfShadowsWhereTheDisplacedWallIsInShadow)
+{
+  ExpectShadowsWhereTheDisplacedWallIsInShadow(Options());
+}
+
+TEST(SurfaceDetailRelief, SelfShadowsWithConeSteppingWhereTheDisplacedWallIsInShadow)
+{
+  Options cones;
+  cones.ConeStepping = true;
+  ExpectShadowsWhereTheDisplacedWallIsInShadow(cones);
 }
 
 namespace
@@ -675,20 +724,15 @@ struct Reads
   long Fragments = 0;
 };
 
-// The depth reads per fragment of relief mapping on @a surface, from a relief map.
-Reads CountReads(const Surface& surface, Options options)
+// The reads per fragment a ReadCountingMapper wrote into @a counted.
+Reads ReadsIn(const Picture& counted)
 {
-  options.CountReads = true;
-  View view;
-  FitView(surface, view);
-  Picture picture;
-  Draw(view, { SurfaceActor(surface, Look::Relief, options) }, picture);
   std::vector<int> counts;
-  for (size_t p = 0; p + 2 < picture.RGB.size(); p += 3)
+  for (size_t p = 0; p + 2 < counted.RGB.size(); p += 3)
   {
-    if (picture.RGB[p + 1] == 255 && picture.RGB[p + 2] == 0)
+    if (counted.RGB[p + 1] == 255 && counted.RGB[p + 2] == 0)
     {
-      counts.push_back(picture.RGB[p]);
+      counts.push_back(counted.RGB[p]);
     }
   }
   Reads reads;
@@ -706,6 +750,18 @@ Reads CountReads(const Surface& surface, Options options)
   reads.Mean = sum / counts.size();
   reads.P99 = counts[static_cast<size_t>(0.99 * (counts.size() - 1))];
   reads.Max = counts.back();
+  return reads;
+}
+
+// The depth reads per fragment of relief mapping on @a surface, from a relief map.
+Reads CountReads(const Surface& surface, Options options)
+{
+  options.CountReads = true;
+  View view;
+  FitView(surface, view);
+  Picture picture;
+  Draw(view, { SurfaceActor(surface, Look::Relief, options) }, picture);
+  const Reads reads = ReadsIn(picture);
   std::cout << surface.Name << (options.AdaptiveSteps ? ", adaptive" : ", fixed 32 + 8")
             << ": depth reads per fragment, mean " << reads.Mean << ", 99th percentile "
             << reads.P99 << ", most " << reads.Max << " (" << reads.Fragments << " fragments)\n";
@@ -732,4 +788,162 @@ TEST(SurfaceDetailRelief, DepthReadsFollowTheSearch)
     EXPECT_LT(adaptive.Mean, all.Mean) << surface.Name;
     EXPECT_LE(adaptive.Max, most) << surface.Name;
   }
+}
+
+namespace
+{
+// A truth scene: a surface and where it is seen from.
+struct Scene
+{
+  std::string Name;
+  Surface Shape;
+  ViewAngles Angles;
+};
+
+std::vector<Scene> ReliefTruthScenes()
+{
+  ViewAngles headOn;
+  headOn.Azimuth = 0;
+  headOn.Elevation = 0;
+  ViewAngles torusAngles;
+  torusAngles.Tilt = -55;
+  return { { "wall head-on", Wall(), headOn }, { "wall oblique", Wall(), ViewAngles() },
+    { "sphere", Ball(), ViewAngles() }, { "torus", Ring(), torusAngles } };
+}
+
+// A search's error against @a reference (RMSE in levels; by default the displaced mesh) and
+// its depth reads per fragment.
+struct SearchFigures
+{
+  double Error = 0.0;
+  Reads Cost;
+};
+
+SearchFigures Search(const Scene& scene, const Options& options, const Options* reference = nullptr)
+{
+  View view;
+  SurfaceDetailTruthScenes::FitView(scene.Shape, scene.Angles, view);
+  Picture truth, relief, counted;
+  Draw(view,
+    { reference ? SurfaceActor(scene.Shape, Look::Relief, *reference)
+                : SurfaceActor(scene.Shape, Look::Truth) },
+    truth);
+  Draw(view, { SurfaceActor(scene.Shape, Look::Relief, options) }, relief);
+  Options counting = options;
+  counting.CountReads = true;
+  Draw(view, { SurfaceActor(scene.Shape, Look::Relief, counting) }, counted);
+  SearchFigures figures;
+  figures.Error = ObjectRMSE(relief, truth);
+  figures.Cost = ReadsIn(counted);
+  return figures;
+}
+
+void Print(const std::string& what, const SearchFigures& figures)
+{
+  std::cout << what << ": error " << figures.Error << " levels, depth reads per fragment mean "
+            << figures.Cost.Mean << ", 99th percentile " << figures.Cost.P99 << ", most "
+            << figures.Cost.Max << " (" << figures.Cost.Fragments << " fragments)\n";
+}
+
+// What cone stepping must show on a truth scene against the linear and binary search at
+// default settings: an error within 1% of its error and at most this share of its reads.
+constexpr double ConeReadShare = 0.85;
+bool ConeSteppingPays(const SearchFigures& linear, const SearchFigures& cones)
+{
+  return cones.Error <= 1.01 * linear.Error && cones.Cost.Mean <= ConeReadShare * linear.Cost.Mean;
+}
+} // namespace
+
+// Against the displaced mesh, cone stepping draws what the linear and binary search draws,
+// reading fewer depths on every truth scene; no fragment reads more than two depths per cone
+// step, the bottom of the box and the secant steps.
+TEST(SurfaceDetailRelief, ConeSteppingIsAsAccurateInFewerReads)
+{
+  for (const Scene& scene : ReliefTruthScenes())
+  {
+    Options cones;
+    cones.ConeStepping = true;
+    const SearchFigures linear = Search(scene, Options());
+    const SearchFigures stepped = Search(scene, cones);
+    Print(scene.Name + ", linear + binary search", linear);
+    Print(scene.Name + ", cone stepping", stepped);
+    ASSERT_GT(stepped.Cost.Fragments, 1000) << scene.Name;
+    EXPECT_TRUE(ConeSteppingPays(linear, stepped)) << scene.Name;
+    vtkNew<vtkSurfaceDetailMapper> defaults;
+    EXPECT_LE(stepped.Cost.Max,
+      2 * defaults->GetLinearSearchSteps() + 1 + defaults->GetBinarySearchSteps())
+      << scene.Name;
+  }
+}
+
+// The read counts see cone stepping: switched off, or given a map of zero-width cones at the
+// top of the box (which still finds every hit, by footprint-sized steps), it does not pay.
+TEST(SurfaceDetailRelief, ConeSteppingMutationsDoNotPay)
+{
+  const Scene scene = ReliefTruthScenes()[1];
+  const SearchFigures linear = Search(scene, Options());
+  Options zero;
+  zero.ConeStepping = true;
+  zero.ZeroCones = true;
+  const SearchFigures flat = Search(scene, zero);
+  Print(scene.Name + ", zero-width cones", flat);
+  EXPECT_FALSE(ConeSteppingPays(linear, flat));
+  EXPECT_FALSE(ConeSteppingPays(linear, Search(scene, Options())));
+}
+
+// Where a ray crosses many texels (the wall's bricks at 512 x 512 texels), cone stepping reads
+// half the depths the linear and binary search reads; both differ from a dense search (256
+// linear and 16 binary steps) by less than two levels, a tenth of relief's own error against
+// the displaced mesh.
+TEST(SurfaceDetailRelief, ConeSteppingOnAFineMap)
+{
+  Scene scene = ReliefTruthScenes()[1];
+  Options linear, cones, dense;
+  linear.MapSize = cones.MapSize = dense.MapSize = 512;
+  cones.ConeStepping = true;
+  dense.AdaptiveSteps = false;
+  dense.LinearSteps = 256;
+  dense.BinarySteps = 16;
+  const SearchFigures searched = Search(scene, linear, &dense);
+  const SearchFigures stepped = Search(scene, cones, &dense);
+  Print("512 x 512 bricks, linear + binary search", searched);
+  Print("512 x 512 bricks, cone stepping", stepped);
+  EXPECT_LE(stepped.Cost.Mean, 0.55 * searched.Cost.Mean);
+  EXPECT_LE(stepped.Error, 2.0);
+  EXPECT_LE(searched.Error, 2.0);
+}
+
+// Thin walls (one texel of full height every eight, on a flat floor): a step that passed
+// through one would draw the floor behind it. Against a dense search, cone stepping is closer
+// than the linear and binary search, which steps over some of the walls' ridges; cones made
+// wider than the map's let the rays through.
+TEST(SurfaceDetailRelief, ConeStepsDoNotPassThroughThinWalls)
+{
+  auto walls = vtkSmartPointer<vtkImageData>::New();
+  walls->SetDimensions(64, 64, 1);
+  walls->AllocateScalars(VTK_FLOAT, 1);
+  auto* h = static_cast<float*>(walls->GetScalarPointer());
+  for (int j = 0; j < 64; ++j)
+  {
+    for (int i = 0; i < 64; ++i)
+    {
+      h[j * 64 + i] = (i % 8 == 0 || j % 8 == 0) ? 1.0f : 0.0f;
+    }
+  }
+  const Scene scene = ReliefTruthScenes()[1];
+  Options linear, cones, wide, dense;
+  linear.Heights = cones.Heights = wide.Heights = dense.Heights = walls;
+  cones.ConeStepping = wide.ConeStepping = true;
+  wide.ConeWidening = 100.0;
+  dense.AdaptiveSteps = false;
+  dense.LinearSteps = 256;
+  dense.BinarySteps = 16;
+  const SearchFigures searched = Search(scene, linear, &dense);
+  const SearchFigures stepped = Search(scene, cones, &dense);
+  const SearchFigures widened = Search(scene, wide, &dense);
+  Print("thin walls, linear + binary search", searched);
+  Print("thin walls, cone stepping", stepped);
+  Print("thin walls, cones a hundred times wider", widened);
+  EXPECT_LE(stepped.Error, searched.Error);
+  EXPECT_GT(widened.Error, 2.0 * stepped.Error);
 }

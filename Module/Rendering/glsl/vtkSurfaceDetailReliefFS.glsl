@@ -3,9 +3,9 @@
 // Relief mapping (Policarpo, Oliveira & Comba 2005). The mesh is the top of a
 // box DepthScale deep (object units, Documentation/Conventions.md); depth d in [0,1] is SD_RELIEF_DEPTH(tc)
 // (the relief map's alpha, or 1 - h of the height map, defined by the mapper). The eye ray
-// is marched through the box in (s, t, depth) coordinates: a linear search to the first
-// sample under the height field, so thin features are not stepped over, then a binary
-// search. The colour, the normal and the light visibility are all taken at the hit.
+// is marched through the box in (s, t, depth) coordinates by one of two searches, the linear
+// and binary search or cone stepping (sdReliefSearch, in the file that follows this one).
+// The colour, the normal and the light visibility are all taken at the hit.
 //
 // The box's frame at a fragment is (dP/ds, dP/dt, N): the surface's own texture
 // derivatives from screen-space derivatives, so depth and parallax keep object units
@@ -69,62 +69,12 @@ int sdReliefSteps(vec2 path)
   return int(clamp(ceil(texels), min(sdMinLinearSteps, most), most));
 }
 
-// Binary steps that narrow one linear step of a ray spanning `reach` texels or pixels
-// (whichever is more) to a quarter of one; BinarySearchSteps always when adaptive steps
-// are off.
-int sdReliefBinarySteps(float reach, int linearSteps)
-{
-  if (sdAdaptiveSteps == 0)
-  {
-    return sdBinarySearchSteps;
-  }
-  float needed = ceil(log2(max(4.0 * reach / float(linearSteps), 1.0)));
-  return int(min(needed, float(sdBinarySearchSteps)));
-}
-
-// The depth fraction where the ray tc + d*delta first goes under the height field; above:
-// the last depth the searches found the ray still above it. The bracket the searches leave
-// is closed by the secant through the ray's heights over the field at its ends, exact
-// where the field is planar there (a flat top comes out at depth 0, not half a bracket in).
-float sdReliefIntersect(vec2 tc, vec2 delta, int steps, int binarySteps, out float above)
-{
-  float lo = 0.0;
-  float hi = 1.0;
-  float gapLo = sdReliefDepthAt(tc); // field depth minus ray depth: > 0 above the field
-  float gapHi = 0.0;
-  float stepSize = 1.0 / float(steps);
-  for (int i = 1; i <= steps; ++i)
-  {
-    float d = float(i) * stepSize;
-    float gap = sdReliefDepthAt(tc + d * delta) - d;
-    if (gap <= 0.0)
-    {
-      hi = d;
-      gapHi = gap;
-      break;
-    }
-    lo = d;
-    gapLo = gap;
-  }
-  for (int i = 0; i < binarySteps; ++i)
-  {
-    float mid = 0.5 * (lo + hi);
-    float gap = sdReliefDepthAt(tc + mid * delta) - mid;
-    if (gap <= 0.0)
-    {
-      hi = mid;
-      gapHi = gap;
-    }
-    else
-    {
-      lo = mid;
-      gapLo = gap;
-    }
-  }
-  above = lo;
-  float span = gapLo - gapHi;
-  return span > 0.0 ? lo + (hi - lo) * gapLo / span : lo;
-}
+// The search for the hit, by the linear and binary search (vtkSurfaceDetailReliefLinearFS.glsl)
+// or by cone stepping (vtkSurfaceDetailReliefConeFS.glsl), whichever follows: the depth fraction
+// where the ray tc + d*delta first goes under the height field. aboveTC, aboveDepth: where
+// shadow rays start, a point the search found above the field, next to the hit. reach: the
+// texels or pixels (the more) that one unit of depth spans along the ray.
+float sdReliefSearch(vec2 tc, vec2 delta, float reach, out vec2 aboveTC, out float aboveDepth);
 
 // Marches the view ray from the fragment; returns the texture coordinate every texture is
 // then read at. N: the unit normal of the front face; depthUnitVC: view units per object
@@ -185,13 +135,10 @@ vec2 sdReliefTCoord(vec2 tc, vec3 posVC, vec3 N, float depthUnitVC)
   vec3 ray = sdReliefToBox(-V);
   float down = max(-ray.z, sdMinRayCosine);
   vec2 delta = ray.xy * (sdReliefDepthVC / down); // texture offset from the top to depth 1
-  int steps = sdReliefSteps(delta);
   float reach = max(length(delta * sdReliefTexels), sdReliefDepthVC / max(pixel, 1e-30));
-  float d = sdReliefIntersect(
-    tc, delta, steps, sdReliefBinarySteps(reach, steps), sdReliefAboveDepth);
+  float d = sdReliefSearch(tc, delta, reach, sdReliefAboveTC, sdReliefAboveDepth);
   sdReliefHitTC = tc + d * delta;
   sdReliefHitDepth = d;
-  sdReliefAboveTC = tc + sdReliefAboveDepth * delta;
   sdReliefRayLength = sdReliefFade * d * sdReliefDepthVC / down;
   return tc + sdReliefFade * d * delta;
 }
