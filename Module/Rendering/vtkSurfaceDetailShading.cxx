@@ -981,8 +981,7 @@ void vtkSurfaceDetailShading::SetUniforms(vtkShaderProgram* program, vtkRenderer
     if (this->ActiveUsesConeMap)
     {
       program->SetUniformi("sdConeMap", this->ConeTexture->GetTextureUnit());
-      program->SetUniformi(
-        "sdConeRepeat", this->Detail->GetConeMap()->GetWrap() == vtkTexture::Repeat ? 1 : 0);
+
     }
     if (this->Detail->GetDepthCorrection())
     {

@@ -10,12 +10,15 @@
 // the relief variants the image error (RMSE in 8-bit levels over the surface's pixels)
 // against relief with 256 linear and 16 binary steps, so that settings compare at equal
 // error.
-// Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall|triplanar]
+// Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall|caps|triplanar]
 //   rounds: default 60. --size: the window's side, default 1024 (a real GPU needs 4096 for
 //   the surface shading to outweigh a frame's fixed cost). --scene: a sphere filling most of
-//   the window (default), a wall seen head-on filling all of it, or the sphere without
-//   texture coordinates mapped triplanar (colour, colour + normal map, bump) at several blend
-//   sharpnesses, with the share of its pixels that read one, two or three projections.
+//   the window (default), a wall seen head-on filling all of it, a wall with a 4 x 4 grid of
+//   round caps on a 1024 x 1024 height map seen obliquely (where rays cross many texels), or
+//   the sphere without texture coordinates mapped triplanar (colour, colour + normal map,
+//   bump) at several blend sharpnesses, with the share of its pixels that read one, two or
+//   three projections. Relief runs with the linear and binary search and with cone stepping
+//   (the heights' cone map, made before the frames: its build time is printed).
 
 #include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailConventions.h"
@@ -23,6 +26,7 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkHeightMapToConeMap.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -90,7 +94,40 @@ struct Variant
   bool Shadows = false;
   bool DepthCorrection = false;
   double TriplanarSharpness = 0.0; // 0: texture coordinates; else triplanar, this sharpness
+  bool Cones = false;              // relief by cone stepping
 };
+
+// A 4 x 4 grid of round caps (hemispheres squashed to height 1) on a flat floor at height 0.
+vtkSmartPointer<vtkImageData> Caps(int size)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* h = static_cast<float*>(image->GetScalarPointer());
+  const double cell = size / 4.0, radius = 0.4 * cell;
+  for (int j = 0; j < size; ++j)
+  {
+    for (int i = 0; i < size; ++i)
+    {
+      const double x = std::fmod(i + 0.5, cell) - 0.5 * cell;
+      const double y = std::fmod(j + 0.5, cell) - 0.5 * cell;
+      const double r2 = (x * x + y * y) / (radius * radius);
+      h[j * size + i] = static_cast<float>(r2 < 1 ? std::sqrt(1 - r2) : 0.0);
+    }
+  }
+  return image;
+}
+
+// The heights' cone map, and how long it took to make.
+vtkSmartPointer<vtkTexture> ConeTexture(vtkImageData* heights, double& seconds)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkHeightMapToConeMap> cones;
+  cones->SetInputData(heights);
+  cones->Update();
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return SurfaceDetailTruthScenes::RepeatedTexture(cones->GetOutput());
+}
 
 // Texture squares per unit when the sphere is mapped triplanar: about the size of the texture
 // squares its texture coordinates give it.
@@ -98,18 +135,18 @@ constexpr double TriplanarScale = 0.7;
 
 // The height map's relief map: normals of the relief DepthScale deep on a texture square
 // about as large as the scene's, depth in alpha.
-vtkSmartPointer<vtkTexture> ReliefTexture(double depth, double textureSide)
+vtkSmartPointer<vtkTexture> ReliefTexture(vtkImageData* heights, double depth, double textureSide)
 {
   vtkNew<vtkHeightMapToNormalMap> relief;
-  relief->SetInputData(Texture(1, true)->GetInput());
+  relief->SetInputData(heights);
   relief->SetBumpScale(depth / textureSide);
   relief->OutputReliefOn();
   relief->Update();
   return SurfaceDetailTruthScenes::RepeatedTexture(relief->GetOutput());
 }
 
-vtkSmartPointer<vtkActor> MakeActor(
-  vtkAlgorithmOutput* surface, const Variant& variant, vtkTexture* relief, double depth)
+vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* surface, const Variant& variant,
+  vtkTexture* relief, vtkTexture* cones, double depth)
 {
   vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper;
   if (variant.Technique < 0)
@@ -125,6 +162,7 @@ vtkSmartPointer<vtkActor> MakeActor(
     detail->SetTechnique(variant.Technique);
     detail->SetTangentFree(variant.TangentFree);
     detail->SetReliefMap(relief);
+    detail->SetConeMap(variant.Cones ? cones : nullptr);
     detail->SetDepthScale(depth);
     detail->SetLinearSearchSteps(variant.LinearSteps);
     detail->SetAdaptiveSteps(variant.Adaptive);
@@ -219,12 +257,13 @@ int main(int argc, char* argv[])
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
       std::cout
-        << "Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall|triplanar]\n\n"
+        << "Usage: SurfaceDetailMapperFrameTimes [rounds] [--size N] [--scene sphere|wall|caps|triplanar]\n\n"
            "Median frame time of each vtkSurfaceDetailMapper technique against VTK's plain\n"
            "mapper, and relief's image error against a reference, as a Markdown table.\n"
            "rounds: default 60; --size: the window's side, default 1024; --scene: a sphere\n"
-           "filling most of the window (default), a wall seen head-on, or the sphere mapped\n"
-           "triplanar (no texture coordinates) at several blend sharpnesses.\n";
+           "filling most of the window (default), a wall seen head-on, a wall of round caps\n"
+           "seen obliquely, or the sphere mapped triplanar (no texture coordinates) at several\n"
+           "blend sharpnesses.\n";
       return 0;
     }
   }
@@ -261,6 +300,9 @@ int main(int argc, char* argv[])
     { "ReliefMapping, fixed 32 + 8", relief, false, 32, false },
     { "ReliefMapping, SelfShadowing", relief, false, 32, true, 8, true },
     { "ReliefMapping, DepthCorrection", relief, false, 32, true, 8, false, true },
+    { "ReliefMapping, cone stepping", relief, false, 32, true, 8, false, false, 0.0, true },
+    { "ReliefMapping, cone stepping, SelfShadowing", relief, false, 32, true, 8, true, false, 0.0,
+      true },
     { "ReliefMapping, reference 256 + 16", relief, false, 256, false, 16 },
   };
   const std::vector<Variant>& variants = scene == "triplanar" ? triplanarVariants : detailVariants;
@@ -270,7 +312,17 @@ int main(int argc, char* argv[])
   vtkNew<vtkParametricSphere> sphere;
   vtkNew<vtkParametricRectangle> wall; // 4 x 3.5
   double textureSide = 0.0, depth = 0.0;
-  if (scene == "wall")
+  vtkSmartPointer<vtkImageData> heights = Texture(1, true)->GetInput();
+  if (scene == "caps")
+  {
+    source->SetParametricFunction(wall);
+    source->SetUResolution(16);
+    source->SetVResolution(16);
+    textureSide = 3.75;
+    depth = 0.3;
+    heights = Caps(1024);
+  }
+  else if (scene == "wall")
   {
     source->SetParametricFunction(wall);
     source->SetUResolution(16);
@@ -289,7 +341,10 @@ int main(int argc, char* argv[])
     depth = 0.05;
   }
   source->GenerateTangentsOn();
-  vtkSmartPointer<vtkTexture> reliefMap = ReliefTexture(depth, textureSide);
+  vtkSmartPointer<vtkTexture> reliefMap = ReliefTexture(heights, depth, textureSide);
+  double coneSeconds = 0.0;
+  vtkSmartPointer<vtkTexture> coneMap =
+    scene == "triplanar" ? nullptr : ConeTexture(heights, coneSeconds);
   // Triplanar variants draw the same sphere without texture coordinates (with them, VTK
   // itself would apply the colour texture by them).
   vtkNew<vtkParametricSurfaceSource> bare;
@@ -304,12 +359,18 @@ int main(int argc, char* argv[])
   {
     vtkAlgorithmOutput* surface =
       variant.TriplanarSharpness > 0.0 ? bare->GetOutputPort() : source->GetOutputPort();
-    actors.push_back(MakeActor(surface, variant, reliefMap, depth));
+    actors.push_back(MakeActor(surface, variant, reliefMap, coneMap, depth));
     renderer->AddActor(actors.back());
   }
   renderer->ResetCamera();
-  // The sphere covers most of the window; the wall all of it.
-  renderer->GetActiveCamera()->Zoom(scene == "wall" ? 2.2 : 1.4);
+  // The sphere covers most of the window; the wall all of it; the caps are seen at 30 degrees
+  // above the wall's plane.
+  if (scene == "caps")
+  {
+    renderer->GetActiveCamera()->Elevation(-60);
+    renderer->GetActiveCamera()->OrthogonalizeViewUp();
+  }
+  renderer->GetActiveCamera()->Zoom(scene == "wall" ? 2.2 : (scene == "caps" ? 2.0 : 1.4));
   renderer->ResetCameraClippingRange();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
@@ -372,6 +433,12 @@ int main(int argc, char* argv[])
   }
   std::printf(
     "\n%d interleaved frames per variant, %dx%d, scene %s\n", rounds, size, size, scene.c_str());
+  if (coneMap)
+  {
+    int dims[3];
+    heights->GetDimensions(dims);
+    std::printf("cone map of the %dx%d heights made in %.2f s\n", dims[0], dims[1], coneSeconds);
+  }
   if (scene == "triplanar")
   {
     PrintProjectionShares();

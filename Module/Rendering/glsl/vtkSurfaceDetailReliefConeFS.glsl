@@ -15,24 +15,18 @@
 //   the bracket or the gap is below a fraction of a texel and of a pixel.
 // Each step reads at most one cone and one depth.
 uniform sampler2D sdConeMap;
-uniform int sdConeRepeat; // 1: the map tiles (Repeat), 0: its edge texels continue
 
 // Gap (field depth minus ray depth, in units of depth) under which a secant step is taken as
 // the hit, in texels or pixels of the whole depth's reach.
 const float sdConeGapTolerance = 0.125;
 // How far past a footprint's edge a step lands, in texels: the next point reads the next
 // texel's cone, never the same one again.
-const float sdConeEdgeNudge = 1.0 / 1024.0;
+const float sdConeEdgeNudge = 1.0 / 256.0;
 
-// The cone of the texel whose footprint holds tc, picked here rather than by the sampler, whose
-// texel choice at a footprint's edge need not be the same as this march's.
+// The cone of the texel whose footprint holds tc (the map is sampled nearest, with its wrap).
 vec2 sdReliefConeAt(vec2 tc)
 {
-  ivec2 size = textureSize(sdConeMap, 0);
-  ivec2 texel = ivec2(floor(tc * vec2(size)));
-  texel = sdConeRepeat != 0 ? texel - size * ivec2(floor(vec2(texel) / vec2(size)))
-                            : clamp(texel, ivec2(0), size - 1);
-  return texelFetch(sdConeMap, texel, 0).rg;
+  return textureLod(sdConeMap, tc, 0.0).rg;
 }
 
 float sdReliefSearch(vec2 tc, vec2 delta, float reach, out vec2 aboveTC, out float aboveDepth)
