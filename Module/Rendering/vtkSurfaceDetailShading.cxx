@@ -445,45 +445,107 @@ void vtkSurfaceDetailShading::BindMaps(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+std::vector<float> vtkSurfaceDetailShading::ReliefDepths() const
+{
+  // The depth the relief reads: the relief map's alpha, or one minus the height.
+  vtkTexture* texture =
+    this->ActiveUsesReliefMap ? this->Detail->GetReliefMap() : this->Detail->GetHeightMap();
+  vtkDataArray* scalars = texture->GetInput()->GetPointData()->GetScalars();
+  double scale = 1.0;
+  int component = 3;
+  if (this->ActiveUsesReliefMap)
+  {
+    scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  }
+  else
+  {
+    vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
+    component = this->Detail->GetHeightComponent();
+  }
+  std::vector<float> depths(static_cast<size_t>(scalars->GetNumberOfTuples()));
+  for (size_t k = 0; k < depths.size(); ++k)
+  {
+    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), component);
+    const double depth = this->ActiveUsesReliefMap ? v : 1.0 - v;
+    depths[k] = std::isfinite(depth) ? static_cast<float>(std::min(std::max(depth, 0.0), 1.0)) : 1.f;
+  }
+  return depths;
+}
+
+//------------------------------------------------------------------------------
 void vtkSurfaceDetailShading::UploadConeMap(vtkRenderer* ren)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkTexture* cone = this->Detail->GetConeMap();
   vtkImageData* image = cone->GetInput();
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
-  const vtkMTimeType stamp = std::max({ image->GetMTime(), scalars->GetMTime(), cone->GetMTime() });
+  vtkTexture* depth =
+    this->ActiveUsesReliefMap ? this->Detail->GetReliefMap() : this->Detail->GetHeightMap();
+  const vtkMTimeType stamp = std::max({ image->GetMTime(), scalars->GetMTime(), cone->GetMTime(),
+    depth->GetMTime(), depth->GetInput()->GetMTime(),
+    depth->GetInput()->GetPointData()->GetScalars()->GetMTime() });
   if (!this->ConeTexture)
   {
     this->ConeTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
-  if (this->ConeTexture->GetContext() == window && stamp == this->ConeUploadStamp)
+  if (this->ConeTexture->GetContext() == window && stamp == this->ConeUploadStamp &&
+    depth == this->ConeUploadDepth)
   {
     return;
   }
   int dims[3];
   image->GetDimensions(dims);
-  // Float, not the 8 bits vtkOpenGLTexture would keep: a rounded-up ratio or a rounded-down
-  // apex would let a step pass through the surface.
-  std::vector<float> texels(2 * static_cast<size_t>(dims[0]) * dims[1]);
-  for (size_t k = 0; k < texels.size() / 2; ++k)
+  const int w = dims[0], h = dims[1];
+  const int wrap = cone->GetWrap();
+  const std::vector<float> depths = this->ReliefDepths();
+  // A texel that is not finite guides no step: apex at the top, no cone.
+  auto apexAndRatio = [&](int i, int j, double& apex, double& ratio)
   {
-    const double apex = scalars->GetComponent(static_cast<vtkIdType>(k), 0);
-    const double ratio = scalars->GetComponent(static_cast<vtkIdType>(k), 1);
-    // A texel that is not finite guides no step: apex at the top, no cone.
+    const vtkIdType k = static_cast<vtkIdType>(vtkSurfaceDetail::WrapIndex(j, h, wrap)) * w +
+      vtkSurfaceDetail::WrapIndex(i, w, wrap);
+    apex = scalars->GetComponent(k, 0);
+    ratio = scalars->GetComponent(k, 1);
     const bool valid = std::isfinite(apex) && std::isfinite(ratio);
-    texels[2 * k] = valid ? static_cast<float>(std::min(std::max(apex, 0.0), 1.0)) : 0.f;
-    texels[2 * k + 1] = valid ? static_cast<float>(std::max(ratio, 0.0)) : 0.f;
+    apex = valid ? std::min(std::max(apex, 0.0), 1.0) : 0.0;
+    ratio = valid ? std::max(ratio, 0.0) : 0.0;
+  };
+  // Texel (i,j): (depth, apex, ratio), read with linear filtering so that one read gives the
+  // depth where the ray is and a cone for where it stands. The apex and the ratio are the least
+  // over the texel and its eight neighbours: any blend of the four texels around a point is
+  // then no higher an apex and no wider a cone than that point's own texel's, so it stays safe.
+  // Floats, not the 8 bits vtkOpenGLTexture would keep, for the same reason.
+  std::vector<float> texels(3 * static_cast<size_t>(w) * h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      double apex = 1.0, ratio = VTK_DOUBLE_MAX;
+      for (int dj = -1; dj <= 1; ++dj)
+      {
+        for (int di = -1; di <= 1; ++di)
+        {
+          double a, r;
+          apexAndRatio(i + di, j + dj, a, r);
+          apex = std::min(apex, a);
+          ratio = std::min(ratio, r);
+        }
+      }
+      float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
+      texel[0] = depths[static_cast<size_t>(j) * w + i];
+      texel[1] = static_cast<float>(apex);
+      texel[2] = static_cast<float>(ratio);
+    }
   }
   this->ConeTexture->SetContext(window);
   this->ConeTexture->SetRequireTextureFloat(true);
   this->ConeTexture->ResetFormatAndType();
-  this->ConeTexture->Create2DFromRaw(dims[0], dims[1], 2, VTK_FLOAT, texels.data());
-  this->ConeTexture->SetWrapS(cone->GetWrap());
-  this->ConeTexture->SetWrapT(cone->GetWrap());
-  // A texel's cone holds for its own footprint only: never blended with a neighbour's.
-  this->ConeTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-  this->ConeTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->ConeTexture->Create2DFromRaw(w, h, 3, VTK_FLOAT, texels.data());
+  this->ConeTexture->SetWrapS(wrap);
+  this->ConeTexture->SetWrapT(wrap);
+  this->ConeTexture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->ConeTexture->SetMagnificationFilter(vtkTextureObject::Linear);
   this->ConeUploadStamp = stamp;
+  this->ConeUploadDepth = depth;
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,7 @@ class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkSurfaceDetailMapper;
+class vtkTexture;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -94,8 +95,10 @@ private:
   // (integer types scaled to [0,1]): vtkOpenGLTexture would store float images in 8 bits,
   // too coarse for differences.
   void UploadHeightMap(vtkRenderer* ren);
-  // Uploads the cone map as 32-bit floats, read texel by texel (nearest).
+  // Uploads the cone map with the relief's depth beside it, as 32-bit floats.
   void UploadConeMap(vtkRenderer* ren);
+  // The relief's depth per texel, as the shader reads it.
+  std::vector<float> ReliefDepths() const;
   // Passes each of VTK's per-light diffuse terms through the relief's shadow search.
   void AddReliefShadows(std::string& fs) const;
   void SetTriplanarUniforms(
@@ -125,6 +128,7 @@ private:
   int HeightUploadComponent = 0;
   vtkSmartPointer<vtkTextureObject> ConeTexture;
   vtkMTimeType ConeUploadStamp = 0;
+  const vtkTexture* ConeUploadDepth = nullptr; // the map its depths came from
 };
 
 #endif

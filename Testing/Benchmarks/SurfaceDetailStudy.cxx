@@ -9,8 +9,8 @@
 // technique at several settings: displaced meshes (resolutions x NormalModes), normal mapping
 // from the height map and baked (vtkNormalMapBaker) from a displaced mesh at half the truth's
 // resolution, bump mapping (forward, central, tangent free), parallax, relief
-// mapping at several (linear, binary) step pairs with and without self-shadowing, and the
-// coarse mesh with no detail at all. For each: median frame time, first frame, CPU
+// mapping at several (linear, binary) step pairs and by cone stepping, with and without
+// self-shadowing, and the coarse mesh with no detail at all. For each: median frame time, first frame, CPU
 // preparation (the filters that make its mesh and maps; the height map and the detailed mesh
 // a map is baked from are inputs, not preparation), memory of its mesh and detail
 // textures, and the image error over the object's pixels (RMSE, PSNR, SSIM).
@@ -35,6 +35,7 @@
 
 #include <vtkActor.h>
 #include <vtkDisplacementMapFilter.h>
+#include <vtkHeightMapToConeMap.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkImageWrapPad.h>
@@ -307,6 +308,7 @@ struct Variant
   int Linear = 32, Binary = 8;
   bool Adaptive = false, Shadows = false;
   bool FromHeights = false;  // Relief: depth and normals from the height map, no relief map
+  bool Cones = false;        // Relief: cone stepping, with the heights' cone map
   int TexelsPerSquare = 128; // Baked
 };
 
@@ -380,6 +382,10 @@ std::vector<Variant> Variants(const Scene& scene)
     adaptive.Adaptive = true;
     adaptive.Shadows = shadows;
     variants.push_back(adaptive);
+    Variant cones = adaptive;
+    cones.Setting = "cone stepping, at most 32 + 8";
+    cones.Cones = true;
+    variants.push_back(cones);
   }
   Variant fromHeights{ "relief", "32 + 8, from the height map", Kind::Relief };
   fromHeights.FromHeights = true;
@@ -392,6 +398,7 @@ struct Prepared
 {
   vtkSmartPointer<vtkPolyData> Mesh;
   vtkSmartPointer<vtkImageData> Map; // normal or relief map, when the variant uses one
+  vtkSmartPointer<vtkImageData> Cones; // cone map, for cone stepping
 };
 
 Prepared Prepare(const Scene& scene, const Variant& v, const Inputs& in)
@@ -417,6 +424,13 @@ Prepared Prepare(const Scene& scene, const Variant& v, const Inputs& in)
       if (map)
       {
         p.Map = NormalMap(in.HeightImage, in.Strength, v.Scheme, v.What == Kind::Relief);
+      }
+      if (v.Cones)
+      {
+        vtkNew<vtkHeightMapToConeMap> cones;
+        cones->SetInputData(in.HeightImage);
+        cones->Update();
+        p.Cones = cones->GetOutput();
       }
       break;
     }
@@ -486,6 +500,10 @@ vtkSmartPointer<vtkActor> MakeActor(
       mapper->SetBinarySearchSteps(v.Binary);
       mapper->SetAdaptiveSteps(v.Adaptive);
       mapper->SetSelfShadowing(v.Shadows);
+      if (p.Cones)
+      {
+        mapper->SetConeMap(RepeatedTexture(p.Cones));
+      }
       break;
   }
   actor->SetMapper(mapper);
@@ -636,7 +654,7 @@ Convergence RunScene(const Scene& scene, const Options& options, std::vector<Row
     }
     row.PrepMs = Median(prep);
     row.MeshKiB = KiB(p.Mesh);
-    row.TextureKiB = KiB(p.Map);
+    row.TextureKiB = KiB(p.Map) + KiB(p.Cones);
     if (v.What == Kind::Bump || v.What == Kind::Parallax || v.FromHeights)
     {
       row.TextureKiB += KiB(in.HeightImage);
