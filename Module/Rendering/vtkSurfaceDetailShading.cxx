@@ -509,12 +509,14 @@ void vtkSurfaceDetailShading::UploadConeMap(vtkRenderer* ren)
     apex = valid ? std::min(std::max(apex, 0.0), 1.0) : 0.0;
     ratio = valid ? std::max(ratio, 0.0) : 0.0;
   };
-  // Texel (i,j): (depth, apex, ratio), read with linear filtering so that one read gives the
-  // depth where the ray is and a cone for where it stands. The apex and the ratio are the least
-  // over the texel and its eight neighbours: any blend of the four texels around a point is
-  // then no higher an apex and no wider a cone than that point's own texel's, so it stays safe.
-  // Floats, not the 8 bits vtkOpenGLTexture would keep, for the same reason.
-  std::vector<float> texels(3 * static_cast<size_t>(w) * h);
+  // Texel (i,j): (depth, apex, square root of the ratio), read with linear filtering so that one
+  // read gives the depth where the ray is and a cone for where it stands. The apex and the ratio
+  // are the least over the texel and its eight neighbours: any blend of the four texels around
+  // a point is then no higher an apex and no wider a cone than that point's own texel's. Eight
+  // bits each, as a relief map holds its depth (and as texture units read fastest), the apex
+  // and the ratio rounded toward the safe side (the ratio at most 1); the square root keeps
+  // narrow cones apart.
+  std::vector<unsigned char> bytes(4 * static_cast<size_t>(w) * h);
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
@@ -530,16 +532,17 @@ void vtkSurfaceDetailShading::UploadConeMap(vtkRenderer* ren)
           ratio = std::min(ratio, r);
         }
       }
-      float* texel = &texels[3 * (static_cast<size_t>(j) * w + i)];
-      texel[0] = depths[static_cast<size_t>(j) * w + i];
-      texel[1] = static_cast<float>(apex);
-      texel[2] = static_cast<float>(ratio);
+      unsigned char* texel = &bytes[4 * (static_cast<size_t>(j) * w + i)];
+      texel[0] = static_cast<unsigned char>(std::lround(255.0 * depths[static_cast<size_t>(j) * w + i]));
+      // Half a step more: the rounded depths may lie that much above the exact ones.
+      texel[1] = static_cast<unsigned char>(std::max(std::floor(255.0 * apex - 0.5), 0.0));
+      texel[2] = static_cast<unsigned char>(std::floor(255.0 * std::sqrt(std::min(ratio, 1.0))));
+      texel[3] = 255;
     }
   }
   this->ConeTexture->SetContext(window);
-  this->ConeTexture->SetRequireTextureFloat(true);
   this->ConeTexture->ResetFormatAndType();
-  this->ConeTexture->Create2DFromRaw(w, h, 3, VTK_FLOAT, texels.data());
+  this->ConeTexture->Create2DFromRaw(w, h, 4, VTK_UNSIGNED_CHAR, bytes.data());
   this->ConeTexture->SetWrapS(wrap);
   this->ConeTexture->SetWrapT(wrap);
   this->ConeTexture->SetMinificationFilter(vtkTextureObject::Linear);

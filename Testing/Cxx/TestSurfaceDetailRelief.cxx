@@ -889,7 +889,7 @@ TEST(SurfaceDetailRelief, ConeSteppingMutationsDoNotPay)
     const SearchFigures stepped = Search(scene, cones);
     Print(scene.Name + ", 512 x 512, zero-width cones", flat);
     Print(scene.Name + ", 512 x 512, cone stepping", stepped);
-    EXPECT_LE(stepped.Cost.Mean, 0.65 * flat.Cost.Mean) << scene.Name;
+    EXPECT_LE(stepped.Cost.Mean, 0.7 * flat.Cost.Mean) << scene.Name;
   }
   const SearchFigures linear = Search(scenes[1], Options());
   EXPECT_FALSE(ConeSteppingPays(linear, Search(scenes[1], Options())));

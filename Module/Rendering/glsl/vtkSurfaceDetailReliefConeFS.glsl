@@ -10,7 +10,8 @@
 //   the bracket or the gap is below a fraction of a texel and of a pixel;
 // - above the surface: on to where the ray crosses the middle of a texel next (one-texel
 //   ridges peak there, not at the edges), as a linear search of one step per texel would, or,
-//   above a, to the cone's side if that is further (Dummer's conservative cone step).
+//   above a, to the cone's side if that is further (Dummer's conservative cone step); at
+//   least the rest of the ray over the steps left (LinearSearchSteps).
 uniform sampler2D sdConeMap;
 
 // Gap (field depth minus ray depth, in units of depth) under which a secant step is taken as
@@ -19,10 +20,11 @@ const float sdConeGapTolerance = 0.125;
 // The shortest step to a texel's middle, in texels: a ray on a middle goes on to the next.
 const float sdConeEdgeNudge = 1.0 / 256.0;
 
-// (depth, apex depth, cone ratio) at tc.
+// (depth, apex depth, cone ratio) at tc; the map holds the ratio's square root.
 vec3 sdReliefConeAt(vec2 tc)
 {
-  return textureLod(sdConeMap, tc, 0.0).rgb;
+  vec3 c = textureLod(sdConeMap, tc, 0.0).rgb;
+  return vec3(c.x, c.y, c.z * c.z);
 }
 
 float sdReliefSearch(vec2 tc, vec2 delta, float reach, out vec2 aboveTC, out float aboveDepth)
@@ -61,7 +63,10 @@ float sdReliefSearch(vec2 tc, vec2 delta, float reach, out vec2 aboveTC, out flo
     float toMiddle = (0.5 - f) * (alongS ? sign(dir.x) : sign(dir.y)) * texelDepth;
     toMiddle += toMiddle > nudge ? 0.0 : texelDepth;
     float coneStep = cone.z * max(cone.y - d, 0.0) / (run + cone.z);
-    d = min(d + max(toMiddle, coneStep), 1.0);
+    // Never shorter than the rest of the ray over the steps left, so that a long ray reaches the
+    // bottom spaced as the linear search would space it.
+    float share = (1.0 - d) / float(sdLinearSearchSteps - i);
+    d = min(d + max(max(toMiddle, coneStep), share), 1.0);
   }
   if (!under)
   {
