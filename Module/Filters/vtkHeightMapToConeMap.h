@@ -16,7 +16,8 @@
  *   the surface. A ray that starts on the cone's axis above a and goes no further than the
  *   cone's side cannot reach the surface, so a march may step that far at once (conservative
  *   cone stepping, Dummer 2006), wherever in the texel it stands.
- * Where nothing above a limits it, the ratio is MaxConeRatio.
+ * Where nothing above a limits it, the ratio is MaxConeRatio. vtkSurfaceDetailMapper::SetConeMap
+ * takes it for relief mapping by cone stepping.
  *
  * How the ratio is bounded, cell by cell (a cell is the square between four texel centres, on
  * which the surface is bilinear): a point y of cell Q is at least g from the footprint (g the
