@@ -383,7 +383,8 @@ std::vector<Variant> Variants(const Scene& scene)
     adaptive.Shadows = shadows;
     variants.push_back(adaptive);
     Variant cones = adaptive;
-    cones.Setting = "cone stepping, at most 32 + 8";
+    cones.Family += " by cone stepping";
+    cones.Setting = "at most 32 + 8";
     cones.Cones = true;
     variants.push_back(cones);
   }
@@ -761,7 +762,7 @@ void WriteRenderingCSV(const std::string& path, const std::vector<Row>& rows,
     "mesh_kib,detail_texture_kib,rmse,psnr_db,ssim,rmse_interior,pareto_front\n");
   for (const Row& r : rows)
   {
-    std::fprintf(csv, "%s,%s,\"%s\",%.3f,%.3f,%.3f,%.1f,%.2f,%.0f,%.0f,%.4f,%.3f,%.5f,%.4f,%s\n",
+    std::fprintf(csv, "%s,\"%s\",\"%s\",%.3f,%.3f,%.3f,%.1f,%.2f,%.0f,%.0f,%.4f,%.3f,%.5f,%.4f,%s\n",
       r.Scene.c_str(), r.Family.c_str(), r.Setting.c_str(), r.FrameMs, r.FrameQ1, r.FrameQ3,
       r.FirstFrameMs, r.PrepMs, r.MeshKiB, r.TextureKiB, r.RMSE, r.Truth ? 999.0 : r.PSNR, r.SSIM,
       r.InteriorRMSE, r.Truth ? "reference" : (r.OnFront ? "front" : "dominated"));

@@ -23,6 +23,7 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 
 namespace SurfaceDetailStudy
@@ -50,10 +51,11 @@ void Append(vtkTable* table, double x, double y)
 // Distinct colours (8-bit RGB) and markers per family, in the order families first appear.
 const unsigned char Palette[][3] = { { 90, 90, 90 }, { 31, 119, 180 }, { 23, 190, 207 },
   { 44, 160, 44 }, { 148, 103, 189 }, { 255, 127, 14 }, { 188, 189, 34 }, { 140, 86, 75 },
-  { 214, 39, 40 }, { 227, 119, 194 } };
+  { 214, 39, 40 }, { 227, 119, 194 }, { 110, 0, 0 }, { 150, 40, 140 } };
 const int Markers[] = { vtkPlotPoints::CROSS, vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE,
   vtkPlotPoints::DIAMOND, vtkPlotPoints::PLUS, vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE,
-  vtkPlotPoints::DIAMOND, vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE };
+  vtkPlotPoints::DIAMOND, vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+  vtkPlotPoints::DIAMOND };
 } // namespace
 
 void PlotScene(const std::string& title, const std::vector<const Row*>& rows,
@@ -125,9 +127,9 @@ void PlotScene(const std::string& title, const std::vector<const Row*>& rows,
   {
     auto* plot = vtkPlotPoints::SafeDownCast(chart->AddPlot(vtkChart::POINTS));
     plot->SetInputData(families[order[k]], 0, 1);
-    const unsigned char* c = Palette[k % 10];
+    const unsigned char* c = Palette[k % std::size(Palette)];
     plot->SetColor(c[0], c[1], c[2], 255);
-    plot->SetMarkerStyle(Markers[k % 10]);
+    plot->SetMarkerStyle(Markers[k % std::size(Markers)]);
     plot->SetMarkerSize(11);
     plot->SetWidth(2.0);
   }
