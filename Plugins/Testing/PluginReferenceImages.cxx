@@ -6,6 +6,7 @@
 // normal map and relief map ("normal", "relief"), and a baked normal and height map of a
 // displaced torus onto the plain one ("baked-normal", "baked-height").
 #include "vtkDisplacementMapFilter.h"
+#include "vtkHeightMapToConeMap.h"
 #include "vtkHeightMapToNormalMap.h"
 #include "vtkNormalMapBaker.h"
 #include "vtkOIIOImageReader.h"
@@ -52,6 +53,9 @@ int main(int argc, char* argv[])
   relief->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "OIIOImage");
   relief->SetBumpScale(0.05);
   relief->OutputReliefOn();
+  vtkNew<vtkHeightMapToConeMap> cones;
+  cones->SetInputConnection(reader->GetOutputPort());
+  cones->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "OIIOImage");
 
   vtkNew<vtkParametricDonut> donut;
   vtkNew<vtkParametricSurfaceSource> coarse;
@@ -76,7 +80,8 @@ int main(int argc, char* argv[])
   baker->BakeHeightOn();
 
   const bool written = Write(reader, 0, folder, "reader") && Write(normal, 0, folder, "normal") &&
-    Write(relief, 0, folder, "relief") && Write(baker, 0, folder, "baked-normal") &&
+    Write(relief, 0, folder, "relief") && Write(cones, 0, folder, "cones") &&
+    Write(baker, 0, folder, "baked-normal") &&
     Write(baker, 1, folder, "baked-height");
   return written ? EXIT_SUCCESS : EXIT_FAILURE;
 }

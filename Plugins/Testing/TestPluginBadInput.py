@@ -37,6 +37,7 @@ cases = [
      "2-D image"),
     ("MikkTSpace Tangents", lambda: MikkTSpaceTangents(Input=sphere), "texture coordinates"),
     ("Height Map To Normal Map", lambda: HeightMapToNormalMap(Input=volume), "3-D"),
+    ("Height Map To Cone Map", lambda: HeightMapToConeMap(Input=volume), "2-D"),
     ("Normal Map Baker", lambda: NormalMapBaker(Input=sphere, Source=sphere),
      "texture coordinates"),
 ]

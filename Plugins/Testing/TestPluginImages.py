@@ -25,6 +25,7 @@ normal.BumpScale = 0.05
 relief = HeightMapToNormalMap(Input=reader, SelectInputScalars=["POINTS", "OIIOImage"])
 relief.BumpScale = 0.05
 relief.OutputRelief = 1
+cones = HeightMapToConeMap(Input=reader, SelectInputScalars=["POINTS", "OIIOImage"])
 coarse = ParametricSurface(ParametricFunction="Donut")
 coarse.UResolution = 48
 coarse.VResolution = 24
@@ -40,7 +41,7 @@ baker.TextureSize = [128, 64]
 baker.BakeHeight = 1
 
 os.makedirs(output, exist_ok=True)
-outputs = [("reader", reader, 0), ("normal", normal, 0), ("relief", relief, 0),
+outputs = [("reader", reader, 0), ("normal", normal, 0), ("relief", relief, 0), ("cones", cones, 0),
            ("baked-normal", baker, 0), ("baked-height", baker, 1)]
 
 

@@ -38,6 +38,7 @@ check(DisplacementMap(Input=surface, Source=heights, SelectInputScalars=["POINTS
       "Displacement Map")
 check(MikkTSpaceTangents(Input=surface), "MikkTSpace Tangents")
 check(HeightMapToNormalMap(Input=heights), "Height Map To Normal Map")
+check(HeightMapToConeMap(Input=heights), "Height Map To Cone Map")
 coarse = ParametricSurface(UResolution=16, VResolution=8)
 baker = NormalMapBaker(Input=coarse, Source=ParametricSurface(), BakeHeight=1)
 check(baker, "Normal Map Baker", 0)

@@ -71,6 +71,7 @@ normal_map.BumpScale = 0.05
 relief_map = HeightMapToNormalMap(Input=heights, SelectInputScalars=["POINTS", "OIIOImage"])
 relief_map.BumpScale = 0.05
 relief_map.OutputRelief = 1
+cone_map = HeightMapToConeMap(Input=heights, SelectInputScalars=["POINTS", "OIIOImage"])
 
 view = CreateRenderView()
 view.ViewSize = [400, 300]
@@ -98,6 +99,8 @@ scenes = {
     "relief": dict(SurfaceDetailTechnique="Relief Mapping",
                    SurfaceDetailReliefMap=pipeline_texture(relief_map),
                    SurfaceDetailSelfShadowing=1),
+    # Relief mapping by cone stepping: the same relief, with the heights' cone map.
+    "relief-cones": dict(SurfaceDetailConeMap=pipeline_texture(cone_map)),
 }
 os.makedirs(output, exist_ok=True)
 results = {}

@@ -43,6 +43,7 @@ vtkSurfaceDetailForward(Technique, int);
 vtkSurfaceDetailForward(NormalMap, vtkTexture*);
 vtkSurfaceDetailForward(HeightMap, vtkTexture*);
 vtkSurfaceDetailForward(ReliefMap, vtkTexture*);
+vtkSurfaceDetailForward(ConeMap, vtkTexture*);
 vtkSurfaceDetailForward(HeightComponent, int);
 vtkSurfaceDetailForward(NormalScale, double);
 vtkSurfaceDetailForward(GreenUp, bool);

@@ -40,6 +40,7 @@ public:
   void SetNormalMap(vtkTexture* map);
   void SetHeightMap(vtkTexture* map);
   void SetReliefMap(vtkTexture* map);
+  void SetConeMap(vtkTexture* map);
   void SetHeightComponent(int component);
   void SetNormalScale(double scale);
   void SetGreenUp(bool greenUp);
