@@ -128,6 +128,23 @@ check(all(abs(rgb.GetComponent(i, 0) - 127.5) <= 0.5 and abs(rgb.GetComponent(i,
           and rgb.GetComponent(i, 2) == 255 for i in range(rgb.GetNumberOfTuples())),
       "a flat height map did not give the flat normal")
 
+# A flat height map at the top: every apex at depth 0, and the widest cone (MaxConeRatio) where
+# nothing rises above it; the mapper takes the map as its cone map.
+to_cones = surfacedetail.vtkHeightMapToConeMap()
+to_cones.SetInputData(heights)
+to_cones.SetMaxConeRatio(0.5)
+to_cones.Update()
+cones = to_cones.GetOutput().GetPointData().GetArray("ConeMap")
+check(cones is not None and cones.GetNumberOfComponents() == 2, "no 2-component ConeMap array")
+check(all(cones.GetComponent(i, 0) == 0.0 and cones.GetComponent(i, 1) == 0.5
+          for i in range(cones.GetNumberOfTuples())),
+      "a flat height map at the top did not give apex 0 and the widest cone")
+cone_texture = vtkTexture()
+cone_texture.SetInputConnection(to_cones.GetOutputPort())
+relief_mapper = surfacedetail.vtkSurfaceDetailMapper()
+relief_mapper.SetConeMap(cone_texture)
+check(relief_mapper.GetConeMap() is cone_texture, "SetConeMap did not keep the texture")
+
 # The Bezier profile's output arguments are filled in Python lists.
 profile = surfacedetail.vtkBezierProfile()
 profile.RemoveAllControlPoints()
