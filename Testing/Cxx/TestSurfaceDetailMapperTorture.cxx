@@ -1,13 +1,13 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SurfaceDetail developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Rendering torture: normal, bump, parallax and relief mapping (with self-shadowing and
-// depth correction, from a relief map and from the height map alone) seen at grazing angles (85
-// to 89.9 degrees from the normal) and with the camera very close to the surface. Each picture is
-// compared with the plain mapper's picture of the same scene: no pixel may leave the plain
-// silhouette (the detail moves shading and texture lookups, never geometry), and no pixel
-// inside it may be black where the plain one is not (a NaN or a zero-length normal reaching the
-// framebuffer shows as black; the material's ambient term keeps every lit or unlit pixel
-// above black otherwise).
+// depth correction, from a relief map, from the height map alone and by cone stepping) seen at
+// grazing angles (85 to 89.9 degrees from the normal) and with the camera very close to the
+// surface. Each picture is compared with the plain mapper's picture of the same scene: no pixel
+// may leave the plain silhouette (the detail moves shading and texture lookups, never
+// geometry), and no pixel inside it may be black where the plain one is not (a NaN or a
+// zero-length normal reaching the framebuffer shows as black; the material's ambient term keeps
+// every lit or unlit pixel above black otherwise).
 
 #include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailMapper.h"
@@ -15,6 +15,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
+#include <vtkHeightMapToConeMap.h>
 #include <vtkHeightMapToNormalMap.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -105,6 +106,14 @@ std::vector<unsigned char> Render(const std::string& technique, double angle, do
       detail->SetTechniqueToReliefMapping();
       detail->SetSelfShadowing(true);
       detail->SetDepthCorrection(true);
+      if (technique == "relief-cones")
+      {
+        // Cone stepping with the heights' cone map (and the relief's own normal).
+        vtkNew<vtkHeightMapToConeMap> cones;
+        cones->SetInputData(heights);
+        cones->Update();
+        detail->SetConeMap(SurfaceDetailTruthScenes::RepeatedTexture(cones->GetOutput()));
+      }
       if (technique == "relief-map")
       {
         vtkNew<vtkHeightMapToNormalMap> relief;
@@ -170,7 +179,8 @@ void ExpectSoundAgainstPlain(double angle, double distance)
   }
   ASSERT_GT(inside, 0) << "the plain wall is not on screen at " << angle << " degrees, distance "
                        << distance;
-  for (const char* technique : { "normal", "bump", "parallax", "relief", "relief-map" })
+  for (const char* technique :
+    { "normal", "bump", "parallax", "relief", "relief-map", "relief-cones" })
   {
     const std::vector<unsigned char> detail = Render(technique, angle, distance);
     int outside = 0, speckles = 0;
