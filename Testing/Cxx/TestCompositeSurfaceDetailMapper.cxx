@@ -7,6 +7,7 @@
 
 #include "SurfaceDetailMapperAnalyticScene.h"
 #include "vtkCompositeSurfaceDetailMapper.h"
+#include "vtkHeightMapToConeMap.h"
 
 #include <vtkCompositePolyDataMapper2.h>
 #include <vtkMultiBlockDataSet.h>
@@ -155,6 +156,23 @@ TEST(vtkCompositeSurfaceDetailMapper, EveryTechniqueAsTheSingleMapper)
       {
         m->SetTechniqueToReliefMapping();
         m->SetHeightMap(MakeHeightMap());
+        m->SetDepthScale(0.1);
+        m->SelfShadowingOn();
+        m->DepthCorrectionOn();
+      } },
+    { "relief-cones-shadow-depth",
+      [](vtkSurfaceDetailMapper* m)
+      {
+        m->SetTechniqueToReliefMapping();
+        auto heights = MakeHeightMap();
+        m->SetHeightMap(heights);
+        vtkNew<vtkHeightMapToConeMap> cones; // Repeat, as the height texture
+        cones->SetInputData(heights->GetInput());
+        cones->Update();
+        vtkNew<vtkTexture> coneTexture;
+        coneTexture->SetInputData(cones->GetOutput());
+        coneTexture->RepeatOn();
+        m->SetConeMap(coneTexture);
         m->SetDepthScale(0.1);
         m->SelfShadowingOn();
         m->DepthCorrectionOn();
