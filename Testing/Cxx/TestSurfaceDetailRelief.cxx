@@ -946,3 +946,46 @@ TEST(SurfaceDetailRelief, ConeStepsDoNotPassThroughThinWalls)
   Print("thin walls, cone stepping", stepped);
   EXPECT_LT(stepped.Error, searched.Error);
 }
+
+// Straight down a parallel camera no view ray runs sideways, and zero-width cones give no cone
+// to step by: the march must still draw what the linear search draws.
+TEST(SurfaceDetailRelief, ConeSteppingHeadOnUnderAParallelCamera)
+{
+  ViewAngles headOn;
+  headOn.Azimuth = 0;
+  headOn.Elevation = 0;
+  View view;
+  SurfaceDetailTruthScenes::FitView(Wall(), headOn, view);
+  vtkSmartPointer<vtkImageData> heights = BrickTextures::Heights(TruthBricks());
+  vtkNew<vtkHeightMapToConeMap> cones;
+  cones->SetInputData(heights);
+  cones->Update();
+  cones->GetOutput()->GetPointData()->GetScalars()->Fill(0.0);
+  auto relief = [&](bool stepped)
+  {
+    return WallActor(
+      [&](vtkSurfaceDetailMapper* mapper)
+      {
+        mapper->SetTechniqueToReliefMapping();
+        mapper->SetHeightMap(RepeatedTexture(heights));
+        mapper->SetConeMap(stepped ? RepeatedTexture(cones->GetOutput()) : nullptr);
+        mapper->DepthCorrectionOn();
+      });
+  };
+  Picture linear, stepped;
+  for (Picture* picture : { &linear, &stepped })
+  {
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddActor(relief(picture == &stepped));
+    renderer->GetActiveCamera()->DeepCopy(view.Camera);
+    renderer->GetActiveCamera()->ParallelProjectionOn();
+    renderer->GetActiveCamera()->SetParallelScale(2.0);
+    vtkNew<vtkRenderWindow> window;
+    window->SetMultiSamples(0);
+    window->SetSize(Size, Size);
+    window->AddRenderer(renderer);
+    window->Render();
+    picture->RGB = GrabRGB(window);
+  }
+  EXPECT_LE(MaxDifference(linear, stepped), 2);
+}

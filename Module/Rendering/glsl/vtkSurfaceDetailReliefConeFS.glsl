@@ -62,7 +62,7 @@ float sdReliefSearch(vec2 tc, vec2 delta, float reach, out vec2 aboveTC, out flo
     float f = fract(alongS ? p.x * texels.x : p.y * texels.y);
     float toMiddle = (0.5 - f) * (alongS ? sign(dir.x) : sign(dir.y)) * texelDepth;
     toMiddle += toMiddle > nudge ? 0.0 : texelDepth;
-    float coneStep = cone.z * max(cone.y - d, 0.0) / (run + cone.z);
+    float coneStep = cone.z * max(cone.y - d, 0.0) / max(run + cone.z, 1e-30);
     // Never shorter than the rest of the ray over the steps left, so that a long ray reaches the
     // bottom spaced as the linear search would space it.
     float share = (1.0 - d) / float(sdLinearSearchSteps - i);
