@@ -596,6 +596,22 @@ vtkSmartPointer<vtkActor> WallActor(const std::function<void(vtkSurfaceDetailMap
   return actor;
 }
 
+// @a actor alone, seen from @a view's camera made parallel, the wall's half height in view.
+void DrawParallel(const View& view, vtkActor* actor, Picture& picture)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->GetActiveCamera()->DeepCopy(view.Camera);
+  renderer->GetActiveCamera()->ParallelProjectionOn();
+  renderer->GetActiveCamera()->SetParallelScale(2.0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(Size, Size);
+  window->AddRenderer(renderer);
+  window->Render();
+  picture.RGB = GrabRGB(window);
+}
+
 int MaxDifference(const Picture& a, const Picture& b)
 {
   int most = 0;
@@ -661,20 +677,8 @@ TEST(SurfaceDetailRelief, HeadlightCastsNoVisibleShadow)
       });
   };
   Picture lit, shadowed;
-  for (Picture* picture : { &lit, &shadowed })
-  {
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddActor(relief(picture == &shadowed));
-    renderer->GetActiveCamera()->DeepCopy(view.Camera);
-    renderer->GetActiveCamera()->ParallelProjectionOn();
-    renderer->GetActiveCamera()->SetParallelScale(2.0);
-    vtkNew<vtkRenderWindow> window;
-    window->SetMultiSamples(0);
-    window->SetSize(Size, Size);
-    window->AddRenderer(renderer);
-    window->Render();
-    picture->RGB = GrabRGB(window);
-  }
+  DrawParallel(view, relief(false), lit);
+  DrawParallel(view, relief(true), shadowed);
   EXPECT_LE(MaxDifference(lit, shadowed), 2);
 }
 
@@ -973,19 +977,7 @@ TEST(SurfaceDetailRelief, ConeSteppingHeadOnUnderAParallelCamera)
       });
   };
   Picture linear, stepped;
-  for (Picture* picture : { &linear, &stepped })
-  {
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddActor(relief(picture == &stepped));
-    renderer->GetActiveCamera()->DeepCopy(view.Camera);
-    renderer->GetActiveCamera()->ParallelProjectionOn();
-    renderer->GetActiveCamera()->SetParallelScale(2.0);
-    vtkNew<vtkRenderWindow> window;
-    window->SetMultiSamples(0);
-    window->SetSize(Size, Size);
-    window->AddRenderer(renderer);
-    window->Render();
-    picture->RGB = GrabRGB(window);
-  }
+  DrawParallel(view, relief(false), linear);
+  DrawParallel(view, relief(true), stepped);
   EXPECT_LE(MaxDifference(linear, stepped), 2);
 }
