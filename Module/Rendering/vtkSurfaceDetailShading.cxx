@@ -445,31 +445,51 @@ void vtkSurfaceDetailShading::BindMaps(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+std::vector<double> vtkSurfaceDetailShading::Heights(vtkIdType& nonFinite) const
+{
+  // Resolve has refused the types and components this does not accept.
+  vtkDataArray* scalars = this->Detail->GetHeightMap()->GetInput()->GetPointData()->GetScalars();
+  double scale = 1.0;
+  vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
+  const int comp = this->Detail->GetHeightComponent();
+  // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
+  std::vector<double> values(static_cast<size_t>(scalars->GetNumberOfTuples()));
+  nonFinite = 0;
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), comp);
+    nonFinite += std::isfinite(v) ? 0 : 1;
+    values[k] = std::isfinite(v) ? v : 0.0;
+  }
+  return values;
+}
+
+//------------------------------------------------------------------------------
 std::vector<float> vtkSurfaceDetailShading::ReliefDepths() const
 {
   // The depth the relief reads: the relief map's alpha, or one minus the height.
-  vtkTexture* texture =
-    this->ActiveUsesReliefMap ? this->Detail->GetReliefMap() : this->Detail->GetHeightMap();
-  vtkDataArray* scalars = texture->GetInput()->GetPointData()->GetScalars();
-  double scale = 1.0;
-  int component = 3;
+  std::vector<double> depths;
   if (this->ActiveUsesReliefMap)
   {
-    scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+    vtkDataArray* scalars = this->Detail->GetReliefMap()->GetInput()->GetPointData()->GetScalars();
+    const double scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+    depths.resize(static_cast<size_t>(scalars->GetNumberOfTuples()));
+    for (size_t k = 0; k < depths.size(); ++k)
+    {
+      depths[k] = scale * scalars->GetComponent(static_cast<vtkIdType>(k), 3);
+    }
   }
   else
   {
-    vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
-    component = this->Detail->GetHeightComponent();
+    vtkIdType nonFinite = 0; // reported by the height map's own upload
+    depths = this->Heights(nonFinite);
+    std::transform(depths.begin(), depths.end(), depths.begin(), [](double h) { return 1.0 - h; });
   }
-  std::vector<float> depths(static_cast<size_t>(scalars->GetNumberOfTuples()));
-  for (size_t k = 0; k < depths.size(); ++k)
-  {
-    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), component);
-    const double depth = this->ActiveUsesReliefMap ? v : 1.0 - v;
-    depths[k] = std::isfinite(depth) ? static_cast<float>(std::min(std::max(depth, 0.0), 1.0)) : 1.f;
-  }
-  return depths;
+  std::vector<float> clamped(depths.size());
+  std::transform(depths.begin(), depths.end(), clamped.begin(), [](double d) {
+    return std::isfinite(d) ? static_cast<float>(std::min(std::max(d, 0.0), 1.0)) : 1.f;
+  });
+  return clamped;
 }
 
 //------------------------------------------------------------------------------
@@ -577,19 +597,9 @@ void vtkSurfaceDetailShading::UploadHeightMap(vtkRenderer* ren)
   int dims[3];
   image->GetDimensions(dims);
   const int w = dims[0], h = dims[1];
-  // ResolveTechnique has refused the types this does not accept.
-  double scale = 1.0;
-  vtkSurfaceDetail::HeightMapScale(scalars->GetDataType(), scale);
-  const int comp = this->Detail->GetHeightComponent(); // ResolveTechnique has checked it exists
-  // Non-finite heights would turn whole bumps into NaN normals: they are read as 0.
-  std::vector<double> values(static_cast<size_t>(w) * h);
+  const int comp = this->Detail->GetHeightComponent();
   vtkIdType nonFinite = 0;
-  for (size_t k = 0; k < values.size(); ++k)
-  {
-    const double v = scale * scalars->GetComponent(static_cast<vtkIdType>(k), comp);
-    nonFinite += std::isfinite(v) ? 0 : 1;
-    values[k] = std::isfinite(v) ? v : 0.0;
-  }
+  const std::vector<double> values = this->Heights(nonFinite);
   if (nonFinite > 0)
   {
     vtkWarningWithObjectMacro(this->Reporter, << "The height map has " << nonFinite

@@ -97,6 +97,9 @@ private:
   void UploadHeightMap(vtkRenderer* ren);
   // Uploads the cone map with the relief's depth beside it, as 32-bit floats.
   void UploadConeMap(vtkRenderer* ren);
+  // The height map's channel per texel, scaled to [0,1] as its type is read; non-finite
+  // heights (counted in @a nonFinite) are read as 0.
+  std::vector<double> Heights(vtkIdType& nonFinite) const;
   // The relief's depth per texel, as the shader reads it.
   std::vector<float> ReliefDepths() const;
   // Passes each of VTK's per-light diffuse terms through the relief's shadow search.

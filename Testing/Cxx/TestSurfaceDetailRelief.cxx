@@ -854,6 +854,15 @@ void Print(const std::string& what, const SearchFigures& figures)
             << figures.Cost.Max << " (" << figures.Cost.Fragments << " fragments)\n";
 }
 
+// The reference where no displaced mesh is: the linear and binary search at 256 + 16 steps.
+Options DenseSearch(Options options)
+{
+  options.AdaptiveSteps = false;
+  options.LinearSteps = 256;
+  options.BinarySteps = 16;
+  return options;
+}
+
 // What cone stepping must show on a truth scene against the linear and binary search at
 // default settings: an error within 1% of its error and at most this share of its reads.
 constexpr double ConeReadShare = 0.7;
@@ -913,13 +922,12 @@ TEST(SurfaceDetailRelief, ConeSteppingMutationsDoNotPay)
 // against the displaced mesh.
 TEST(SurfaceDetailRelief, ConeSteppingOnAFineMap)
 {
-  Scene scene = ReliefTruthScenes()[1];
-  Options linear, cones, dense;
-  linear.MapSize = cones.MapSize = dense.MapSize = 512;
+  const Scene scene = ReliefTruthScenes()[1];
+  Options linear;
+  linear.MapSize = 512;
+  Options cones = linear;
   cones.ConeStepping = true;
-  dense.AdaptiveSteps = false;
-  dense.LinearSteps = 256;
-  dense.BinarySteps = 16;
+  const Options dense = DenseSearch(linear);
   const SearchFigures searched = Search(scene, linear, &dense);
   const SearchFigures stepped = Search(scene, cones, &dense);
   Print("512 x 512 bricks, linear + binary search", searched);
@@ -946,12 +954,11 @@ TEST(SurfaceDetailRelief, ConeStepsDoNotPassThroughThinWalls)
     }
   }
   const Scene scene = ReliefTruthScenes()[1];
-  Options linear, cones, dense;
-  linear.Heights = cones.Heights = dense.Heights = walls;
+  Options linear;
+  linear.Heights = walls;
+  Options cones = linear;
   cones.ConeStepping = true;
-  dense.AdaptiveSteps = false;
-  dense.LinearSteps = 256;
-  dense.BinarySteps = 16;
+  const Options dense = DenseSearch(linear);
   const SearchFigures searched = Search(scene, linear, &dense);
   const SearchFigures stepped = Search(scene, cones, &dense);
   Print("thin walls, linear + binary search", searched);
