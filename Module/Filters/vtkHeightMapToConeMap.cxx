@@ -29,6 +29,13 @@ float RoundDown(double v)
   return f > v ? std::nextafter(f, -1.0f) : f;
 }
 
+// A float no less than @a v.
+float RoundUp(double v)
+{
+  const float f = static_cast<float>(v);
+  return f < v ? std::nextafter(f, 2.0f) : f;
+}
+
 // The relief's depth 1 - h at the texel centres, read past the edges as the wrap mode says.
 struct DepthField
 {
@@ -40,8 +47,11 @@ struct DepthField
   {
     if (this->Repeat)
     {
-      i = ((i % this->W) + this->W) % this->W;
-      j = ((j % this->H) + this->H) % this->H;
+      // Most reads are within a map of it: a subtraction is cheaper than a division.
+      i = i < 0 ? i + this->W : (i >= this->W ? i - this->W : i);
+      j = j < 0 ? j + this->H : (j >= this->H ? j - this->H : j);
+      i = i >= 0 && i < this->W ? i : ((i % this->W) + this->W) % this->W;
+      j = j >= 0 && j < this->H ? j : ((j % this->H) + this->H) % this->H;
     }
     else
     {
@@ -67,6 +77,34 @@ struct DepthField
       }
     }
     return apex;
+  }
+
+  // The depth of the highest point of the bilinear surface over the rectangle @a within =
+  // {s0, s1, t0, t1} of cell (k, l) (fractions of the cell): it lies at a corner.
+  double HighestInCell(int k, int l, const double within[4]) const
+  {
+    const double d00 = this->At(k, l), d10 = this->At(k + 1, l), d01 = this->At(k, l + 1),
+                 d11 = this->At(k + 1, l + 1);
+    double top = 1e300;
+    for (double s : { within[0], within[1] })
+    {
+      for (double t : { within[2], within[3] })
+      {
+        top = std::min(top, (1 - s) * ((1 - t) * d00 + t * d01) + s * ((1 - t) * d10 + t * d11));
+      }
+    }
+    return top;
+  }
+
+  // The range of the depth's derivatives, per texel index, along s and t over cell (k, l)
+  // (between texel centres k and k + 1, l and l + 1): on a bilinear cell each is linear in the
+  // other coordinate, so it lies between its values on the two edges.
+  std::array<double, 4> Derivatives(int k, int l) const
+  {
+    const double d00 = this->At(k, l), d10 = this->At(k + 1, l), d01 = this->At(k, l + 1),
+                 d11 = this->At(k + 1, l + 1);
+    return { std::min(d10 - d00, d11 - d01), std::max(d10 - d00, d11 - d01),
+      std::min(d01 - d00, d11 - d10), std::max(d01 - d00, d11 - d10) };
   }
 };
 
@@ -125,6 +163,43 @@ struct Cells
       }
       this->Levels.push_back(std::move(up));
     }
+  }
+
+  // For relaxed cones: each block's range of the depth's derivatives (DepthField::Derivatives)
+  // over its cells, rounded outward, for the levels above the cells (those are read from the
+  // field).
+  std::vector<std::vector<std::array<float, 4>>> Derivatives;
+
+  void AddDerivatives(const DepthField& f)
+  {
+    this->Derivatives.resize(this->Levels.size());
+    for (size_t level = 1; level < this->Levels.size(); ++level)
+    {
+      const Level& at = this->Levels[level];
+      auto& ranges = this->Derivatives[level];
+      ranges.assign(static_cast<size_t>(at.NX) * at.NY, { 1e30f, -1e30f, 1e30f, -1e30f });
+      const Level& below = this->Levels[level - 1];
+      for (int l = 0; l < below.NY; ++l)
+      {
+        for (int k = 0; k < below.NX; ++k)
+        {
+          const std::array<float, 4> child = this->DerivativesOf(f, level - 1, k, l);
+          std::array<float, 4>& range = ranges[static_cast<size_t>(l / 2) * at.NX + k / 2];
+          range = { std::min(range[0], child[0]), std::max(range[1], child[1]),
+            std::min(range[2], child[2]), std::max(range[3], child[3]) };
+        }
+      }
+    }
+  }
+
+  std::array<float, 4> DerivativesOf(const DepthField& f, int level, int k, int l) const
+  {
+    if (level > 0)
+    {
+      return this->Derivatives[level][static_cast<size_t>(l) * this->Levels[level].NX + k];
+    }
+    const std::array<double, 4> d = f.Derivatives(k, l);
+    return { RoundDown(d[0]), RoundUp(d[1]), RoundDown(d[2]), RoundUp(d[3]) };
   }
 };
 
@@ -206,7 +281,200 @@ public:
     return best;
   }
 
+  // A region in the repeat of the map (SX, SY) maps away: a block of the pyramid (Level > 0),
+  // a cell (Level 0) or a part of one (Level < 0, 2^Level texels wide), and the least ratio
+  // any of its points can give.
+  struct RelaxedNode
+  {
+    double Bound;
+    int Level, K, L, SX, SY;
+    bool operator<(const RelaxedNode& other) const { return this->Bound > other.Bound; }
+  };
+
+  // Parts of cells are bounded down to this level (a sixteenth of a texel): the derivatives
+  // and the highest point of a part are exact, so smaller parts give nearer bounds where a
+  // crest and the slope falling from it share a cell.
+  static constexpr int FinestPart = -4;
+
+  // The relaxed ratio of texel (i, j), no narrower than its conservative ratio @a conservative:
+  // the widest cone in which no ray goes from under the surface back above it. Such a ray
+  // leaves the surface where the surface falls away along it, past the highest point of its way
+  // so far, which was above the ray: just past that crest lies a point q, almost as high, where
+  // the depth rises along the way from the ray's start x. So a cone whose ratio is at most
+  // |q - x| / (a - depth at q) for every such q is never left from below, and that bound is
+  // the widest such cone: the conservative cone's bound, but only over the points that face
+  // away from the footprint. It is found by the same best-first branch and bound, with the
+  // blocks, cells and parts of cells where no point can face away from any point of the
+  // footprint (by interval arithmetic on the depth's derivatives) left out.
+  double RelaxedRatio(
+    int i, int j, double apex, double conservative, std::vector<RelaxedNode>& heap) const
+  {
+    double best = this->MaxRatio;
+    const int w = this->Field.W, h = this->Field.H;
+    if (this->Field.Repeat)
+    {
+      // Repeats two or more maps away are at least a map less half a texel from the footprint.
+      const double rise = apex - this->Grid.Levels.back().Top[0];
+      best = rise > 0.0 ? std::min(best, std::min((w - 0.5) / w, (h - 0.5) / h) / rise) : best;
+    }
+    const double floor = this->Grid.SteepestSlope > 0.0 ? 1.0 / this->Grid.SteepestSlope : 0.0;
+    const double footprint[4] = { i - 0.5, i + 0.5, j - 0.5, j + 0.5 };
+    heap.clear();
+    auto push = [&](int level, int k, int l, int sx, int sy)
+    {
+      double box[4];
+      std::array<double, 4> slopes;
+      const double top = this->Region(level, k, l, sx, sy, box, slopes);
+      if (!(top < apex))
+      {
+        return; // nothing here is above the apex
+      }
+      const double u[2] = { box[0] - footprint[1], box[1] - footprint[0] };
+      const double v[2] = { box[2] - footprint[3], box[3] - footprint[2] };
+      if (!(ProductMax(slopes[0], slopes[1], u) + ProductMax(slopes[2], slopes[3], v) > 0.0))
+      {
+        return; // no point here faces away from any point of the footprint
+      }
+      const double gap = std::hypot(Gap(footprint[0], footprint[1], box[0], box[1]) / w,
+        Gap(footprint[2], footprint[3], box[2], box[3]) / h);
+      const double bound = std::max(gap / (apex - top), floor);
+      if (bound < best)
+      {
+        heap.push_back({ bound, level, k, l, sx, sy });
+        std::push_heap(heap.begin(), heap.end());
+      }
+    };
+    const int root = static_cast<int>(this->Grid.Levels.size()) - 1;
+    const int repeats = this->Field.Repeat ? 1 : 0;
+    for (int sy = -repeats; sy <= repeats; ++sy)
+    {
+      for (int sx = -repeats; sx <= repeats; ++sx)
+      {
+        push(root, 0, 0, sx, sy);
+      }
+    }
+    while (!heap.empty() && best > conservative)
+    {
+      std::pop_heap(heap.begin(), heap.end());
+      const RelaxedNode node = heap.back();
+      heap.pop_back();
+      if (!(node.Bound < best))
+      {
+        break; // every region left bounds no lower
+      }
+      if (node.Level > 0 || (node.Level > FinestPart && !this->Unbounded(node)))
+      {
+        // The blocks below, or the quarters of a cell or of a part.
+        const int nx = node.Level > 0 ? this->Grid.Levels[node.Level - 1].NX : 1 << 30;
+        const int ny = node.Level > 0 ? this->Grid.Levels[node.Level - 1].NY : 1 << 30;
+        for (int l = 2 * node.L; l < std::min(2 * node.L + 2, ny); ++l)
+        {
+          for (int k = 2 * node.K; k < std::min(2 * node.K + 2, nx); ++k)
+          {
+            push(node.Level - 1, k, l, node.SX, node.SY);
+          }
+        }
+        continue;
+      }
+      best = std::min(best, std::max(node.Bound, 1.0 / this->SlopeToRepeat(i, j, node)));
+    }
+    return std::max(best, conservative);
+  }
+
 private:
+  // max(x y) over x in [lo, hi] and y in @a range; a zero derivative contributes nothing
+  // however far the range runs.
+  static double ProductMax(double lo, double hi, const double range[2])
+  {
+    return std::max({ lo * range[0], lo * range[1], hi * range[0], hi * range[1] });
+  }
+
+  // A node's extent in texel-index coordinates (texel centres at integers), box = {s0, s1, t0,
+  // t1}, the range of the depth's derivatives over it, {s lo, s hi, t lo, t hi}, and the depth
+  // of its highest point (returned). Without repeat, a block at the map's edge reaches on past
+  // it, where the edge texels continue: the depth does not change across the edge there.
+  double Region(int level, int k, int l, int sx, int sy, double box[4],
+    std::array<double, 4>& slopes) const
+  {
+    const int block[2] = { k, l }, shift[2] = { sx, sy };
+    const int count[2] = { this->Grid.NX, this->Grid.NY };
+    if (level < 0)
+    {
+      // A part of cell (ck, cl): each derivative is linear along the other coordinate.
+      const double part = std::ldexp(1.0, level);
+      const int ck = k >> -level, cl = l >> -level;
+      const double f0 = k * part - ck, g0 = l * part - cl;
+      const double d00 = this->Field.At(ck, cl), d10 = this->Field.At(ck + 1, cl),
+                   d01 = this->Field.At(ck, cl + 1), d11 = this->Field.At(ck + 1, cl + 1);
+      const double twist = d11 - d01 - d10 + d00;
+      const double ds0 = (d10 - d00) + g0 * twist, ds1 = ds0 + part * twist;
+      const double dt0 = (d01 - d00) + f0 * twist, dt1 = dt0 + part * twist;
+      slopes = { std::min(ds0, ds1), std::max(ds0, ds1), std::min(dt0, dt1), std::max(dt0, dt1) };
+      for (int a = 0; a < 2; ++a)
+      {
+        box[2 * a] = block[a] * part + shift[a] * count[a];
+        box[2 * a + 1] = box[2 * a] + part;
+      }
+      const double within[4] = { f0, f0 + part, g0, g0 + part };
+      return this->Field.HighestInCell(ck, cl, within);
+    }
+    const std::array<float, 4> d = this->Grid.DerivativesOf(this->Field, level, k, l);
+    slopes = { d[0], d[1], d[2], d[3] };
+    const bool line[2] = { this->Grid.LineX, this->Grid.LineY };
+    for (int a = 0; a < 2; ++a)
+    {
+      const int c0 = block[a] << level, c1 = std::min((block[a] + 1) << level, count[a]) - 1;
+      box[2 * a] = c0 + shift[a] * count[a];
+      box[2 * a + 1] = line[a] ? box[2 * a] : c1 + shift[a] * count[a] + 1.0;
+      if (!this->Field.Repeat && (c0 == 0 || c1 == count[a] - 1))
+      {
+        box[2 * a] = c0 == 0 ? -1e30 : box[2 * a];
+        box[2 * a + 1] = c1 == count[a] - 1 ? 1e30 : box[2 * a + 1];
+        slopes[2 * a] = std::min(slopes[2 * a], 0.0);
+        slopes[2 * a + 1] = std::max(slopes[2 * a + 1], 0.0);
+      }
+    }
+    const Cells::Level& at = this->Grid.Levels[level];
+    return at.Top[static_cast<size_t>(l) * at.NX + k];
+  }
+
+  // Whether the node's cell runs on past the map's edge (without repeat) or is a line: it is
+  // not divided.
+  bool Unbounded(const RelaxedNode& node) const
+  {
+    const int k = node.Level < 0 ? node.K >> -node.Level : node.K;
+    const int l = node.Level < 0 ? node.L >> -node.Level : node.L;
+    return !this->Field.Repeat &&
+      (this->Grid.LineX || this->Grid.LineY || k == 0 || l == 0 || k == this->Grid.NX - 1 ||
+        l == this->Grid.NY - 1);
+  }
+
+  // The steepest slope on every way from texel (i, j)'s footprint to the cell holding the node:
+  // the cells around the way where the cell is the nearest repeat or one near it
+  // (SlopeOnTheWay), else all.
+  double SlopeToRepeat(int i, int j, const RelaxedNode& node) const
+  {
+    const int cell[2] = { node.Level < 0 ? node.K >> -node.Level : node.K,
+      node.Level < 0 ? node.L >> -node.Level : node.L };
+    const int texel[2] = { i, j }, shift[2] = { node.SX, node.SY };
+    const int size[2] = { this->Field.W, this->Field.H };
+    for (int a = 0; a < 2 && this->Field.Repeat; ++a)
+    {
+      const double f0 = texel[a] - 0.5, f1 = texel[a] + 0.5;
+      double nearest = 1e300;
+      for (int s : { -1, 0, 1 })
+      {
+        nearest = std::min(nearest, Gap(f0, f1, cell[a] + s * size[a], cell[a] + s * size[a] + 1));
+      }
+      const double c = cell[a] + shift[a] * size[a];
+      if (Gap(f0, f1, c, c + 1) > nearest + 3.0)
+      {
+        return this->Grid.SteepestSlope;
+      }
+    }
+    return this->SlopeOnTheWay(i, j, cell[0], cell[1]);
+  }
+
   // The distance, in texture coordinates, from texel (i, j)'s footprint to the cells of block
   // (k, l) of @a level, the nearest repeat of them where the pattern repeats.
   double Distance(int i, int j, int level, int k, int l) const
@@ -381,7 +649,12 @@ int vtkHeightMapToConeMap::RequestData(
     }
     field.Depth[t] = 1.0 - std::min(std::max(height, 0.0), 1.0);
   }
-  const Cells cells(field);
+  Cells cells(field);
+  const bool relaxed = this->ConeType == Relaxed;
+  if (relaxed)
+  {
+    cells.AddDerivatives(field);
+  }
   const ConeSearch search(field, cells, this->MaxConeRatio);
 
   vtkNew<vtkFloatArray> cones;
@@ -393,14 +666,17 @@ int vtkHeightMapToConeMap::RequestData(
     [&](int begin, int end)
     {
       std::vector<ConeSearch::Node> heap;
+      std::vector<ConeSearch::RelaxedNode> relaxedHeap;
       for (int j = begin; j < end; ++j)
       {
         for (int i = 0; i < w; ++i)
         {
           const double apex = field.ApexDepth(i, j);
+          double ratio = search.Ratio(i, j, apex, heap);
+          ratio = relaxed ? search.RelaxedRatio(i, j, apex, ratio, relaxedHeap) : ratio;
           float* texel = out + 2 * (static_cast<size_t>(j) * w + i);
           texel[0] = RoundDown(apex);
-          texel[1] = RoundDown(search.Ratio(i, j, apex, heap));
+          texel[1] = RoundDown(ratio);
         }
       }
     });
@@ -412,10 +688,17 @@ int vtkHeightMapToConeMap::RequestData(
 }
 
 //------------------------------------------------------------------------------
+const char* vtkHeightMapToConeMap::GetConeTypeAsString()
+{
+  return this->ConeType == Relaxed ? "Relaxed" : "Conservative";
+}
+
+//------------------------------------------------------------------------------
 void vtkHeightMapToConeMap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "HeightComponent: " << this->HeightComponent << "\n";
   os << indent << "Wrap: " << vtkSurfaceDetail::WrapModeName(this->Wrap) << "\n";
+  os << indent << "ConeType: " << this->GetConeTypeAsString() << "\n";
   os << indent << "MaxConeRatio: " << this->MaxConeRatio << "\n";
 }

@@ -50,10 +50,10 @@
  *   LinearSearchSteps), and where the whole depth is less than about a pixel on screen
  *   the relief fades to plain normal mapping and no search runs. Silhouettes stay those
  *   of the mesh. With a cone map (SetConeMap, from vtkHeightMapToConeMap) the search is by
- *   cone stepping instead: steps as long as each texel's empty cone allows, a depth read
- *   only where the ray is as deep as the texel's highest point, then secant steps; it finds
- *   the hits the linear search finds (and ridges of a texel that it steps over) in fewer
- *   reads, and the more texels a ray crosses, the fewer.
+ *   cone stepping instead: steps as long as each texel's cone allows (relaxed cones, which
+ *   no ray leaves from under the surface, or conservative, empty ones), one read each, then
+ *   secant steps; it finds the hits the linear search finds (and ridges of a texel that it
+ *   steps over) in fewer reads, and the more texels a ray crosses, the fewer.
  *
  * Bad input (a technique that needs a texture, texture coordinates, normals or tangents the
  * input lacks, a normal map with fewer than 3 components or of a type other than unsigned
@@ -291,8 +291,11 @@ public:
   /**
    * Cone map for ReliefMapping: when set, the view ray's linear search becomes cone stepping.
    * Its input is vtkHeightMapToConeMap's output for the heights the relief's depth comes
-   * from (same size; its Wrap as the texture's: Repeat or ClampToEdge). It is read texel by
-   * texel at full float precision, whatever the texture's interpolation. Default none.
+   * from (same size; its Wrap as the texture's: Repeat or ClampToEdge), relaxed or
+   * conservative. The mapper packs it with the relief's depth into one 8-bit texture read
+   * with linear filtering, whatever the texture's interpolation: each texel's apex and cone
+   * ratio are the least over it and its eight neighbours, rounded to the safe side, so that a
+   * blend is never a wider cone than the texel's own. Default none.
    */
   virtual void SetConeMap(vtkTexture*);
   vtkGetObjectMacro(ConeMap, vtkTexture);

@@ -39,6 +39,7 @@ check(DisplacementMap(Input=surface, Source=heights, SelectInputScalars=["POINTS
 check(MikkTSpaceTangents(Input=surface), "MikkTSpace Tangents")
 check(HeightMapToNormalMap(Input=heights), "Height Map To Normal Map")
 check(HeightMapToConeMap(Input=heights), "Height Map To Cone Map")
+check(HeightMapToConeMap(Input=heights, ConeType="Conservative"), "Height Map To Cone Map, conservative")
 coarse = ParametricSurface(UResolution=16, VResolution=8)
 baker = NormalMapBaker(Input=coarse, Source=ParametricSurface(), BakeHeight=1)
 check(baker, "Normal Map Baker", 0)

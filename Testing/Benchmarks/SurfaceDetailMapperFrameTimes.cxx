@@ -20,6 +20,7 @@
 //   three projections. Relief runs with the linear and binary search and with cone stepping
 //   (the heights' cone map, made before the frames: its build time is printed).
 
+#include "RoundCaps.h"
 #include "SurfaceDetailTruthScenes.h"
 #include "vtkSurfaceDetailConventions.h"
 #include "vtkSurfaceDetailMapper.h"
@@ -96,27 +97,6 @@ struct Variant
   double TriplanarSharpness = 0.0; // 0: texture coordinates; else triplanar, this sharpness
   bool Cones = false;              // relief by cone stepping
 };
-
-// A 4 x 4 grid of round caps (hemispheres squashed to height 1) on a flat floor at height 0.
-vtkSmartPointer<vtkImageData> Caps(int size)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(size, size, 1);
-  image->AllocateScalars(VTK_FLOAT, 1);
-  auto* h = static_cast<float*>(image->GetScalarPointer());
-  const double cell = size / 4.0, radius = 0.4 * cell;
-  for (int j = 0; j < size; ++j)
-  {
-    for (int i = 0; i < size; ++i)
-    {
-      const double x = std::fmod(i + 0.5, cell) - 0.5 * cell;
-      const double y = std::fmod(j + 0.5, cell) - 0.5 * cell;
-      const double r2 = (x * x + y * y) / (radius * radius);
-      h[j * size + i] = static_cast<float>(r2 < 1 ? std::sqrt(1 - r2) : 0.0);
-    }
-  }
-  return image;
-}
 
 // The heights' cone map, and how long it took to make.
 vtkSmartPointer<vtkTexture> ConeTexture(vtkImageData* heights, double& seconds)
@@ -320,7 +300,7 @@ int main(int argc, char* argv[])
     source->SetVResolution(16);
     textureSide = 3.75;
     depth = 0.3;
-    heights = Caps(1024);
+    heights = RoundCaps(1024);
   }
   else if (scene == "wall")
   {

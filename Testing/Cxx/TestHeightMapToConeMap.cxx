@@ -88,9 +88,11 @@ vtkSmartPointer<vtkImageData> Image(const Map& m)
   return image;
 }
 
-std::vector<float> Cones(const Map& m, double maxRatio = 1.0)
+std::vector<float> Cones(const Map& m, double maxRatio = 1.0,
+  int coneType = vtkHeightMapToConeMap::Conservative)
 {
   vtkNew<vtkHeightMapToConeMap> filter;
+  filter->SetConeType(coneType);
   filter->SetInputData(Image(m));
   filter->SetWrap(m.Repeat ? vtkSurfaceDetail::Repeat : vtkSurfaceDetail::ClampToEdge);
   filter->SetMaxConeRatio(maxRatio);
@@ -136,6 +138,57 @@ double Widest(const Map& m, int i, int j, double apex, double maxRatio)
       }
     });
   return widest;
+}
+
+// Rays that follow relaxed cones, sampled: from points of every texel's footprint at depths
+// from the top to its apex, in every direction and at slopes from steep to grazing, each step
+// to the side of the cone (scaled by @a widen) from the ray's start, walked densely. Returns how
+// many steps come back above the surface after going under it (a relaxed cone forbids that).
+int StepsThatLeaveTheSurface(const Map& m, const std::vector<float>& cones, double widen)
+{
+  const double pi = std::acos(-1.0);
+  int leaving = 0;
+  for (int j = 0; j < m.H; ++j)
+  {
+    for (int i = 0; i < m.W; ++i)
+    {
+      const double apex = cones[2 * (j * m.W + i)];
+      const double ratio = widen * cones[2 * (j * m.W + i) + 1];
+      for (double y = j - 0.5; y <= j + 0.5; y += 0.5)
+      {
+        for (double x = i - 0.5; x <= i + 0.5; x += 0.5)
+        {
+          for (double d : { 0.0, 0.3 * apex, 0.7 * apex, 0.9 * apex, apex - 0.02, apex })
+          {
+            for (int a = 0; a < 32 && d >= 0.0; ++a)
+            {
+              const double c = std::cos(2 * pi * a / 32), s = std::sin(2 * pi * a / 32);
+              for (double run : { 0.02, 0.1, 0.3, 1.0, 3.0, 10.0 }) // texture units per depth
+              {
+                // The cone's side: the ray has run ratio * (apex - its depth) from the start.
+                const double step = ratio * (apex - d) / (run + ratio);
+                const double texels = step * run * std::max(m.W, m.H);
+                const int samples = std::max(64, static_cast<int>(16 * texels));
+                bool under = false;
+                for (int k = 0; k <= samples; ++k)
+                {
+                  const double t = step * k / samples;
+                  const double field = m.Depth(x + t * run * c * m.W, y + t * run * s * m.H);
+                  under = under || d + t > field + 1e-9;
+                  if (under && d + t < field - 1e-9)
+                  {
+                    ++leaving;
+                    break;
+                  }
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  return leaving;
 }
 } // namespace
 
@@ -201,14 +254,62 @@ TEST(HeightMapToConeMap, OneRaisedTexel)
   EXPECT_FLOAT_EQ(cones[2 * (10 * 32 + 10) + 1], 4.0f);
 }
 
+// Relaxed cones, against rays walked densely: no step to a cone's side goes under the surface
+// and comes back out, and with cones a quarter wider the walk finds such steps (the cones are
+// near the widest); every relaxed cone is at least as wide as the conservative one, the same
+// apex.
+TEST(HeightMapToConeMap, RelaxedConesAreNeverLeftFromBelow)
+{
+  for (const bool repeat : { true, false })
+  {
+    const Map m = RandomMap(12, 9, repeat, repeat ? 5 : 6);
+    const std::vector<float> conservative = Cones(m, 4.0);
+    const std::vector<float> relaxed = Cones(m, 4.0, vtkHeightMapToConeMap::Relaxed);
+    double wider = 0.0;
+    for (size_t t = 0; t < conservative.size(); t += 2)
+    {
+      EXPECT_EQ(relaxed[t], conservative[t]) << "texel " << t / 2;
+      EXPECT_GE(relaxed[t + 1], conservative[t + 1]) << "texel " << t / 2;
+      wider += relaxed[t + 1] / conservative[t + 1];
+    }
+    std::cout << (repeat ? "repeat" : "clamp") << ": relaxed cones are on average "
+              << 2 * wider / conservative.size() << " times as wide as conservative ones\n";
+    EXPECT_EQ(StepsThatLeaveTheSurface(m, relaxed, 1.0), 0);
+    EXPECT_GT(StepsThatLeaveTheSurface(m, relaxed, 1.25), 0) << "the cones could be wider";
+  }
+}
+
+// A ridge eight texels wide across a flat map: from the floor n texels before it, a relaxed
+// cone reaches over the ridge to where its far wall begins to fall (n + 6.5 texels away, a unit
+// of depth up), a conservative one only to its near wall (n - 1.5 texels).
+TEST(HeightMapToConeMap, RelaxedConesReachOverARidge)
+{
+  Map m{ 32, 32, true, std::vector<double>(32 * 32, 0.0) };
+  for (int j = 0; j < 32; ++j)
+  {
+    std::fill_n(m.Height.begin() + 32 * j + 10, 8, 1.0);
+  }
+  const std::vector<float> conservative = Cones(m, 4.0);
+  const std::vector<float> relaxed = Cones(m, 4.0, vtkHeightMapToConeMap::Relaxed);
+  for (int n = 3; n <= 6; ++n)
+  {
+    const size_t texel = 2 * (16 * 32 + 10 - n) + 1;
+    EXPECT_NEAR(conservative[texel], (n - 1.5) / 32.0, 1e-6) << "n = " << n;
+    EXPECT_NEAR(relaxed[texel], (n + 6.5) / 32.0, 1e-6) << "n = " << n;
+  }
+}
+
 TEST(HeightMapToConeMap, SameAtAnyThreadCount)
 {
   const Map m = RandomMap(64, 48, true, 11);
-  vtkSMPTools::Initialize(1);
-  const std::vector<float> one = Cones(m);
-  vtkSMPTools::Initialize(2);
-  const std::vector<float> two = Cones(m);
-  EXPECT_EQ(one, two);
+  for (int type : { vtkHeightMapToConeMap::Conservative, vtkHeightMapToConeMap::Relaxed })
+  {
+    vtkSMPTools::Initialize(1);
+    const std::vector<float> one = Cones(m, 1.0, type);
+    vtkSMPTools::Initialize(2);
+    const std::vector<float> two = Cones(m, 1.0, type);
+    EXPECT_EQ(one, two);
+  }
 }
 
 TEST(HeightMapToConeMap, BadInputIsAnError)

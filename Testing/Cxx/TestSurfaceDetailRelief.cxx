@@ -116,6 +116,7 @@ struct Options
   int LinearSteps = -1;      // -1: the default
   int MapSize = 128;         // texels of the relief's map
   bool ZeroCones = false;    // a cone map of zero-width cones at the top of the box
+  int ConeType = vtkHeightMapToConeMap::Relaxed;
   vtkSmartPointer<vtkImageData> Heights; // instead of the bricks'
 };
 
@@ -198,6 +199,7 @@ vtkSmartPointer<vtkActor> SurfaceActor(
   {
     vtkNew<vtkHeightMapToConeMap> cones;
     cones->SetInputData(heights);
+    cones->SetConeType(options.ConeType);
     cones->Update();
     if (options.ZeroCones)
     {
@@ -935,6 +937,26 @@ TEST(SurfaceDetailRelief, ConeSteppingOnAFineMap)
   EXPECT_LE(stepped.Cost.Mean, 0.5 * searched.Cost.Mean);
   EXPECT_LE(stepped.Error, 2.0);
   EXPECT_LE(searched.Error, 2.0);
+}
+
+// Relaxed cones reach over the bricks' edges where conservative ones stop at their foot: on the
+// fine map they save a tenth of the reads or more, as accurately.
+TEST(SurfaceDetailRelief, RelaxedConesReadLessThanConservativeOnes)
+{
+  const Scene scene = ReliefTruthScenes()[1];
+  Options linear;
+  linear.MapSize = 512;
+  const Options dense = DenseSearch(linear);
+  Options relaxed = linear;
+  relaxed.ConeStepping = true;
+  Options conservative = relaxed;
+  conservative.ConeType = vtkHeightMapToConeMap::Conservative;
+  const SearchFigures wide = Search(scene, relaxed, &dense);
+  const SearchFigures narrow = Search(scene, conservative, &dense);
+  Print("512 x 512 bricks, conservative cones", narrow);
+  Print("512 x 512 bricks, relaxed cones", wide);
+  EXPECT_LE(wide.Cost.Mean, 0.9 * narrow.Cost.Mean);
+  EXPECT_LE(wide.Error, 1.01 * narrow.Error);
 }
 
 // Thin walls (one texel of full height every eight, on a flat floor): a step that passed

@@ -139,6 +139,12 @@ check(cones is not None and cones.GetNumberOfComponents() == 2, "no 2-component 
 check(all(cones.GetComponent(i, 0) == 0.0 and cones.GetComponent(i, 1) == 0.5
           for i in range(cones.GetNumberOfTuples())),
       "a flat height map at the top did not give apex 0 and the widest cone")
+check(to_cones.GetConeTypeAsString() == "Relaxed", "the cones are not relaxed by default")
+to_cones.SetConeTypeToConservative()
+to_cones.Update()
+cones = to_cones.GetOutput().GetPointData().GetArray("ConeMap")
+check(all(cones.GetComponent(i, 1) == 0.5 for i in range(cones.GetNumberOfTuples())),
+      "conservative cones over a flat map at the top are not the widest")
 cone_texture = vtkTexture()
 cone_texture.SetInputConnection(to_cones.GetOutputPort())
 relief_mapper = surfacedetail.vtkSurfaceDetailMapper()

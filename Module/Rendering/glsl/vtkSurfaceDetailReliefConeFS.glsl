@@ -5,13 +5,15 @@
 // mapper uploads it beside the relief's depth: one linearly filtered read gives the depth where
 // the ray is, an apex depth a no deeper than the highest point of the relief over the texel
 // there, and a ratio r (texture units of radius per unit of depth) of a cone opening upward
-// from any point of that texel at depth a that holds no surface. Each step is one read:
+// from any point of that texel at depth a that no ray leaves from under the surface (relaxed
+// cones) or that holds no surface (conservative ones): a step to its side crosses the surface
+// at most once, so a step that ends under it brackets the first hit. Each step is one read:
 // - under the surface: the bracket from the last point above is closed by secant steps, until
 //   the bracket or the gap is below a fraction of a texel and of a pixel;
 // - above the surface: on to where the ray crosses the middle of a texel next (one-texel
 //   ridges peak there, not at the edges), as a linear search of one step per texel would, or,
-//   above a, to the cone's side if that is further (Dummer's conservative cone step); at
-//   least the rest of the ray over the steps left (LinearSearchSteps).
+//   above a, to the cone's side if that is further (the cone step of Dummer and of Policarpo
+//   and Oliveira); at least the rest of the ray over the steps left (LinearSearchSteps).
 uniform sampler2D sdConeMap;
 
 // Gap (field depth minus ray depth, in units of depth) under which a secant step is taken as
