@@ -47,7 +47,7 @@
  * same branch and bound finds it from below, leaving out the blocks, cells and parts of cells (down to a
  * sixteenth of a texel) where interval arithmetic on the depth's derivatives shows that no
  * point faces away from the footprint. Relaxed cones are at least as wide as conservative ones
- * (several times as wide beside steep walls) and take about twice as long to make.
+ * (several times as wide beside steep walls) and take two to four times as long to make.
  *
  * Distances are in texture coordinates (s, t), the texture square being 1 x 1 whatever its
  * texels, and wrap with Wrap: Repeat (default: tiling maps) or ClampToEdge (the edge texels

@@ -55,6 +55,7 @@ void Build(benchmark::State& state, bool caps)
   {
     vtkNew<vtkHeightMapToConeMap> conservative;
     conservative->SetInputData(filter->GetInput());
+    conservative->SetConeTypeToConservative();
     conservative->Update();
     auto* relaxed = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetScalars());
     auto* narrow =

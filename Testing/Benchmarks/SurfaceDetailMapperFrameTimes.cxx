@@ -95,15 +95,16 @@ struct Variant
   bool Shadows = false;
   bool DepthCorrection = false;
   double TriplanarSharpness = 0.0; // 0: texture coordinates; else triplanar, this sharpness
-  bool Cones = false;              // relief by cone stepping
+  int Cones = 0; // relief by cone stepping: Relaxed + 1 or Conservative + 1 (its cone type)
 };
 
 // The heights' cone map, and how long it took to make.
-vtkSmartPointer<vtkTexture> ConeTexture(vtkImageData* heights, double& seconds)
+vtkSmartPointer<vtkTexture> ConeTexture(vtkImageData* heights, int type, double& seconds)
 {
   const auto start = std::chrono::steady_clock::now();
   vtkNew<vtkHeightMapToConeMap> cones;
   cones->SetInputData(heights);
+  cones->SetConeType(type);
   cones->Update();
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return SurfaceDetailTruthScenes::RepeatedTexture(cones->GetOutput());
@@ -126,7 +127,7 @@ vtkSmartPointer<vtkTexture> ReliefTexture(vtkImageData* heights, double depth, d
 }
 
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* surface, const Variant& variant,
-  vtkTexture* relief, vtkTexture* cones, double depth)
+  vtkTexture* relief, vtkTexture* const cones[2], double depth)
 {
   vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper;
   if (variant.Technique < 0)
@@ -142,7 +143,7 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* surface, const Variant& 
     detail->SetTechnique(variant.Technique);
     detail->SetTangentFree(variant.TangentFree);
     detail->SetReliefMap(relief);
-    detail->SetConeMap(variant.Cones ? cones : nullptr);
+    detail->SetConeMap(variant.Cones ? cones[variant.Cones - 1] : nullptr);
     detail->SetDepthScale(depth);
     detail->SetLinearSearchSteps(variant.LinearSteps);
     detail->SetAdaptiveSteps(variant.Adaptive);
@@ -265,6 +266,8 @@ int main(int argc, char* argv[])
     { "Triplanar colour + BumpMapping, sharpness 4", SDM::BumpMapping, false, 32, true, 8, false,
       false, 4.0 },
   };
+  const int relaxed = vtkHeightMapToConeMap::Relaxed + 1;
+  const int conservative = vtkHeightMapToConeMap::Conservative + 1;
   const std::vector<Variant> detailVariants = {
     { "vtkOpenGLPolyDataMapper (plain)", -1 },
     { "Plain", SDM::Plain },
@@ -280,9 +283,11 @@ int main(int argc, char* argv[])
     { "ReliefMapping, fixed 32 + 8", relief, false, 32, false },
     { "ReliefMapping, SelfShadowing", relief, false, 32, true, 8, true },
     { "ReliefMapping, DepthCorrection", relief, false, 32, true, 8, false, true },
-    { "ReliefMapping, cone stepping", relief, false, 32, true, 8, false, false, 0.0, true },
+    { "ReliefMapping, cone stepping", relief, false, 32, true, 8, false, false, 0.0, relaxed },
+    { "ReliefMapping, cone stepping, conservative cones", relief, false, 32, true, 8, false,
+      false, 0.0, conservative },
     { "ReliefMapping, cone stepping, SelfShadowing", relief, false, 32, true, 8, true, false, 0.0,
-      true },
+      relaxed },
     { "ReliefMapping, reference 256 + 16", relief, false, 256, false, 16 },
   };
   const std::vector<Variant>& variants = scene == "triplanar" ? triplanarVariants : detailVariants;
@@ -322,9 +327,13 @@ int main(int argc, char* argv[])
   }
   source->GenerateTangentsOn();
   vtkSmartPointer<vtkTexture> reliefMap = ReliefTexture(heights, depth, textureSide);
-  double coneSeconds = 0.0;
-  vtkSmartPointer<vtkTexture> coneMap =
-    scene == "triplanar" ? nullptr : ConeTexture(heights, coneSeconds);
+  double coneSeconds[2] = { 0.0, 0.0 };
+  vtkSmartPointer<vtkTexture> coneMaps[2];
+  for (int type : { vtkHeightMapToConeMap::Conservative, vtkHeightMapToConeMap::Relaxed })
+  {
+    coneMaps[type] = scene == "triplanar" ? nullptr : ConeTexture(heights, type, coneSeconds[type]);
+  }
+  vtkTexture* const cones[2] = { coneMaps[0], coneMaps[1] };
   // Triplanar variants draw the same sphere without texture coordinates (with them, VTK
   // itself would apply the colour texture by them).
   vtkNew<vtkParametricSurfaceSource> bare;
@@ -339,7 +348,7 @@ int main(int argc, char* argv[])
   {
     vtkAlgorithmOutput* surface =
       variant.TriplanarSharpness > 0.0 ? bare->GetOutputPort() : source->GetOutputPort();
-    actors.push_back(MakeActor(surface, variant, reliefMap, coneMap, depth));
+    actors.push_back(MakeActor(surface, variant, reliefMap, cones, depth));
     renderer->AddActor(actors.back());
   }
   renderer->ResetCamera();
@@ -413,11 +422,13 @@ int main(int argc, char* argv[])
   }
   std::printf(
     "\n%d interleaved frames per variant, %dx%d, scene %s\n", rounds, size, size, scene.c_str());
-  if (coneMap)
+  if (cones[0])
   {
     int dims[3];
     heights->GetDimensions(dims);
-    std::printf("cone map of the %dx%d heights made in %.2f s\n", dims[0], dims[1], coneSeconds);
+    std::printf("cone maps of the %dx%d heights made in %.2f s (relaxed), %.2f s (conservative)\n",
+      dims[0], dims[1], coneSeconds[vtkHeightMapToConeMap::Relaxed],
+      coneSeconds[vtkHeightMapToConeMap::Conservative]);
   }
   if (scene == "triplanar")
   {
