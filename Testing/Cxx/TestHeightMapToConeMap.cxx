@@ -340,6 +340,31 @@ TEST(HeightMapToConeMap, RelaxedConesReachOverARidge)
   }
 }
 
+// Maps one or two texels wide (lines without repeat): finite cones, never left from below.
+TEST(HeightMapToConeMap, NarrowMaps)
+{
+  for (const bool repeat : { true, false })
+  {
+    for (const auto& size : { std::make_pair(1, 1), std::make_pair(1, 5), std::make_pair(5, 1),
+           std::make_pair(2, 2), std::make_pair(2, 7) })
+    {
+      const Map m = RandomMap(size.first, size.second, repeat, 7);
+      for (int type : { vtkHeightMapToConeMap::Conservative, vtkHeightMapToConeMap::Relaxed })
+      {
+        const std::vector<float> cones = Cones(m, 2.0, type);
+        ASSERT_EQ(cones.size(), 2u * m.W * m.H);
+        for (size_t t = 0; t < cones.size(); t += 2)
+        {
+          EXPECT_TRUE(cones[t] >= 0.0f && cones[t] <= 1.0f) << cones[t];
+          EXPECT_TRUE(cones[t + 1] > 0.0f && cones[t + 1] <= 2.0f) << cones[t + 1];
+        }
+        EXPECT_EQ(StepsThatLeaveTheSurface(m, cones, 1.0), 0)
+          << m.W << "x" << m.H << (repeat ? " repeat" : " clamp") << ", type " << type;
+      }
+    }
+  }
+}
+
 TEST(HeightMapToConeMap, SameAtAnyThreadCount)
 {
   const Map m = RandomMap(64, 48, true, 11);
