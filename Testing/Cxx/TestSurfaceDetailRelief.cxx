@@ -255,15 +255,9 @@ struct Picture
   std::vector<float> Z;
 };
 
-void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors, Picture& picture,
-  bool withDepth = false)
+// The renderer's picture in a window of Size x Size without multisampling.
+void Draw(vtkRenderer* renderer, Picture& picture, bool withDepth = false)
 {
-  vtkNew<vtkRenderer> renderer;
-  for (const auto& actor : actors)
-  {
-    renderer->AddActor(actor);
-  }
-  SetUpRenderer(renderer, view);
   vtkNew<vtkRenderWindow> window;
   window->SetMultiSamples(0);
   window->SetSize(Size, Size);
@@ -277,6 +271,18 @@ void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors
     window->GetZbufferData(0, 0, Size - 1, Size - 1, z);
     std::copy(z->GetPointer(0), z->GetPointer(0) + Size * Size, picture.Z.begin());
   }
+}
+
+void Draw(const View& view, const std::vector<vtkSmartPointer<vtkActor>>& actors, Picture& picture,
+  bool withDepth = false)
+{
+  vtkNew<vtkRenderer> renderer;
+  for (const auto& actor : actors)
+  {
+    renderer->AddActor(actor);
+  }
+  SetUpRenderer(renderer, view);
+  Draw(renderer, picture, withDepth);
 }
 
 // Root mean square difference (levels, over R, G, B) over the pixels where either picture
@@ -629,12 +635,7 @@ void DrawParallel(const View& view, vtkActor* actor, Picture& picture)
   renderer->GetActiveCamera()->DeepCopy(view.Camera);
   renderer->GetActiveCamera()->ParallelProjectionOn();
   renderer->GetActiveCamera()->SetParallelScale(2.0);
-  vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetSize(Size, Size);
-  window->AddRenderer(renderer);
-  window->Render();
-  picture.RGB = GrabRGB(window);
+  Draw(renderer, picture);
 }
 
 int MaxDifference(const Picture& a, const Picture& b)
